@@ -1,0 +1,39 @@
+# Every target sets itself up: a fresh machine needs only Python 3 and pip.
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+# nbgrader calls `alembic`, so the venv's bin/ must be on PATH for every job.
+export PATH := $(CURDIR)/$(BIN):$(PATH)
+export MPLBACKEND := Agg
+
+.PHONY: venv test test-fast demo figures site bench clean
+
+venv: $(STAMP)
+
+$(STAMP): pyproject.toml
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e ".[test]"
+	touch $(STAMP)
+
+test: $(STAMP)
+	$(BIN)/python -m pytest -q
+
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -q -m "not slow"
+
+demo: $(STAMP)
+	$(BIN)/accelab demo
+
+figures: $(STAMP)
+	$(BIN)/accelab figures --out figures
+
+site: $(STAMP)
+	$(BIN)/python -m course.build_site
+
+bench: $(STAMP)
+	$(BIN)/accelab bench --out build/bench
+
+clean:
+	rm -rf build .pytest_cache
