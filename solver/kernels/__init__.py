@@ -1,0 +1,12 @@
+"""Unit-free closed forms: SI floats in, SI floats out, vectorized over arrays.
+
+Nothing in this package imports pint. Each mechanism module has a ``solve``
+that returns a :class:`~solver.kernels.common.Motion` holding the angular
+(and slider) kinematics from position to jerk, a ``status`` code per position
+and a ``condition`` measure; :mod:`solver.kernels.points` turns those into
+point positions, velocities, accelerations and jerks only when asked.
+"""
+
+from .common import OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, SINGULAR_CONDITION, Motion
+
+__all__ = ["OK", "NOT_ASSEMBLABLE", "SINGULAR", "STATUS_NAMES", "SINGULAR_CONDITION", "Motion"]

@@ -1,0 +1,102 @@
+"""The offset slider-crank, position to jerk, in closed form (unit-free).
+
+Vector loop (Chapter 7, eq. 7.14; CONVENTIONS):
+    a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
+    theta4 = theta1 + 90 deg, c = slider offset (signed), d = slider position.
+
+Position: the imaginary part gives sin(theta3) = (a sin theta2 - c) / b; the
+``open`` circuit has the slider on the +x side of the crank pin, so
+cos(theta3) < 0 (R3 points from B back to A). Then d = a cos theta2 - b cos theta3.
+
+Derivatives: differentiating n times,
+
+    K_n - j b x3 e^{j theta3} - d^(n) = 0
+
+with K_n the known terms. The imaginary part gives
+x3 = Im(K_n) / (b cos theta3) (omega3, alpha3, jerk3; eq. 7.16b for n = 2),
+the real part d^(n) = Re(K_n) + b x3 sin theta3 (eq. 7.16c). The position is
+singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
+"""
+
+import numpy as np
+
+from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, SINGULAR_CONDITION, Motion,
+                     acc_term, jerk_term)
+
+CIRCUITS = {"open": -1.0, "crossed": 1.0}
+
+
+def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
+          circuit="open", order=3):
+    """Slider-crank kinematics from position to jerk.
+
+    Parameters
+    ----------
+    a, b : float
+        Crank and connecting-rod lengths [m].
+    c : float
+        Slider offset [m], signed, may be 0.
+    theta2, omega2, alpha2, jerk2 : float or array
+        Crank angle [rad] from the global x axis and its derivatives
+        [rad/s, rad/s^2, rad/s^3].
+    theta1 : float
+        Angle of the slide axis [rad].
+    circuit : {'open', 'crossed'}
+    order : int
+        Highest derivative computed (0..3).
+
+    Returns
+    -------
+    Motion
+        theta3 [rad], omega3, alpha3, jerk3; d [m] (slider position along the
+        slide axis from O2), d_dot [m/s], d_ddot [m/s^2], d_dddot [m/s^3];
+        ``status``; ``condition`` = |cos theta3 (relative to the slide)|.
+    """
+    sigma = CIRCUITS[circuit]
+    theta2 = np.asarray(theta2, dtype=float)
+    t2 = theta2 - theta1
+    cos2, sin2 = np.cos(t2), np.sin(t2)
+    y = a * sin2 - c
+    with np.errstate(invalid="ignore"):
+        c3 = sigma * np.sqrt((b - y) * (b + y)) / b
+    s3 = y / b
+    assembled = ~np.isnan(c3)
+    condition = np.abs(c3)
+    status = np.where(assembled, np.where(condition < SINGULAR_CONDITION, SINGULAR, OK),
+                      NOT_ASSEMBLABLE).astype(np.int8)
+    s3 = np.where(assembled, s3, np.nan)
+    theta3 = np.arctan2(s3, c3) + theta1
+    d = a * cos2 - b * c3
+    out = Motion(theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
+                 circuit=circuit)
+    if order < 1:
+        return out
+    bad = status != OK
+    bc3 = b * np.where(bad, np.nan, c3) if np.any(bad) else b * c3
+    # order 1: K = j a omega2 e2
+    k = a * omega2
+    kx, ky = -k * sin2, k * cos2
+    omega3 = ky / bc3
+    d_dot = kx + b * omega3 * s3
+    out.omega2, out.omega3, out.d_dot = omega2, omega3, d_dot
+    if order < 2:
+        return out
+    # order 2: K = a(j alpha2 - w2^2) e2 + b w3^2 e3
+    kx, ky = acc_term(a, cos2, sin2, omega2, alpha2)
+    n3 = b * omega3 * omega3
+    kx = kx + n3 * c3
+    ky = ky + n3 * s3
+    alpha3 = ky / bc3
+    out.alpha2, out.alpha3 = alpha2, alpha3
+    out.d_ddot = kx + b * alpha3 * s3
+    if order < 3:
+        return out
+    # order 3: K = a(...)e2 - b(-3 w3 a3 - j w3^3) e3
+    kx, ky = jerk_term(a, cos2, sin2, omega2, alpha2, jerk2)
+    j3x, j3y = jerk_term(b, c3, s3, omega3, alpha3, 0.0)
+    kx = kx - j3x
+    ky = ky - j3y
+    jerk3 = ky / bc3
+    out.jerk2, out.jerk3 = jerk2, jerk3
+    out.d_dddot = kx + b * jerk3 * s3
+    return out

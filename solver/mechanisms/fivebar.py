@@ -1,0 +1,60 @@
+"""The geared fivebar with Quantities in and out (kernel: solver.kernels.fivebar)."""
+
+import numpy as np
+
+from ..kernels import fivebar as kernel
+from .base import Mechanism
+
+
+class GearedFiveBar(Mechanism):
+    """Geared fivebar linkage (Chapter 7, section 7.4, eqs. 7.28-7.29).
+
+    Parameters
+    ----------
+    a, b, c, d : Quantity or str
+        Crank O2A, coupler AB, coupler CB and crank O5C lengths [length].
+    f : Quantity or str
+        Ground length O2O5 [length].
+    lam : float
+        Gear ratio theta5/theta2 (signed; -1 for equal external gears) [-].
+    phi : Quantity or str
+        Phase angle of link 5: theta5 = lam theta2 + phi [angle], angles from
+        the ground line.
+    theta1 : Quantity or str, optional
+        Ground angle [angle], default 0.
+
+    ``open`` puts B on the same side of the line A->C as the fourbar's open
+    circuit puts B relative to A->O4; ``crossed`` the mirror assembly.
+    """
+
+    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
+                 "c": ("length", True, None), "d": ("length", True, None),
+                 "f": ("length", True, None), "lam": ("dimensionless", False, None),
+                 "phi": ("angle", False, None), "theta1": ("angle", False, "0 deg")}
+    _points = {"A": ("O2", "a", "theta2", 0.0), "C": ("O5", "d", "theta5", 0.0),
+               "B": ("A", "b", "theta3", 0.0)}
+    _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
+    _outputs = ("theta3", "theta4", "theta5", "omega3", "omega4", "omega5", "alpha3", "alpha4",
+                "alpha5", "jerk3", "jerk4", "jerk5", "R_A", "R_B", "R_C", "V_A", "V_B", "V_C",
+                "A_A", "A_B", "A_C", "A_BA", "J_A", "J_B", "J_C")
+
+    def _pivot(self, key):
+        return self._f * np.exp(1j * self._theta1) if key == "O5" else 0j
+
+    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+              order=3):
+        """Solve at one or many input angles (see :meth:`FourBar.solve` for the arguments)."""
+        self._check_circuit(circuit)
+        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
+        motion = kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam,
+                              self._phi, inputs["theta2"], inputs["omega2"], inputs["alpha2"],
+                              inputs["jerk2"], self._theta1, circuit, order)
+        return self._finish(motion, inputs)
+
+    def _not_assemblable_reason(self, motion, inputs):
+        return (f"the couplers b = {self._b:.6g} m and c = {self._c:.6g} m cannot span the "
+                f"distance between the crank pins A and C there (need |b - c| <= |C - A| <= "
+                f"b + c). Choose another theta2, phase phi or link lengths.")
+
+    def _singular_reason(self):
+        return "the two couplers (links 3 and 4) are collinear"

@@ -1,0 +1,95 @@
+"""The fourbar with Quantities in and out (kernel: solver.kernels.fourbar)."""
+
+import numpy as np
+
+from ..errors import InvalidInput
+from ..kernels import fourbar as kernel
+from ..units import to_si
+from .base import Mechanism
+
+
+class FourBar(Mechanism):
+    """Pin-jointed fourbar linkage (Chapter 7, section 7.3).
+
+    Parameters
+    ----------
+    a, b, c, d : Quantity or str
+        Crank O2A, coupler AB, rocker O4B and ground O2O4 lengths [length].
+    theta1 : Quantity or str, optional
+        Angle of the ground link O2->O4 [angle], default 0.
+
+    Examples
+    --------
+    >>> fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
+    >>> r = fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
+    >>> r.alpha3, r.A_B
+    """
+
+    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
+                 "c": ("length", True, None), "d": ("length", True, None),
+                 "theta1": ("angle", False, "0 deg")}
+    _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
+    _relative = {"BA": ("b", "theta3", 0.0)}
+    _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
+                "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
+    _point_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
+
+    def _pivot(self, key):
+        return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
+
+    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+              p=None, delta3="0 deg", order=3):
+        """Solve the fourbar at one or many crank angles.
+
+        Parameters
+        ----------
+        theta2 : Quantity or str, scalar or array
+            Crank angle from the global x axis [angle].
+        omega2, alpha2, jerk2 : Quantity or str
+            Crank angular velocity [1/time], acceleration [1/time^2] and
+            jerk [1/time^3]; scalars or arrays broadcast with theta2.
+        circuit : {'open', 'crossed'}
+            Branch: 'open' is the chapter's eq. 4.10b with the minus sign.
+        p, delta3 : Quantity or str, optional
+            A coupler point P at distance p from A, at angle delta3 from line
+            AB (eqs. 4.27, 7.32): adds R_P, V_P, A_P, A_PA, J_P.
+        order : int
+            Highest derivative to compute (0 position .. 3 jerk).
+
+        Returns
+        -------
+        Result
+            Lazy Quantities theta3 ... jerk4, A_A, A_B, A_BA, J_A, J_B, ...
+
+        Raises
+        ------
+        NotAssemblable, Singular
+            For a scalar theta2 that cannot be assembled or is at a toggle
+            position. Arrays get a ``valid`` mask instead.
+        """
+        self._check_circuit(circuit)
+        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
+        pts = None
+        if p is not None:
+            p_si = to_si(p, "p", "length", positive=True)
+            delta_si = to_si(delta3, "delta3", "angle")
+            inputs.update(p=p_si, delta3=delta_si)
+            pts = dict(self._points, P=("A", p_si, "theta3", delta_si))
+        motion = kernel.solve(self._a, self._b, self._c, self._d, inputs["theta2"],
+                              inputs["omega2"], inputs["alpha2"], inputs["jerk2"],
+                              self._theta1, circuit, order)
+        return self._finish(motion, inputs, pts=pts)
+
+    def outputs(self, result):
+        return self._outputs + (self._point_outputs if "P" in result._pts else ())
+
+    def _not_assemblable_reason(self, motion, inputs):
+        t = inputs["theta2"] - self._theta1
+        s = float(np.hypot(self._d - self._a * np.cos(t), self._a * np.sin(t)))
+        b, c = self._b, self._c
+        need = (f"the coupler (b = {b:.6g} m) and rocker (c = {c:.6g} m) must span the distance "
+                f"|A - O4| = {s:.6g} m, which needs |b - c| <= |A - O4| <= b + c")
+        return need + ". Choose a theta2 inside the crank's range or change the link lengths."
+
+    def _singular_reason(self):
+        return "the coupler and rocker (links 3 and 4) are collinear (a toggle position)"

@@ -1,0 +1,85 @@
+"""The inverted slider-crank with Quantities in and out
+(kernel: solver.kernels.invertedslidercrank)."""
+
+import numpy as np
+
+from ..errors import InvalidInput
+from ..kernels import invertedslidercrank as kernel
+from .base import Mechanism
+
+
+class InvertedSliderCrank(Mechanism):
+    """Inverted slider-crank (Chapter 7, section 7.3, eqs. 7.20-7.27).
+
+    The block (link 3) is pinned to the crank at A and slides along a line
+    fixed to link 4 at the angle gamma to O4B. ``b`` is the signed distance
+    from B to A along that line; ``open`` is the assembly with the larger b.
+
+    Parameters
+    ----------
+    a : Quantity or str
+        Crank length O2A [length].
+    c : Quantity or str
+        Length O4B [length], >= 0 (0: the slide line passes through O4).
+    d : Quantity or str
+        Ground length O2O4 [length].
+    gamma : Quantity or str
+        Angle from O4B to the slide line [angle], signed.
+    theta1 : Quantity or str, optional
+        Ground angle [angle], default 0.
+
+    Outputs beyond the fourbar's: b, b_dot, b_ddot, b_dddot; ``A_coriolis``
+    (2 b' omega3 j e^{j theta3}, eq. 7.21c), ``A_slip`` (b'' e^{j theta3}),
+    ``V_slip``, and ``A_A4``, the acceleration of the point of link 4 under A,
+    so that A_A = A_A4 + A_slip + A_coriolis.
+    """
+
+    _geometry = {"a": ("length", True, None), "c": ("length", False, None),
+                 "d": ("length", True, None), "gamma": ("angle", False, None),
+                 "theta1": ("angle", False, "0 deg")}
+    _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
+    _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
+                "b", "b_dot", "b_ddot", "b_dddot", "R_A", "R_B", "V_A", "V_B", "A_A", "A_B",
+                "A_BA", "A_coriolis", "A_slip", "A_A4", "J_A", "J_B")
+
+    def _validate(self):
+        if self._c < 0:
+            raise InvalidInput(f"c must be >= 0 (got {self._given['c']}): it is the length "
+                               f"O4B; turn the slide line with gamma instead", "c")
+
+    def _pivot(self, key):
+        return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
+
+    def _extra(self, result, name):
+        m = result._motion
+        if name in ("A_coriolis", "A_slip", "V_slip", "A_A4"):
+            e3 = np.exp(1j * m.theta3)
+            if name == "A_coriolis":
+                return 2j * m.b_dot * m.omega3 * e3
+            if name == "A_slip":
+                return m.b_ddot * e3
+            if name == "V_slip":
+                return m.b_dot * e3
+            return result.si("A_B") + m.b * (1j * m.alpha3 - m.omega3 ** 2) * e3
+        return None
+
+    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+              order=3):
+        """Solve at one or many crank angles (see :meth:`FourBar.solve` for the arguments)."""
+        self._check_circuit(circuit)
+        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
+        motion = kernel.solve(self._a, self._c, self._d, self._gamma, inputs["theta2"],
+                              inputs["omega2"], inputs["alpha2"], inputs["jerk2"], self._theta1,
+                              circuit, order)
+        return self._finish(motion, inputs)
+
+    def _not_assemblable_reason(self, motion, inputs):
+        t = inputs["theta2"] - self._theta1
+        s = float(np.hypot(self._a * np.cos(t) - self._d, self._a * np.sin(t)))
+        reach = self._c * abs(np.sin(self._gamma))
+        return (f"the slide line passes at least c |sin gamma| = {reach:.6g} m from O4, but A "
+                f"is only |A - O4| = {s:.6g} m from O4. Choose another theta2, or reduce c or "
+                f"|sin gamma|.")
+
+    def _singular_reason(self):
+        return "the slide line is tangent to the crank pin's reach (b + c cos gamma = 0)"

@@ -1,0 +1,67 @@
+"""The offset slider-crank with Quantities in and out (kernel: solver.kernels.slidercrank)."""
+
+import numpy as np
+
+from ..kernels import slidercrank as kernel
+from .base import Mechanism
+
+
+class SliderCrank(Mechanism):
+    """Offset slider-crank (Chapter 7, section 7.3, eqs. 7.14-7.16).
+
+    Parameters
+    ----------
+    a, b : Quantity or str
+        Crank O2A and connecting rod AB lengths [length].
+    c : Quantity or str, optional
+        Slider offset [length], signed, default 0.
+    theta1 : Quantity or str, optional
+        Angle of the slide axis [angle], default 0.
+
+    Examples
+    --------
+    >>> sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")
+    >>> sc.solve(theta2="60 deg", omega2="3000 rpm").d_ddot
+    """
+
+    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
+                 "c": ("length", False, "0 m"), "theta1": ("angle", False, "0 deg")}
+    _relative = {"BA": ("b", "theta3", np.pi)}
+    _outputs = ("theta3", "omega3", "alpha3", "jerk3", "d", "d_dot", "d_ddot", "d_dddot",
+                "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
+
+    def __init__(self, **geometry):
+        super().__init__(**geometry)
+        self._points = {"A": ("O2", self._a, "theta2", 0.0), "B": (None, self._slider, None, 0.0)}
+
+    def _slider(self, result, order):
+        axis = np.exp(1j * self._theta1)
+        m = result._motion
+        if order == 0:
+            return (m.d + 1j * self._c) * axis
+        return (m.d_dot, m.d_ddot, m.d_dddot)[order - 1] * axis
+
+    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+              order=3):
+        """Solve at one or many crank angles.
+
+        ``circuit='open'`` has the slider on the +x side of the crank pin
+        (cos theta3 < 0 in the slide-axis frame). See :meth:`FourBar.solve`
+        for the meaning of the other arguments and of the returned Result
+        (theta3, omega3, alpha3, jerk3, d [length], d_dot, d_ddot, d_dddot,
+        A_A, A_B, A_BA, J_A, J_B ...).
+        """
+        self._check_circuit(circuit)
+        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
+        motion = kernel.solve(self._a, self._b, self._c, inputs["theta2"], inputs["omega2"],
+                              inputs["alpha2"], inputs["jerk2"], self._theta1, circuit, order)
+        return self._finish(motion, inputs)
+
+    def _not_assemblable_reason(self, motion, inputs):
+        y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
+        return (f"the crank pin is {abs(y):.6g} m from the slide line but the rod is only "
+                f"b = {self._b:.6g} m long (need |a sin(theta2) - c| <= b). Choose another "
+                f"theta2, a longer rod or a smaller offset.")
+
+    def _singular_reason(self):
+        return "the connecting rod is perpendicular to the slide"
