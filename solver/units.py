@@ -48,10 +48,16 @@ def _factor(units, kind):
     return Q_(1.0, units).to(SI_UNITS[kind]).magnitude
 
 
+@lru_cache(maxsize=4096)
+def _parse_text(text):
+    """Parse a quantity string once; the same text is common (defaults, batch files)."""
+    return Q_(text)
+
+
 def _parse(value, name, kind):
     if isinstance(value, str):
         try:
-            return Q_(value)
+            return _parse_text(value)
         except Exception as exc:  # pint raises several unrelated types
             raise InvalidInput(
                 f"{name} could not be read as a quantity ({value!r}: {exc}). "
@@ -66,7 +72,8 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
     ----------
     value : pint.Quantity, str, or number
         A Quantity (scalar or wrapping an array) or a string pint parses.
-        Bare numbers are accepted only for ``kind='dimensionless'``.
+        Bare numbers are accepted only for ``kind='dimensionless'``, and a
+        bare 0 for any kind (zero needs no unit).
     name : str
         The parameter's name, used in error messages.
     kind : str
@@ -80,6 +87,10 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
         With a message naming ``name``, what it needs and an example.
     """
     dim, si, example, words = KINDS[kind]
+    if type(value) is int and value == 0 or type(value) is float and value == 0.0:
+        if positive or nonzero:
+            raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
+        return 0.0  # zero needs no unit
     q = _parse(value, name, kind)
     if isinstance(q, Q_):
         units = q._units
@@ -106,6 +117,16 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
     else:
         raise InvalidInput(f"{name} must be {words} (got {type(value).__name__} {value!r}). "
                            f"Example: {name}={example}", name)
+    if type(out) is float or type(out) is int:  # fast path for scalars
+        if not math.isfinite(out):
+            raise InvalidInput(f"{name} must be finite (got {value!s}). Example: {name}={example}",
+                               name)
+        if positive and not out > 0:
+            raise InvalidInput(f"{name} must be positive (got {value!s}): a link length is > 0. "
+                               f"Example: {name}={example}", name)
+        if nonzero and out == 0:
+            raise InvalidInput(f"{name} must not be zero (got {value!s})", name)
+        return float(out)
     try:
         arr = np.asarray(out, dtype=float)
     except (TypeError, ValueError):

@@ -41,7 +41,7 @@ class GearedFiveBar(Mechanism):
     def _pivot(self, key):
         return self._f * np.exp(1j * self._theta1) if key == "O5" else 0j
 
-    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
               order=3):
         """Solve at one or many input angles (see :meth:`FourBar.solve` for the arguments)."""
         self._check_circuit(circuit)

@@ -37,8 +37,8 @@ class FourBar(Mechanism):
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
 
-    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
-              p=None, delta3="0 deg", order=3):
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
+              p=None, delta3=0, order=3):
         """Solve the fourbar at one or many crank angles.
 
         Parameters

@@ -63,7 +63,7 @@ class InvertedSliderCrank(Mechanism):
             return result.si("A_B") + m.b * (1j * m.alpha3 - m.omega3 ** 2) * e3
         return None
 
-    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
               order=3):
         """Solve at one or many crank angles (see :meth:`FourBar.solve` for the arguments)."""
         self._check_circuit(circuit)

@@ -23,7 +23,7 @@ class RotatingPoint(Mechanism):
     _geometry = {"p": ("length", True, None)}
     _outputs = ("R", "V", "A", "A_t", "A_n", "J")
 
-    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3"):
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         m = kernel.rotating_point(self._p, inputs["theta2"], inputs["omega2"],
                                   inputs["alpha2"], inputs["jerk2"])
@@ -51,8 +51,8 @@ class SlottedLink(Mechanism):
     _geometry = {}
     _outputs = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
 
-    def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot="0 m/s^2", p_dddot="0 m/s^3",
-              jerk2="0 rad/s^3"):
+    def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0,
+              jerk2=0):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         inputs.update(p=to_si(p, "p", "length"), p_dot=to_si(p_dot, "p_dot", "velocity"),
                       p_ddot=to_si(p_ddot, "p_ddot", "acceleration"),

@@ -41,7 +41,7 @@ class SliderCrank(Mechanism):
             return (m.d + 1j * self._c) * axis
         return (m.d_dot, m.d_ddot, m.d_dddot)[order - 1] * axis
 
-    def solve(self, theta2, omega2, alpha2="0 rad/s^2", jerk2="0 rad/s^3", circuit="open",
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
               order=3):
         """Solve at one or many crank angles.
 
