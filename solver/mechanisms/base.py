@@ -268,6 +268,22 @@ class Mechanism:
         args = ", ".join(f"{k}={v!r}" for k, v in self._given.items())
         return f"{type(self).__name__}({args})"
 
+    def _show(self, si_length):
+        """A length [m] written in the unit the user gave the geometry in."""
+        for name, (kind, _, _) in self._geometry.items():
+            if kind == "length" and name in self._given:
+                given = self._given[name]
+                try:
+                    unit = (Q_(given) if isinstance(given, str) else given).units
+                    return f"{Q_(si_length, 'm').to(unit).magnitude:.6g} {unit:~}"
+                except Exception:
+                    break
+        return f"{si_length:.6g} m"
+
+    def _given_text(self, name):
+        given = self._given[name]
+        return given if isinstance(given, str) else f"{given:~}"
+
     def _pivot(self, key):
         """Position of a fixed pivot (complex, SI)."""
         return 0.0 + 0.0j

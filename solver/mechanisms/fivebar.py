@@ -52,7 +52,8 @@ class GearedFiveBar(Mechanism):
         return self._finish(motion, inputs)
 
     def _not_assemblable_reason(self, motion, inputs):
-        return (f"the couplers b = {self._b:.6g} m and c = {self._c:.6g} m cannot span the "
+        return (f"the couplers b = {self._given_text('b')} and c = {self._given_text('c')} "
+                f"cannot span the "
                 f"distance between the crank pins A and C there (need |b - c| <= |C - A| <= "
                 f"b + c). Choose another theta2, phase phi or link lengths.")
 

@@ -87,9 +87,22 @@ class FourBar(Mechanism):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._d - self._a * np.cos(t), self._a * np.sin(t)))
         b, c = self._b, self._c
-        need = (f"the coupler (b = {b:.6g} m) and rocker (c = {c:.6g} m) must span the distance "
-                f"|A - O4| = {s:.6g} m, which needs |b - c| <= |A - O4| <= b + c")
-        return need + ". Choose a theta2 inside the crank's range or change the link lengths."
+        need = (f"the coupler (b = {self._given_text('b')}) and rocker (c = "
+                f"{self._given_text('c')}) must span the distance |A - O4| = {self._show(s)}, "
+                f"which needs |b - c| <= |A - O4| <= b + c")
+        return need + ". " + self._crank_range_text()
+
+    def _crank_range_text(self):
+        """Where the crank can sit: |b - c| <= |A - O4| <= b + c as a range of theta2."""
+        a, b, c, d = self._a, self._b, self._c, self._d
+        lower = (a * a + d * d - (b + c) ** 2) / (2 * a * d)   # cos(theta2) >= lower
+        upper = (a * a + d * d - (b - c) ** 2) / (2 * a * d)   # cos(theta2) <= upper
+        if lower > 1 or upper < -1:
+            return "These lengths never close the loop: change the link lengths."
+        lo = np.degrees(np.arccos(min(1.0, upper)))
+        hi = np.degrees(np.arccos(max(-1.0, lower)))
+        return (f"With these lengths theta2 - theta1 must lie within +/-({lo:.4g} to {hi:.4g}) "
+                f"deg; choose theta2 there or change the link lengths.")
 
     def _singular_reason(self):
         return "the coupler and rocker (links 3 and 4) are collinear (a toggle position)"

@@ -77,8 +77,8 @@ class InvertedSliderCrank(Mechanism):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._a * np.cos(t) - self._d, self._a * np.sin(t)))
         reach = self._c * abs(np.sin(self._gamma))
-        return (f"the slide line passes at least c |sin gamma| = {reach:.6g} m from O4, but A "
-                f"is only |A - O4| = {s:.6g} m from O4. Choose another theta2, or reduce c or "
+        return (f"the slide line passes at least c |sin gamma| = {self._show(reach)} from O4, "
+                f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or reduce c or "
                 f"|sin gamma|.")
 
     def _singular_reason(self):

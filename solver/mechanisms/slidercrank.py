@@ -59,8 +59,8 @@ class SliderCrank(Mechanism):
 
     def _not_assemblable_reason(self, motion, inputs):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
-        return (f"the crank pin is {abs(y):.6g} m from the slide line but the rod is only "
-                f"b = {self._b:.6g} m long (need |a sin(theta2) - c| <= b). Choose another "
+        return (f"the crank pin is {self._show(abs(y))} from the slide line but the rod is "
+                f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose another "
                 f"theta2, a longer rod or a smaller offset.")
 
     def _singular_reason(self):
