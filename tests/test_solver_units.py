@@ -215,3 +215,22 @@ def test_kernel_has_no_pint():
                 names = [a.name for a in node.names] + [getattr(node, "module", "") or ""]
                 assert not any(n.split(".")[0] == "pint" for n in names), path
                 assert not any("units" in n for n in names if n), path
+
+
+def test_any_point_on_any_link():
+    """eqs. 7.30-7.32: a point on link 3 given by (p, delta) from A equals the coupler
+    point; the mid-point of the rocker has half of B's acceleration."""
+    fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
+    r = fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="2 rad/s^3",
+                 p="3 in", delta3="30 deg")
+    pt = r.point(3, "3 in", "30 deg")
+    for name in ("R", "V", "A", "J"):
+        assert np.isclose(pt.si(name), r.si(name + "_P"), rtol=1e-14)
+    cg4 = r.point(4, "4.5 in")
+    assert np.isclose(cg4.si("A"), r.si("A_B") / 2, rtol=1e-14)
+    assert np.isclose(cg4.si("J"), r.si("J_B") / 2, rtol=1e-14)
+    assert np.isclose(cg4.si("A_t") + cg4.si("A_n"), cg4.si("A"), rtol=1e-14)
+    with pytest.raises(InvalidInput, match="no rotating link 7"):
+        r.point(7, "1 in")
+    sweep = fb.solve(theta2=Q_([10, 20, 30], "deg"), omega2="10 rad/s")
+    assert sweep.point(4, "1 in").A.shape == (3,)

@@ -155,6 +155,53 @@ class Result:
                                                   m["alpha" + n], offset)
         return t if comp == "t" else nn
 
+    def point(self, link, p, delta=0, base=None):
+        """Position to jerk of any point on a link (section 7.5, eqs. 7.30-7.32, 7.41).
+
+        Parameters
+        ----------
+        link : int
+            Link number (2 crank, 3 coupler, 4 output, 5 the fivebar's crank 5).
+        p : Quantity or str
+            Distance of the point from ``base`` [length].
+        delta : Quantity or str
+            Angle from the link's own line (the direction of theta_link) to
+            the point [angle], counter-clockwise.
+        base : str, optional
+            The pin the point is measured from; defaults to the link's pivot
+            or first pin (link 2: O2, link 3: A, link 4: O4 or C ...).
+
+        Returns
+        -------
+        PointMotion
+            R, V, A, J (complex Quantities) and A_t, A_n, the tangential and
+            normal parts of the acceleration difference from ``base``. Use it
+            for a link's centre of gravity before F = m A.
+        """
+        bases = self._mech._link_bases
+        if link not in bases:
+            raise InvalidInput(f"{type(self._mech).__name__} has no rotating link {link}; "
+                               f"use one of {sorted(bases)}", "link")
+        base = base or bases[link]
+        p_si = to_si(p, "p", "length")
+        delta_si = to_si(delta, "delta", "angle")
+        key = f"theta{link}"
+        parts = {}
+        for order, letter in enumerate("RVAJ"):
+            rel = self._relative(p_si, key, delta_si, order)
+            if base in self._pts:
+                rel = rel + self._point(base, order)
+            elif order == 0:
+                rel = rel + self._mech._pivot(base)
+            parts[letter] = rel
+        n = str(link)
+        m = self._motion.__dict__
+        parts["A_t"], parts["A_n"] = points.relative_acceleration_parts(
+            p_si, m[key], m["omega" + n], m["alpha" + n], delta_si)
+        if self._scalar:
+            parts = {k: v[()] if isinstance(v, np.ndarray) else v for k, v in parts.items()}
+        return PointMotion(parts)
+
     # --- unit-aware access ------------------------------------------------
     def __getattr__(self, name):
         if name.startswith("_"):
@@ -218,6 +265,28 @@ class Result:
         return f"<{mech} result ({self.circuit}): " + ", ".join(parts) + " ...>"
 
 
+class PointMotion:
+    """Position, velocity, acceleration and jerk of one point, as Quantities
+    (``R``, ``V``, ``A``, ``J``, and ``A_t``, ``A_n`` about its base pin)."""
+
+    _KINDS = {"R": "length", "V": "velocity", "A": "acceleration", "A_t": "acceleration",
+              "A_n": "acceleration", "J": "jerk"}
+
+    def __init__(self, parts):
+        self._si = parts
+
+    def si(self, name):
+        return self._si[name]
+
+    def __getattr__(self, name):
+        if name.startswith("_") or name not in self._KINDS:
+            raise AttributeError(name)
+        return quantity(self._si[name], self._KINDS[name])
+
+    def __repr__(self):
+        return "<PointMotion " + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._KINDS) + ">"
+
+
 class Mechanism:
     """Base of the unit-aware mechanisms.
 
@@ -229,6 +298,7 @@ class Mechanism:
     _geometry = {}
     _points = {}
     _relative = {}  # "XY" -> (length attribute, theta key, offset) for X, Y on one link
+    _link_bases = {}  # link number -> the pin a point on it is measured from
     _outputs = ()
     _circuits = ("open", "crossed")
     _link_words = ""

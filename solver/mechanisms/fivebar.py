@@ -34,6 +34,7 @@ class GearedFiveBar(Mechanism):
     _points = {"A": ("O2", "a", "theta2", 0.0), "C": ("O5", "d", "theta5", 0.0),
                "B": ("A", "b", "theta3", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
+    _link_bases = {2: "O2", 3: "A", 4: "C", 5: "O5"}
     _outputs = ("theta3", "theta4", "theta5", "omega3", "omega4", "omega5", "alpha3", "alpha4",
                 "alpha5", "jerk3", "jerk4", "jerk5", "R_A", "R_B", "R_C", "V_A", "V_B", "V_C",
                 "A_A", "A_B", "A_C", "A_BA", "J_A", "J_B", "J_C")

@@ -30,6 +30,7 @@ class FourBar(Mechanism):
                  "theta1": ("angle", False, "0 deg")}
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0)}
+    _link_bases = {2: "O2", 3: "A", 4: "O4"}
     _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
                 "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
     _point_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")

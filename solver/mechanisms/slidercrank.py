@@ -27,6 +27,7 @@ class SliderCrank(Mechanism):
     _geometry = {"a": ("length", True, None), "b": ("length", True, None),
                  "c": ("length", False, "0 m"), "theta1": ("angle", False, "0 deg")}
     _relative = {"BA": ("b", "theta3", np.pi)}
+    _link_bases = {2: "O2", 3: "A"}
     _outputs = ("theta3", "omega3", "alpha3", "jerk3", "d", "d_dot", "d_ddot", "d_dddot",
                 "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
 
