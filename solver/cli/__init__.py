@@ -35,7 +35,7 @@ def build_parser():
         try:
             module = importlib.import_module(name)
         except ModuleNotFoundError as exc:
-            if exc.name == name:  # a subcommand not built yet
+            if exc.name and name.startswith(exc.name):  # a subcommand not built yet
                 continue
             raise
         module.register(sub)
