@@ -1,0 +1,119 @@
+"""A standard nbgrader course directory with accelab's configuration.
+
+``create_course(root, course_id, roster)`` writes ``nbgrader_config.py`` and the
+embedded sqlite gradebook (``gradebook.db``) with the roster's students. The
+config ships the preprocessors of :mod:`exercises.nbgrader_ext`: the student id
+passed to the kernel during autograde, the kernel's environment cleaned, a
+per-cell timeout, deleted test cells put back as failing cells (reported, never
+left to manual grading), and hidden tests stripped from feedback.
+"""
+
+import csv
+import os
+import subprocess
+import sys
+
+CONFIG = '''\
+# nbgrader configuration written by `accelab assign` (accelab exercises).
+import os
+
+from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPreprocessor
+from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
+                                    IgnorePattern, LimitOutput, SaveAutoGrades)
+
+from exercises.nbgrader_ext import HideHiddenTests, StudentExecute
+
+c = get_config()  # noqa: F821
+HERE = os.path.dirname(os.path.abspath(__file__))
+c.CourseDirectory.course_id = {course_id!r}
+c.CourseDirectory.root = HERE
+c.CourseDirectory.db_url = "sqlite:///" + os.path.join(HERE, "gradebook.db")
+c.Exchange.root = os.path.join(HERE, "exchange")
+
+# autograde: clean kernel environment + the submission's student id, per-cell timeout
+c.Autograde.autograde_preprocessors = [StudentExecute, IgnorePattern, ClearMetadataPreprocessor,
+                                       LimitOutput, SaveAutoGrades, AssignLatePenalties,
+                                       CheckCellMetadata]
+c.StudentExecute.timeout = {timeout}
+# a deleted test cell comes back as a failing cell: the student loses its points, with a message
+c.OverwriteCells.add_missing_cells = True
+c.OverwriteCells.missing_cell_notification = (
+    "test cell {{cell_id}} was deleted from the submission: no credit for it\\n"
+    "raise AssertionError('this test cell ({{cell_id}}) was deleted from your notebook, so it "
+    "earns no credit; start again from the released notebook')\\n")
+# feedback never shows hidden tests
+c.GenerateFeedback.preprocessors = [GetGrades, CSSHTMLHeaderPreprocessor, HideHiddenTests]
+# the released answer cells start empty (an undefined answer gets a clear message)
+c.ClearSolutions.code_stub = {{"python": "# YOUR ANSWER HERE"}}
+'''
+
+
+def ensure_path():
+    """Put this Python's bin directory (where ``alembic`` lives: nbgrader's
+    gradebook calls it) first on PATH, in this process and its children."""
+    bindir = os.path.dirname(sys.executable)
+    path = os.environ.get("PATH", "")
+    if bindir not in path.split(os.pathsep):
+        os.environ["PATH"] = bindir + os.pathsep + path
+
+
+def gradebook(root, course_id):
+    """nbgrader's Gradebook on the course's embedded sqlite database."""
+    from nbgrader.api import Gradebook
+    ensure_path()
+    return Gradebook("sqlite:///" + os.path.join(os.path.abspath(root), "gradebook.db"), course_id)
+
+
+def nbgrader(course_dir, *args, check=True):
+    """Run ``nbgrader ARGS`` in the course directory; returns the CompletedProcess.
+
+    The venv's bin (where ``alembic`` lives) is put first on PATH.
+    """
+    env = dict(os.environ)
+    bindir = os.path.dirname(sys.executable)
+    env["PATH"] = bindir + os.pathsep + env.get("PATH", "")
+    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=course_dir, env=env,
+                          capture_output=True, text=True)
+    if check and proc.returncode != 0:
+        raise RuntimeError(f"nbgrader {' '.join(args)} failed (exit {proc.returncode}):\n"
+                           + proc.stderr[-3000:])
+    return proc
+
+
+def read_roster(path):
+    """Students from a CSV with a column ``id`` (and optional first_name, last_name, email)."""
+    with open(path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    if rows and "id" not in rows[0]:
+        raise ValueError(f"{path}: the roster needs a column 'id' (got {list(rows[0])})")
+    return rows
+
+
+def create_course(root, course_id="accelab", roster=(), timeout=10):
+    """Create (or update) the course directory at ``root``; returns its path.
+
+    ``roster`` is a list of ids or dicts with ``id`` and optional names.
+    An existing nbgrader_config.py is kept (the instructor may have edited it).
+    """
+    root = os.path.abspath(root)
+    for sub in ("source", "release", "submitted", "autograded", "feedback", "exchange"):
+        os.makedirs(os.path.join(root, sub), exist_ok=True)
+    config = os.path.join(root, "nbgrader_config.py")
+    if not os.path.exists(config):
+        with open(config, "w") as fh:
+            fh.write(CONFIG.format(course_id=course_id, timeout=int(timeout)))
+    with gradebook(root, course_id) as gb:
+        for student in roster:
+            info = dict(student) if isinstance(student, dict) else {"id": student}
+            sid = info.pop("id")
+            info = {k: v for k, v in info.items() if k in ("first_name", "last_name", "email")}
+            gb.update_or_create_student(sid, **info)
+    return root
+
+
+def course_id_of(root):
+    """The course id written in the course's nbgrader_config.py."""
+    import re
+    with open(os.path.join(root, "nbgrader_config.py")) as fh:
+        m = re.search(r"course_id\s*=\s*['\"]([^'\"]+)['\"]", fh.read())
+    return m.group(1) if m else "accelab"

@@ -1,0 +1,121 @@
+"""The nbgrader source notebook of an assignment.
+
+Cells, in order: instructions; the locked parameter cell (grade_id
+``parameters``) that recomputes the variant from the student id (the spec in it
+is the same for every student); per problem a locked statement with a figure of
+the linkage and a locked cell showing that student's given values; per graded
+quantity an answer cell (grade_id ``answer_<name>``, the solution between
+``### BEGIN SOLUTION`` markers) and a test cell (grade_id ``test_<name>``, one
+point) with a visible format check and a hidden value check.
+"""
+
+import base64
+import json
+import os
+
+import nbformat
+from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+
+from .assignment import build_variant, check_spec
+from .figure import draw
+
+PREVIEW_STUDENT = "preview"
+
+
+def _meta(grade_id, *, solution=False, grade=False, locked=False, points=None):
+    nb = {"grade": grade, "grade_id": grade_id, "locked": locked, "schema_version": 3,
+          "solution": solution, "task": False}
+    if points is not None:
+        nb["points"] = points
+    meta = {"nbgrader": nb}
+    if locked:
+        meta.update(deletable=False, editable=False)
+    return meta
+
+
+def _md(text, grade_id, **extra):
+    cell = new_markdown_cell(text, metadata=_meta(grade_id, locked=True))
+    cell.update(extra)
+    return cell
+
+
+def _code(source, grade_id, **kw):
+    return new_code_cell(source, metadata=_meta(grade_id, **kw))
+
+
+INSTRUCTIONS = """# {title}
+
+Each student gets their own values: the cell below computes yours from your student id
+(`{student_hint}`), so run it first. In each answer cell assign your result to the named
+variable, either as a Quantity in any compatible unit, e.g. `alpha3 = Q_(-12.3, "rad/s^2")`
+(`ureg` and `Q_` are ready), or as a bare number in the unit given in brackets. Where the
+statement says so, give a Quantity. Angles are measured counter-clockwise from +x; omega and
+alpha are positive counter-clockwise. The cell after each answer checks its format and
+dimension now; its value is checked when the assignment is graded (relative tolerance
+{tol}).
+"""
+
+ANSWER_TEMPLATE = "# {description} [{unit}]\n### BEGIN SOLUTION\n{name} = v.solution({name!r})\n### END SOLUTION\n"
+TEST_TEMPLATE = ("from exercises.runtime import check_format, check_value\n"
+                 "check_format({name!r}, globals())\n"
+                 "### BEGIN HIDDEN TESTS\n"
+                 "check_value({name!r}, globals())\n"
+                 "### END HIDDEN TESTS\n")
+
+
+def build_notebook(spec, title=None):
+    """The source notebook (an nbformat node) of ``spec``."""
+    check_spec(spec)
+    preview = build_variant(spec, PREVIEW_STUDENT)
+    title = title or f"Assignment {spec['assignment']}: acceleration analysis"
+    cells = [_md(INSTRUCTIONS.format(title=title, student_hint="your JupyterHub user name, "
+                                     "or 'self-study' when working alone",
+                                     tol=f"{100 * spec['tolerance']:g}%"), "instructions")]
+    cells.append(_code("from exercises.runtime import ureg, Q_, load_variant, student_id\n"
+                       f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
+                       "v = load_variant(SPEC, student_id())\n", "parameters", locked=True))
+    for k, problem in enumerate(preview.problems, start=1):
+        png = base64.b64encode(draw(problem)).decode("ascii")
+        rows = "\n".join(f"| `{a.name}` | {a.description} | "
+                         f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')} |"
+                         for a in problem.answers)
+        text = (f"## Problem {k}: {problem.title}\n\n{problem.statement}\n\n"
+                f"![figure](attachment:figure{k}.png)\n\n"
+                f"| variable | quantity | unit |\n|---|---|---|\n{rows}\n")
+        cells.append(_md(text, f"problem{k}",
+                         attachments={f"figure{k}.png": {"image/png": png}}))
+        cells.append(_code(f"v.show({k})", f"given{k}", locked=True))
+        for a in problem.answers:
+            unit = a.unit or "text"
+            cells.append(_code(ANSWER_TEMPLATE.format(description=a.description, unit=unit,
+                                                      name=a.name),
+                               f"answer_{a.name}", solution=True))
+            cells.append(_code(TEST_TEMPLATE.format(name=a.name), f"test_{a.name}",
+                               grade=True, locked=True, points=1))
+    nb = new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}
+    nb.metadata["language_info"] = {"name": "python"}
+    return nb
+
+
+def write_source(course_dir, spec, title=None):
+    """Write ``source/<A>/<A>.ipynb`` and ``source/<A>/accelab.json``; returns the notebook path."""
+    folder = os.path.join(course_dir, "source", spec["assignment"])
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "accelab.json"), "w") as fh:
+        json.dump(spec, fh, indent=1, sort_keys=True)
+    path = os.path.join(folder, f"{spec['assignment']}.ipynb")
+    nbformat.write(build_notebook(spec, title), path)
+    return path
+
+
+def read_spec(course_dir, assignment):
+    """The spec that ``accelab assign`` stored for ``assignment``."""
+    path = os.path.join(course_dir, "source", assignment, "accelab.json")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"no assignment {assignment!r} in {course_dir} (missing {path}); "
+                                f"create it with: accelab assign --course {course_dir} "
+                                f"--assignment {assignment}")
+    with open(path) as fh:
+        return check_spec(json.load(fh))
