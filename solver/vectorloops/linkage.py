@@ -1,0 +1,136 @@
+"""The unit-aware vector-loop linkage."""
+
+import numpy as np
+
+from ..errors import InvalidInput, NotAssemblable, Singular
+from ..kernels import NOT_ASSEMBLABLE, OK, STATUS_NAMES
+from ..units import quantity, to_si
+from .solve import solve, system_from_case
+
+
+class VectorLoopLinkage:
+    """A planar linkage of any number of loops (section 7.8).
+
+    Parameters
+    ----------
+    vectors : dict
+        Named vectors as in CONVENTIONS: ``{"R2": {"length": "2 in", "angle":
+        "input"}, "R3": {"length": "6 in", "angle": "unknown", "guess":
+        "90 deg"}, "S": {"length": "unknown", "guess": "7 in", "angle":
+        "0 deg"}, "R5": {"length": "3 in", "angle": {"follow": "R3",
+        "offset": "40 deg"}}, ...}``. The guesses choose the assembly.
+    loops : list of str
+        Each a signed sum of vector names that closes to zero.
+    points : dict, optional
+        Named points as signed sums of vectors from the origin.
+
+    Examples
+    --------
+    >>> fourbar = VectorLoopLinkage(
+    ...     vectors={"R1": {"length": "7 in", "angle": "0 deg"},
+    ...              "R2": {"length": "2 in", "angle": "input"},
+    ...              "R3": {"length": "6 in", "angle": "unknown", "guess": "90 deg"},
+    ...              "R4": {"length": "9 in", "angle": "unknown", "guess": "130 deg"}},
+    ...     loops=["R2 + R3 - R4 - R1"], points={"B": "R2 + R3"})
+    >>> r = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
+    >>> r.vectors["R4"].alpha, r.points["B"].A
+    """
+
+    def __init__(self, vectors, loops, points=None):
+        self.description = {"vectors": vectors, "loops": loops, "points": points or {}}
+        self.system = system_from_case(self.description)
+
+    @classmethod
+    def from_case(cls, case):
+        return cls(case.get("vectors"), case.get("loops"), case.get("points"))
+
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, order=3):
+        """Solve at one input angle or along an array of them (one assembly).
+
+        Parameters are Quantities or strings as for :meth:`FourBar.solve`.
+        A scalar theta2 that cannot be assembled or is singular raises
+        NotAssemblable / Singular (a NoConvergence carries the residual);
+        an array gives NaN and a ``valid`` mask there.
+        """
+        t2 = to_si(theta2, "theta2", "angle")
+        w2 = to_si(omega2, "omega2", "angular_velocity")
+        a2 = to_si(alpha2, "alpha2", "angular_acceleration")
+        j2 = to_si(jerk2, "jerk2", "angular_jerk")
+        if order != 3:
+            if order not in (1, 2):
+                raise InvalidInput("order must be 1, 2 or 3", "order")
+        motion = solve(self.system, t2, w2, a2, j2, order)
+        scalar = np.ndim(t2) == 0
+        if scalar and motion.status[0] != OK:
+            err = motion.message
+            if not isinstance(err, Exception):
+                cls = NotAssemblable if motion.status[0] == NOT_ASSEMBLABLE else Singular
+                err = cls(str(err))
+            raise err
+        return LoopResult(self.system, motion, scalar)
+
+
+class _Named:
+    def __init__(self, values, kinds, scalar):
+        self._values, self._kinds, self._scalar = values, kinds, scalar
+
+    def __getattr__(self, name):
+        if name.startswith("_") or name not in self._values:
+            raise AttributeError(name)
+        v = self._values[name]
+        return quantity(v[0] if self._scalar else v, self._kinds[name])
+
+    def __dir__(self):
+        return list(self._values)
+
+    def __repr__(self):
+        return "<" + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._values) + ">"
+
+
+class LoopResult:
+    """Solved vector-loop linkage: ``vectors[NAME]`` (angle, omega, alpha, jerk
+    and, for sliders, length, length_dot, length_ddot, length_dddot) and
+    ``points[NAME]`` (R, V, A, J as complex Quantities), with ``valid``,
+    ``status``, ``condition`` and Newton ``iterations`` per position."""
+
+    def __init__(self, system, motion, scalar):
+        self._motion, self._scalar = motion, scalar
+        model = system.model
+        m = motion
+        order = len(m.dth)
+        kinds = {"angle": "angle", "omega": "angular_velocity", "alpha": "angular_acceleration",
+                 "jerk": "angular_jerk", "length": "length", "length_dot": "velocity",
+                 "length_ddot": "acceleration", "length_dddot": "jerk"}
+        self.vectors = {}
+        for v, name in enumerate(model.names):
+            values = {"angle": m.theta[:, v]}
+            for n, key in enumerate(("omega", "alpha", "jerk")[:order]):
+                values[key] = m.dth[n][:, v]
+            if model.length_unknown[v] >= 0:
+                values["length"] = m.L[:, v]
+                for n, key in enumerate(("length_dot", "length_ddot", "length_dddot")[:order]):
+                    values[key] = m.dL[n][:, v]
+            self.vectors[name] = _Named(values, kinds, scalar)
+        pkinds = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk"}
+        self.points = {name: _Named({k: m.points[n][:, p] for n, k in enumerate("RVAJ"[:order + 1])},
+                                    pkinds, scalar)
+                       for p, name in enumerate(model.point_names)}
+
+    def _one(self, x):
+        return x[0] if self._scalar else x
+
+    @property
+    def valid(self):
+        return self._one(self._motion.status == OK)
+
+    @property
+    def status(self):
+        return self._one(np.array([STATUS_NAMES[s] for s in self._motion.status], dtype=object))
+
+    @property
+    def condition(self):
+        return self._one(self._motion.condition)
+
+    @property
+    def iterations(self):
+        return self._one(self._motion.iterations)

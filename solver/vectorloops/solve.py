@@ -1,0 +1,59 @@
+"""The unit-free entry point: a description in SI solved from position to jerk."""
+
+import numpy as np
+
+from ..kernels import Motion, OK, SINGULAR, SINGULAR_CONDITION
+from ..errors import Singular
+from .derivatives import point_motion, solve_derivatives
+from .description import read_description
+from .newton import LoopSystem, condition
+from .sweep import singular_message, solve_sweep
+
+
+def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3):
+    """Solve a :class:`LoopSystem` at an array of input angles (a sweep).
+
+    Returns a Motion with ``q`` (N, n_unknowns), per-vector ``L``, ``theta``,
+    ``dL``/``dth`` (lists of derivative arrays), point motions ``points``
+    (list [R, V, A, J] of (N, n_points) complex arrays), ``status``,
+    ``condition``, ``iterations`` and ``message``.
+    """
+    theta2 = np.atleast_1d(np.asarray(theta2, dtype=float))
+    N = len(theta2)
+    inputs = [np.broadcast_to(np.asarray(x, dtype=float), (N,)) for x in (omega2, alpha2, jerk2)]
+    q, status, iterations, message = solve_sweep(system, theta2, system.model.guess)
+    ok = status == OK
+    nv = len(system.fixed_length)
+    out = Motion(q=q, status=status, iterations=iterations, message=message,
+                 condition=np.full(N, np.nan))
+    L = np.full((N, nv), np.nan)
+    theta = np.full((N, nv), np.nan)
+    dL = [np.full((N, nv), np.nan) for _ in range(order)]
+    dth = [np.full((N, nv), np.nan) for _ in range(order)]
+    npts = system.model.point_signs.shape[0]
+    pts = [np.full((N, npts), np.nan + 0j) for _ in range(order + 1)]
+    if ok.any():
+        d = solve_derivatives(system, q[ok], theta2[ok], [x[ok] for x in inputs], order)
+        L[ok], theta[ok] = d["L"], d["theta"]
+        for n in range(order):
+            dL[n][ok], dth[n][ok] = d["dL"][n], d["dth"][n]
+        for n, p in enumerate(point_motion(system, d, order)):
+            pts[n][ok] = p
+        cond = condition(d["J"], system.model)
+        out.condition[ok] = cond
+        singular = np.zeros(N, dtype=bool)
+        singular[ok] = ~(cond >= SINGULAR_CONDITION)
+        if singular.any():  # positions stand; their derivatives cannot be vouched for
+            status[singular] = SINGULAR
+            for arr in dL + dth + pts[1:]:
+                arr[singular] = np.nan
+            i = int(np.flatnonzero(singular)[0])
+            out.message = out.message or Singular(singular_message(theta2[i], out.condition[i]),
+                                                  condition=float(out.condition[i]))
+    out.L, out.theta, out.dL, out.dth, out.points = L, theta, dL, dth, pts
+    return out
+
+
+def system_from_case(case):
+    """Read a description dict (quantity strings) into a ready LoopSystem."""
+    return LoopSystem(read_description(case))
