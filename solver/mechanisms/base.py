@@ -367,12 +367,23 @@ class Mechanism:
 
     # --- solving ----------------------------------------------------------
     def _motion_inputs(self, theta2, omega2, alpha2, jerk2):
-        return {
+        inputs = {
             "theta2": to_si(theta2, "theta2", "angle"),
             "omega2": to_si(omega2, "omega2", "angular_velocity"),
             "alpha2": to_si(alpha2, "alpha2", "angular_acceleration"),
             "jerk2": to_si(jerk2, "jerk2", "angular_jerk"),
         }
+        shapes = {k: np.shape(v) for k, v in inputs.items()}
+        try:
+            shape = np.broadcast_shapes(*shapes.values())
+        except ValueError:
+            raise InvalidInput("theta2, omega2, alpha2 and jerk2 must be scalars or arrays of "
+                               "one shape (got shapes " + ", ".join(
+                                   f"{k} {v}" for k, v in shapes.items()) + ")",
+                               "omega2") from None
+        if shape != shapes["theta2"]:  # the sweep runs over theta2's shape
+            inputs["theta2"] = np.broadcast_to(inputs["theta2"], shape)
+        return inputs
 
     def _check_circuit(self, circuit):
         if circuit not in self._circuits:
