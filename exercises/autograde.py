@@ -177,11 +177,11 @@ def export_csv(course_dir, assignment, outcomes, path=None):
 def format_table(rows, names):
     """The grade table as text: one line per student."""
     short = {n: n for n in names}
-    head = f"{'student':<12} " + " ".join(f"{short[n][:10]:>10}" for n in names) + \
+    head = f"{'student':<12} " + " ".join(f"{short[n][:11]:>11}" for n in names) + \
         f" {'total':>7}  notes"
     lines = [head, "-" * len(head)]
     for r in rows:
-        lines.append(f"{r['student']:<12} " + " ".join(f"{r[n]:>10g}" for n in names)
+        lines.append(f"{r['student']:<12} " + " ".join(f"{r[n]:>11g}" for n in names)
                      + f" {r['total']:>4g}/{r['max']:g}  {r['notes']}")
     return "\n".join(lines)
 

@@ -56,9 +56,10 @@ dimension now; its value is checked when the assignment is graded (relative tole
 """
 
 ANSWER_TEMPLATE = "# {description} [{unit}]\n### BEGIN SOLUTION\n{name} = v.solution({name!r})\n### END SOLUTION\n"
-TEST_TEMPLATE = ("from exercises.runtime import check_format, check_value\n"
+TEST_TEMPLATE = ("from exercises.runtime import check_format\n"
                  "check_format({name!r}, globals())\n"
                  "### BEGIN HIDDEN TESTS\n"
+                 "from exercises.runtime import check_value\n"
                  "check_value({name!r}, globals())\n"
                  "### END HIDDEN TESTS\n")
 

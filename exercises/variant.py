@@ -1,0 +1,44 @@
+"""``accelab variant``: one student's variant, without the answers, so that any
+outside solver can answer it.
+
+JSON shape::
+
+    {"course": ..., "assignment": ..., "student": ..., "units": "US", "tolerance": 0.01,
+     "problems": [{"number": 1, "family": ..., "title": ..., "statement": ...,
+                   "given": {...}, "answers": [...]}],
+     "answers": [{"name": "p1_A_A_x", "problem": 1, "kind": "number", "unit": "in/s^2",
+                  "description": ..., "cases": {"A": {batch case}}, "expr": "real(A.A)",
+                  "quantity_required": false}, ...]}
+
+``expr`` is evaluated in SI (m, rad, s) over the batch outputs of ``cases``
+(vectors as complex numbers); convert the result to ``unit``. Choice answers
+have ``"kind": "choice"`` and ``choices``, and no expr.
+"""
+
+import json
+
+from .assignment import build_variant
+from .grading import quiet
+from .notebook import read_spec
+
+
+def variant_json(course_dir, assignment, student):
+    """The public variant of ``student`` as a dict."""
+    spec = read_spec(course_dir, assignment)
+    with quiet():
+        return build_variant(spec, student).public()
+
+
+def format_text(v):
+    lines = [f"{v['course']} / {v['assignment']} / student {v['student']} ({v['units']} units, "
+             f"tolerance {100 * v['tolerance']:g}%)"]
+    for p in v["problems"]:
+        lines.append(f"\nProblem {p['number']}: {p['title']}")
+        lines += [f"  {k} = {val}" for k, val in p["given"].items()]
+        for a in p["answers"]:
+            lines.append(f"  find {a['name']} [{a['unit'] or a.get('choices')}]: {a['description']}")
+    return "\n".join(lines)
+
+
+def dumps(v):
+    return json.dumps(v, indent=1)
