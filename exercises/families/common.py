@@ -47,6 +47,7 @@ def ranges_for(defaults, ranges, units):
     (lo, hi, step), numbers in the display unit of ``units`` or quantity
     strings such as ("1 in", "3 in").
     """
+    check_units(units)
     out = {}
     for name, (lo, hi, step, kind) in defaults.items():
         if kind == "length" and units == "SI":   # round millimetres: steps of 5 or 10 mm
