@@ -1,0 +1,68 @@
+"""Graphical acceleration analysis (Chapter 7, section 7.2): velocity and
+acceleration polygons constructed step by step, and drawn.
+
+The constructions are an independent method: from the link lengths and the
+input motion alone they draw the linkage to scale (arcs and lines), then
+place known vectors tip to tail and intersect the construction lines of the
+vectors whose direction only is known, exactly as Example 7-1 does. They
+never call the analytic solver; the tests compare the two.
+
+>>> from solver.graphical import construct_case
+>>> con = construct_case({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in",
+...                       "d": "7 in", "theta2": "30 deg", "omega2": "10 rad/s",
+...                       "alpha2": "-5 rad/s^2"})
+>>> round(con.values["alpha4"], 4)
+39.4252
+"""
+
+from . import fourbar, invertedslidercrank, slidercrank, slotted
+from .construction import Arrow, Construction, Line, Linkage, Step
+
+__all__ = ["construct", "construct_case", "DRAWABLE", "Construction", "Step", "Arrow", "Line",
+           "Linkage", "fourbar", "slidercrank", "invertedslidercrank", "slotted"]
+
+#: batch mechanisms that have a construction
+DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "rotation")
+
+
+def construct(mechanism, circuit=None, **params):
+    """Build the construction of ``mechanism`` from SI parameters (the names
+    of the batch format: a, b, c, d, theta1, theta2, omega2, alpha2, p,
+    delta3, gamma). ``jerk2`` is accepted and ignored (no jerk polygon)."""
+    from ..errors import InvalidInput
+    params = dict(params)
+    params.pop("jerk2", None)
+    kw = {"circuit": circuit} if circuit else {}
+    if mechanism == "fourbar":
+        return fourbar.construct(**params, **kw)
+    if mechanism == "slidercrank":
+        return slidercrank.construct(**params, **kw)
+    if mechanism == "invertedslidercrank":
+        return invertedslidercrank.construct(**params, **kw)
+    if mechanism == "rotation":
+        return slotted.construct(params["theta2"], params["omega2"], params["alpha2"],
+                                 params["p"], mechanism="rotation")
+    if mechanism == "slotted":
+        return slotted.construct(**params)
+    raise InvalidInput(f"there is no graphical construction for {mechanism!r}; draw one of "
+                       f"{', '.join(DRAWABLE)} (use 'accelab solve' for the others)",
+                       "mechanism")
+
+
+def construct_case(case):
+    """Construction of one batch case (CONVENTIONS format, parsed by
+    :func:`solver.batch.read_case`). Raises the AccelabError family."""
+    from ..batch import read_case
+    from ..errors import InvalidInput
+    if isinstance(case, dict) and case.get("mechanism") not in (None,) + DRAWABLE \
+            and case.get("mechanism") in ("fivebar", "loops"):
+        raise InvalidInput(f"there is no graphical construction for {case['mechanism']!r}; "
+                           f"draw one of {', '.join(DRAWABLE)} (use 'accelab solve' for it)",
+                           "mechanism")
+    ci = read_case(case)
+    params = dict(ci.params)
+    if ci.mechanism == "fourbar" and "p" in params:
+        params.setdefault("delta3", 0.0)
+    if ci.mechanism == "rotation":
+        params.pop("theta1", None)
+    return construct(ci.mechanism, ci.circuit, **params)
