@@ -81,7 +81,7 @@ class Linkage:
     ground: list
     slides: list = field(default_factory=list)
     blocks: list = field(default_factory=list)  # (point name, direction of its slide)
-    rods: list = field(default_factory=list)  # (point, direction): a slide that is part of a link
+    rods: list = field(default_factory=list)  # (point, direction, t0, t1): a slide on a link
 
 
 @dataclass

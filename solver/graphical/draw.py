@@ -56,12 +56,14 @@ class _Labels:
         n = max(5, min(60, int(40 * abs(z1 - z0) / self.extent) + 2))
         self.obstacles += [z0 + (z1 - z0) * k / (n - 1) for k in range(n)]
 
-    def _score(self, z):
-        pts = self.obstacles + self.placed + self.placed  # labels count double
-        return min((abs(z - p) for p in pts), default=1.0)
+    def _score(self, z, rank, offset):
+        d_obst = min((abs(z - p) for p in self.obstacles), default=offset)
+        d_label = min((abs(z - p) for p in self.placed), default=3 * offset)
+        return min(d_obst, offset) + min(d_label, 3 * offset) - 0.02 * offset * rank
 
-    def place(self, text, candidates, **kw):
-        best = max(candidates, key=self._score)
+    def place(self, text, candidates, offset=None, **kw):
+        offset = offset or 0.06 * self.extent
+        best = max(enumerate(candidates), key=lambda rc: self._score(rc[1], rc[0], offset))[1]
         self.placed.append(best)
         return self.ax.text(best.real, best.imag, text, ha="center", va="center",
                             fontsize=style.LABEL_SIZE, zorder=10,
@@ -262,10 +264,8 @@ def draw_linkage(con, step=None, ax=None, scale=None):
         ax.plot([za.real, zb.real], [za.imag, zb.imag], color="#222222", linewidth=1.0,
                 linestyle="-.", zorder=1)
         labels.avoid_segment(za, zb)
-    for p0, u in lk.rods:
+    for p0, u, t0, t1 in lk.rods:
         u = u / abs(u)
-        ts = [((z - p0) * u.conjugate()).real for z in pts.values()]
-        t0, t1 = min(ts + [0.0]) - 0.1 * size, max(ts + [0.0]) + 0.1 * size
         za, zb = p0 + t0 * u, p0 + t1 * u
         ax.plot([za.real, zb.real], [za.imag, zb.imag], color="#4d4d4d", linewidth=2.2,
                 zorder=2)
@@ -294,6 +294,7 @@ def draw_linkage(con, step=None, ax=None, scale=None):
         v = a.vector * scale
         if abs(v) > 0:
             labels.place(f"${a.name}$", _label_candidates(a.start, v, 0.065 * size),
+                         0.065 * size,
                          color=_label_colour(a.kind))
     x0, x1, y0, y1 = box
     span = max(x1 - x0, y1 - y0)
@@ -351,6 +352,7 @@ def draw_polygon(con, diagram, step=None, ax=None):
     for a in arrows:
         if abs(a.vector) > 0:
             labels.place(f"${a.name}$", _label_candidates(a.start, a.vector, 0.07 * size),
+                         0.07 * size,
                          color=_label_colour(a.kind))
     bx0, bx1, by0, by1 = box
     span = max(bx1 - bx0, by1 - by0)

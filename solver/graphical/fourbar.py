@@ -13,6 +13,9 @@ polygon is measuring along the lines.
 """
 
 import cmath
+import math
+
+from ..errors import NotAssemblable
 
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_circles, intersect_lines
@@ -67,7 +70,15 @@ def construct(a, b, c, d, theta2, omega2, alpha2, theta1=0.0, circuit="open",
     v = con.values
 
     # -- position: swing arc b about A and arc c about O4; they meet at B
-    B = intersect_circles(A, b, O4, c, side, "the coupler and rocker")
+    try:
+        B = intersect_circles(A, b, O4, c, side, "the coupler and rocker")
+    except NotAssemblable:
+        s = abs(O4 - A)
+        raise NotAssemblable(
+            f"the links cannot close at theta2 = {math.degrees(theta2):.6g} deg: the arcs "
+            f"b = {b:.6g} m about A and c = {c:.6g} m about O4 do not meet, since A is "
+            f"{s:.6g} m from O4 (need |b - c| <= |O4 - A| <= b + c); change the lengths or "
+            "the input angle") from None
     pts["B"] = B
     R_BA, R_BO4 = B - A, B - O4
     st = con.step("P", "position",

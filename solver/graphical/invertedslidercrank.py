@@ -16,6 +16,9 @@ with A_A (from the crank), A_A4^n and A_coriolis known; the line of A_slip
 """
 
 import cmath
+import math
+
+from ..errors import NotAssemblable
 
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_line_circle, intersect_lines
@@ -66,16 +69,23 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
     # In link 4's own frame (O4 at 0, B at c on the x axis) the slide line is
     # c + t e^{j gamma}; an arc of radius |O4A| about O4 cuts it where A must be.
     eg = cmath.exp(1j * gamma)
-    Z, b = intersect_line_circle(complex(c), eg, 0j, s, SIGNS[circuit],
-                                 "the slide line (at c |sin gamma| from O4)")
+    try:
+        Z, b = intersect_line_circle(complex(c), eg, 0j, s, SIGNS[circuit], "the slide")
+    except NotAssemblable:
+        raise NotAssemblable(
+            f"the slide line cannot pass through A at theta2 = {math.degrees(theta2):.6g} deg: "
+            f"it stays c |sin gamma| = {abs(c * eg.imag):.6g} m from O4 but A is only "
+            f"{s:.6g} m from O4; shorten c, reduce |sin gamma| or change the input angle"
+        ) from None
     e4 = (A - O4) / Z        # turn link 4 so that point lands on A (|Z| = s)
     e4 /= abs(e4)
     e3 = e4 * eg
     B = O4 + c * e4
     pts = {"O2": 0j, "A": A, "O4": O4, "B": B}
     links = [("O2", "A"), ("O4", "B")]
+    m = 0.3 * max(abs(b), a)  # how far link 4's slide reaches past A and B
     con = Construction("invertedslidercrank",
-                       Linkage(pts, links, ["O2", "O4"], rods=[(B, e3)], blocks=[("A", e3)]),
+                       Linkage(pts, links, ["O2", "O4"], rods=[(B, e3, min(0.0, b) - m, max(0.0, b) + m)], blocks=[("A", e3)]),
                        [], {}, circuit, title=f"Inverted slider-crank ({circuit} circuit)")
     v = con.values
     R_AO4 = A - O4

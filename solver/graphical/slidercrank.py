@@ -8,6 +8,9 @@ meets the line perpendicular to AB through the tip of ``A_A + A_BA^n``
 """
 
 import cmath
+import math
+
+from ..errors import NotAssemblable
 
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_line_circle, intersect_lines
@@ -49,8 +52,14 @@ def construct(a, b, theta2, omega2, alpha2, c=0.0, theta1=0.0, circuit="open"):
     e1 = cmath.exp(1j * theta1)
     A = a * cmath.exp(1j * theta2)
     origin_axis = 1j * c * e1
-    B, d = intersect_line_circle(origin_axis, e1, A, b, SIGNS[circuit],
-                                 "the connecting rod (b)")
+    try:
+        B, d = intersect_line_circle(origin_axis, e1, A, b, SIGNS[circuit], "the rod")
+    except NotAssemblable:
+        h = abs(((A - origin_axis) * e1.conjugate()).imag)
+        raise NotAssemblable(
+            f"the connecting rod b = {b:.6g} m cannot reach the slide axis at theta2 = "
+            f"{math.degrees(theta2):.6g} deg: A is {h:.6g} m from it (need b >= "
+            "|a sin(theta2 - theta1) - c|); lengthen b or change the offset c") from None
     pts = {"O2": 0j, "A": A, "B": B}
     con = Construction("slidercrank",
                        Linkage(pts, [("O2", "A"), ("A", "B")], ["O2"],

@@ -34,8 +34,9 @@ def construct(theta2, omega2, alpha2, p, p_dot=0.0, p_ddot=0.0, mechanism="slott
     P = p * e
     slip = p_dot != 0.0 or p_ddot != 0.0
     con = Construction(mechanism,
-                       Linkage({"O2": 0j, "P": P}, [("O2", "P")], ["O2"],
-                               blocks=[("P", e)] if mechanism == "slotted" else []),
+                       Linkage({"O2": 0j, "P": P}, [] if mechanism == "slotted" else [("O2", "P")],
+                               ["O2"], blocks=[("P", e)] if mechanism == "slotted" else [],
+                               rods=[(0j, e, 0.0, 1.4 * p)] if mechanism == "slotted" else []),
                        [], {}, None,
                        title="Slotted link (Figure 7-7)" if mechanism == "slotted"
                        else "Rotating point (section 7.1)")

@@ -1,0 +1,45 @@
+"""The worked cases whose constructions the README and the course show
+(``accelab figures`` draws them into ``figures/``).
+
+``EXAMPLE_7_1`` is the project's Example 7-1 fourbar (the chapter's example
+gives no numbers; these are the ones the course uses throughout, with a
+negative (CW) alpha2 and a positive (CCW) omega2 as in Figure 7-4), with a
+coupler point P standing for the chapter's point C.
+"""
+
+EXAMPLE_7_1 = {"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
+               "theta2": "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2",
+               "p": "3 in", "delta3": "30 deg", "circuit": "open"}
+
+SLIDER_CRANK = {"mechanism": "slidercrank", "a": "40 mm", "b": "120 mm", "c": "10 mm",
+                "theta2": "60 deg", "omega2": "30 rad/s", "alpha2": "-200 rad/s^2",
+                "circuit": "open"}
+
+INVERTED_SLIDER_CRANK = {"mechanism": "invertedslidercrank", "a": "40 mm", "c": "50 mm",
+                         "d": "100 mm", "gamma": "70 deg", "theta2": "60 deg",
+                         "omega2": "30 rad/s", "alpha2": "-200 rad/s^2", "circuit": "open"}
+
+#: the slotted link of Figure 7-7 (SI: rad, rad/s, rad/s^2, m, m/s, m/s^2)
+SLOTTED = {"theta2": 0.6981317007977318, "omega2": 10.0, "alpha2": -50.0, "p": 0.08,
+           "p_dot": 0.5, "p_ddot": 3.0}
+
+GALLERY = {"graphical-fourbar": EXAMPLE_7_1, "graphical-slidercrank": SLIDER_CRANK,
+           "graphical-invertedslidercrank": INVERTED_SLIDER_CRANK, "graphical-slotted": SLOTTED}
+
+
+def construction(name):
+    """The construction of a gallery entry."""
+    from . import construct_case, slotted
+    case = GALLERY[name]
+    if name == "graphical-slotted":
+        return slotted.construct(**case)
+    return construct_case(case)
+
+
+def render(outdir, formats=("png", "svg"), names=None):
+    """Draw the gallery's figures into ``outdir``; returns the paths written."""
+    from .draw import save
+    paths = []
+    for name in names or GALLERY:
+        paths += save(construction(name), outdir, name, formats)
+    return paths
