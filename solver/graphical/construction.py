@@ -100,10 +100,21 @@ class Construction:
         self.steps.append(s)
         return s
 
+    def index(self, step):
+        """The number (1..N) of a step given as a number or as its label
+        (``"6"`` is step 6 of Example 7-1, ``"V2"`` a velocity step)."""
+        if isinstance(step, str):
+            labels = [s.label for s in self.steps]
+            if step not in labels:
+                raise ValueError(f"no step {step!r}; the steps are {', '.join(labels)}")
+            return labels.index(step) + 1
+        return int(step)
+
     def items(self, diagram, upto=None):
-        """Arrows and lines of ``diagram`` added by steps 1..``upto`` (all by
-        default); returns ``(arrows, lines, marks)``."""
-        n = len(self.steps) if upto is None else int(upto)
+        """Arrows and lines of ``diagram`` added by steps 1..``upto`` (a number,
+        or a step label such as ``"6"``; all by default); returns
+        ``(arrows, lines, marks)``."""
+        n = len(self.steps) if upto is None else self.index(upto)
         if not 0 <= n <= len(self.steps):
             raise ValueError(f"step must be between 0 and {len(self.steps)} (got {upto})")
         arrows, lines, marks = [], [], {}

@@ -8,6 +8,7 @@ as the caption, so a notebook can walk through the method.
 """
 
 import math
+import re
 import textwrap
 
 import matplotlib.pyplot as plt
@@ -182,13 +183,31 @@ def _legend(ax, kinds, with_lines, **kw):
 
 
 def _caption(fig, con, step):
-    if step is None or step == 0:
+    if step is None:
+        return
+    step = con.index(step)
+    if step == 0:
         return
     s = con.steps[step - 1]
     head = (f"Step {s.label}" if s.phase == "acceleration" else
             {"position": "Position", "velocity": f"Velocity {s.label}"}[s.phase])
     text = textwrap.fill(f"{head} ({step}/{len(con.steps)}): {s.text}", 100)
+    text = _mathtext(text)
     fig.text(0.5, 0.0, text, ha="center", va="top", fontsize=style.FONT_SIZE)
+
+
+_SYMBOL = re.compile(r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?|\b(omega|alpha|theta|delta|gamma)(\d?)\b")
+
+
+def _mathtext(text):
+    """Step texts say A_BA^t, omega3 ...: show them as the chapter's symbols."""
+    def sub(m):
+        if m.group(1):
+            sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+            return rf"$\mathbf{{{m.group(1)}}}_{{{m.group(2)}}}{sup}$"
+        sym = "\\" + m.group(4)
+        return f"${sym}_{{{m.group(5)}}}$" if m.group(5) else f"${sym}$"
+    return _SYMBOL.sub(sub, text).replace("^2", "$^2$")
 
 
 # ---------------------------------------------------------------- linkage
@@ -219,8 +238,9 @@ def draw_linkage(con, step=None, ax=None, scale=None):
     Parameters
     ----------
     con : Construction
-    step : int, optional
-        Draw only what steps 1..step add (default: the finished construction).
+    step : int or str, optional
+        Draw only what steps 1..step add (default: the finished construction);
+        a label such as ``"6"`` names a step of Example 7-1.
     ax : matplotlib Axes, optional
     scale : float, optional
         Drawing scale of the acceleration vectors [m of drawing per m/s^2];

@@ -80,15 +80,17 @@ def intersect_circles(c1, r1, c2, r2, side, what="the links"):
     s = abs(w)
     if s == 0.0:
         raise NotAssemblable(f"{what}: the two arc centres coincide")
-    # distance from c1 along c1->c2 to the chord, and half chord
-    x = (s * s + r1 * r1 - r2 * r2) / (2.0 * s)
-    h2 = (r1 - x) * (r1 + x)
-    if h2 < 0.0:
+    # the triangle c1, c2, X: four times its area by the factored Heron form
+    # (full relative accuracy as the triangle flattens), half chord h = 2 area / s
+    prod = (s + r1 + r2) * (s + r1 - r2) * (s - r1 + r2) * (r1 + r2 - s)
+    if prod < 0.0:
         raise NotAssemblable(f"{what} cannot close: arcs of radius {r1:.6g} m and {r2:.6g} m "
                              f"about centres {s:.6g} m apart do not meet "
                              f"(need |{r1:.4g} - {r2:.4g}| <= {s:.4g} <= {r1:.4g} + {r2:.4g})")
+    h = math.sqrt(prod) / (2.0 * s)
+    x = (s * s + r1 * r1 - r2 * r2) / (2.0 * s)
     e = w / s
-    return c1 + (x + 1j * side * math.sqrt(h2)) * e
+    return c1 + (x + 1j * side * h) * e
 
 
 def intersect_line_circle(p, u, centre, r, sign, what="the link"):
@@ -103,11 +105,11 @@ def intersect_line_circle(p, u, centre, r, sign, what="the link"):
     """
     w = p - centre
     half_b = dot(w, u)
-    h2 = r * r - (abs(w) ** 2 - half_b * half_b)
+    dist = abs(cross(w, u))  # distance from the centre to the line
+    h2 = (r - dist) * (r + dist)
     if h2 < 0.0:
         raise NotAssemblable(f"{what} cannot reach the line: the line passes "
-                             f"{math.sqrt(abs(w) ** 2 - half_b * half_b):.6g} m from the centre, "
-                             f"farther than the radius {r:.6g} m")
+                             f"{dist:.6g} m from the centre, farther than the radius {r:.6g} m")
     t = -half_b + sign * math.sqrt(h2)
     return p + t * u, t
 

@@ -1,0 +1,115 @@
+"""`accelab draw` and `accelab figures` end to end."""
+
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+from solver.batch import solve_case
+from solver.cli import main
+from solver.graphical.gallery import EXAMPLE_7_1, GALLERY
+
+CASES = [
+    EXAMPLE_7_1,
+    {"mechanism": "fourbar", "a": "3 in", "b": "4 in", "c": "5 in", "d": "13 in",
+     "theta2": "45 deg", "omega2": "100 rpm", "alpha2": "0 rad/s^2"},           # cannot close
+    {"mechanism": "slidercrank", "a": "40 mm", "b": "120 mm", "c": "-5 mm", "theta2": "120 deg",
+     "omega2": "3000 rpm", "alpha2": "100 rad/s^2", "circuit": "crossed"},
+    {"mechanism": "fivebar", "a": "1 in"},                                       # no construction
+    {"mechanism": "invertedslidercrank", "a": "40 mm", "c": "50 mm", "d": "100 mm",
+     "gamma": "70 deg", "theta2": "60 deg", "omega2": "30 rad/s", "alpha2": "-200 rad/s^2"},
+    {"mechanism": "slidercrank", "a": "40 mm", "b": "40 mm", "theta2": "90 deg",
+     "omega2": "10 rad/s", "alpha2": "0 rad/s^2"},                               # singular
+    {"mechanism": "fourbar", "a": "2 in", "b": "6 s", "c": "9 in", "d": "7 in",
+     "theta2": "30 deg", "omega2": "10 rad/s", "alpha2": "0 rad/s^2"},          # bad unit
+    "not a case",
+]
+
+
+def run_draw(tmp_path, capsys, cases, *extra):
+    f = tmp_path / "cases.json"
+    f.write_text(json.dumps(cases))
+    status = main(["draw", str(f), "--out", str(tmp_path / "out"), *extra])
+    return status, json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.slow
+def test_draw_batch(tmp_path, capsys):
+    status, results = run_draw(tmp_path, capsys, CASES)
+    assert status == 1
+    assert [r["ok"] for r in results] == [True, False, True, False, True, False, False, False]
+    assert [r.get("error") for r in results if not r["ok"]] == [
+        "not_assemblable", "invalid_input", "singular", "invalid_input", "invalid_input"]
+    for r in results:
+        if not r["ok"]:
+            assert r["message"] and set(r) == {"ok", "error", "message"}
+    # the same error kinds as `accelab solve` where it has an answer
+    for case, r in zip(CASES, results):
+        if not r["ok"] and isinstance(case, dict) and case["mechanism"] != "fivebar":
+            assert solve_case(case)["error"] == r["error"]
+    # the values read off the construction, in SI, vectors [x, y]
+    ex = results[0]
+    ref = solve_case(EXAMPLE_7_1)
+    for k in ("alpha3", "alpha4"):
+        assert ex[k] == pytest.approx(ref[k], rel=1e-9)
+    for k in ("A_A", "A_B", "A_P", "A_BA"):
+        assert ex[k] == pytest.approx(ref[k], rel=1e-9)
+    assert results[2]["d_ddot"] == pytest.approx(solve_case(CASES[2])["d_ddot"], rel=1e-9)
+    assert results[4]["A_coriolis"] == pytest.approx(solve_case(CASES[4])["A_coriolis"],
+                                                     rel=1e-9)
+    names = sorted(os.listdir(tmp_path / "out"))
+    assert names == sorted(f"case{n:03d}-{m}-{k}.{e}" for n, m in
+                           ((1, "fourbar"), (3, "slidercrank"), (5, "invertedslidercrank"))
+                           for k in ("linkage", "polygons") for e in ("png", "svg"))
+    assert all(os.path.exists(p) for p in ex["figures"])
+
+
+def test_draw_all_ok_exits_0_and_step_option(tmp_path, capsys):
+    status, results = run_draw(tmp_path, capsys, [CASES[2]], "--format", "png", "--step", "3")
+    assert status == 0 and results[0]["ok"]
+    assert [os.path.basename(p) for p in results[0]["figures"]] == [
+        "case001-slidercrank-linkage.png", "case001-slidercrank-polygons.png"]
+    status, results = run_draw(tmp_path, capsys, [CASES[2]], "--format", "png", "--step", "99")
+    assert status == 1 and results[0]["error"] == "invalid_input" and "--step" in results[0]["message"]
+
+
+def test_draw_unusable_file(tmp_path, capsys):
+    assert main(["draw", str(tmp_path / "missing.json"), "--out", str(tmp_path)]) == 2
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"mechanism": "fourbar"}')
+    assert main(["draw", str(bad), "--out", str(tmp_path)]) == 2
+    assert "JSON list" in capsys.readouterr().err
+    bad.write_text("[]")
+    assert main(["draw", str(bad), "--out", str(tmp_path), "--format", "gif"]) == 2
+
+
+def test_help_mentions_example(capsys):
+    with pytest.raises(SystemExit):
+        main(["draw", "--help"])
+    out = capsys.readouterr().out
+    assert "accelab draw cases.json --out" in out
+    with pytest.raises(SystemExit):
+        main(["figures", "--help"])
+    assert "graphical-fourbar" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_figures_command_regenerates_every_figure(tmp_path):
+    out = tmp_path / "figs"
+    p = subprocess.run([sys.executable, "-m", "solver", "figures", "--out", str(out)],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    written = sorted(os.listdir(out))
+    assert written == sorted(f"{n}-{k}.{e}" for n in GALLERY for k in ("linkage", "polygons")
+                             for e in ("png", "svg"))
+    # the committed figures/ are what the command makes (up to the renderer's bytes)
+    repo = os.path.join(os.path.dirname(__file__), os.pardir, "figures")
+    for name in written:
+        assert os.path.exists(os.path.join(repo, name)), f"figures/{name} is not committed"
+
+
+def test_figures_unknown_name(capsys):
+    assert main(["figures", "--out", "/tmp/never", "--only", "nope"]) == 2
+    assert "graphical-fourbar" in capsys.readouterr().err
