@@ -17,7 +17,7 @@ CASES = [
      "theta2": "45 deg", "omega2": "100 rpm", "alpha2": "0 rad/s^2"},           # cannot close
     {"mechanism": "slidercrank", "a": "40 mm", "b": "120 mm", "c": "-5 mm", "theta2": "120 deg",
      "omega2": "3000 rpm", "alpha2": "100 rad/s^2", "circuit": "crossed"},
-    {"mechanism": "fivebar", "a": "1 in"},                                       # no construction
+    {"mechanism": "loops", "vectors": {}},                                       # no construction
     {"mechanism": "invertedslidercrank", "a": "40 mm", "c": "50 mm", "d": "100 mm",
      "gamma": "70 deg", "theta2": "60 deg", "omega2": "30 rad/s", "alpha2": "-200 rad/s^2"},
     {"mechanism": "slidercrank", "a": "40 mm", "b": "40 mm", "theta2": "90 deg",
@@ -47,7 +47,7 @@ def test_draw_batch(tmp_path, capsys):
             assert r["message"] and set(r) == {"ok", "error", "message"}
     # the same error kinds as `accelab solve` where it has an answer
     for case, r in zip(CASES, results):
-        if not r["ok"] and isinstance(case, dict) and case["mechanism"] != "fivebar":
+        if not r["ok"] and isinstance(case, dict) and case["mechanism"] != "loops":
             assert solve_case(case)["error"] == r["error"]
     # the values read off the construction, in SI, vectors [x, y]
     ex = results[0]
@@ -67,10 +67,13 @@ def test_draw_batch(tmp_path, capsys):
 
 
 def test_draw_all_ok_exits_0_and_step_option(tmp_path, capsys):
-    status, results = run_draw(tmp_path, capsys, [CASES[2]], "--format", "png", "--step", "3")
+    fivebar = GALLERY["graphical-fivebar"]
+    status, results = run_draw(tmp_path, capsys, [CASES[2], fivebar], "--format", "png",
+                               "--step", "3")
     assert status == 0 and results[0]["ok"]
     assert [os.path.basename(p) for p in results[0]["figures"]] == [
         "case001-slidercrank-linkage.png", "case001-slidercrank-polygons.png"]
+    assert results[1]["A_C"] == pytest.approx(solve_case(fivebar)["A_C"], rel=1e-9)
     status, results = run_draw(tmp_path, capsys, [CASES[2]], "--format", "png", "--step", "99")
     assert status == 1 and results[0]["error"] == "invalid_input" and "--step" in results[0]["message"]
 

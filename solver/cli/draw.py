@@ -16,11 +16,11 @@ For case number N (from 1) it writes DIR/caseNNN-MECHANISM-linkage.{png,svg}
 (the linkage to scale with the acceleration components, Figure 7-4a/d) and
 DIR/caseNNN-MECHANISM-polygons.{png,svg} (velocity and acceleration polygons,
 Figure 7-4b/c), and prints a JSON list with one object per case: the values
-read off the construction in SI (alpha3, alpha4 or d_ddot, A_A, A_B, A_P,
-A_coriolis ..., vectors as [x, y]) and the figure paths, or the error object
+read off the construction in SI (alpha3, alpha4 or d_ddot, A_A, A_B, A_C,
+A_P, A_coriolis ..., vectors as [x, y]) and the figure paths, or the error object
 of 'accelab solve' ({"ok": false, "error": KIND, "message": ...}).
 Mechanisms with a construction: fourbar, slidercrank, invertedslidercrank,
-rotation. --step K draws only the first K steps of each construction.
+fivebar, rotation. --step K draws only the first K steps of each construction.
 
 exit status: 0 every case drawn, 1 some case reported an error, 2 FILE unusable."""
 

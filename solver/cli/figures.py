@@ -12,6 +12,7 @@ figures (each as NAME-linkage and NAME-polygons):
   graphical-fourbar              Example 7-1 (Figure 7-4): fourbar with coupler point P
   graphical-slidercrank          offset slider-crank
   graphical-invertedslidercrank  inverted slider-crank with its Coriolis component (Figure 7-8)
+  graphical-fivebar              geared fivebar (section 7.4): A_B found from A and from C
   graphical-slotted              block in a rotating slotted link (Figure 7-7)"""
 
 

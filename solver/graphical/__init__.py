@@ -15,14 +15,14 @@ never call the analytic solver; the tests compare the two.
 39.4252
 """
 
-from . import fourbar, invertedslidercrank, slidercrank, slotted
+from . import fivebar, fourbar, invertedslidercrank, slidercrank, slotted
 from .construction import Arrow, Construction, Line, Linkage, Step
 
 __all__ = ["construct", "construct_case", "DRAWABLE", "Construction", "Step", "Arrow", "Line",
-           "Linkage", "fourbar", "slidercrank", "invertedslidercrank", "slotted"]
+           "Linkage", "fivebar", "fourbar", "slidercrank", "invertedslidercrank", "slotted"]
 
 #: batch mechanisms that have a construction
-DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "rotation")
+DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")
 
 
 def construct(mechanism, circuit=None, **params):
@@ -39,6 +39,8 @@ def construct(mechanism, circuit=None, **params):
         return slidercrank.construct(**params, **kw)
     if mechanism == "invertedslidercrank":
         return invertedslidercrank.construct(**params, **kw)
+    if mechanism == "fivebar":
+        return fivebar.construct(**params, **kw)
     if mechanism == "rotation":
         return slotted.construct(params["theta2"], params["omega2"], params["alpha2"],
                                  params["p"], mechanism="rotation")
@@ -54,11 +56,9 @@ def construct_case(case):
     :func:`solver.batch.read_case`). Raises the AccelabError family."""
     from ..batch import read_case
     from ..errors import InvalidInput
-    if isinstance(case, dict) and case.get("mechanism") not in (None,) + DRAWABLE \
-            and case.get("mechanism") in ("fivebar", "loops"):
-        raise InvalidInput(f"there is no graphical construction for {case['mechanism']!r}; "
-                           f"draw one of {', '.join(DRAWABLE)} (use 'accelab solve' for it)",
-                           "mechanism")
+    if isinstance(case, dict) and case.get("mechanism") == "loops":
+        raise InvalidInput("there is no graphical construction for 'loops'; draw one of "
+                           f"{', '.join(DRAWABLE)} (use 'accelab solve' for it)", "mechanism")
     ci = read_case(case)
     params = dict(ci.params)
     if ci.mechanism == "fourbar" and "p" in params:

@@ -212,7 +212,7 @@ def _mathtext(text):
 
 # ---------------------------------------------------------------- linkage
 def _pretty(name):
-    return {"O2": r"$O_2$", "O4": r"$O_4$"}.get(name, f"${name}$")
+    return {"O2": r"$O_2$", "O4": r"$O_4$", "O5": r"$O_5$"}.get(name, f"${name}$")
 
 
 def _ground(ax, z, size):

@@ -19,12 +19,17 @@ INVERTED_SLIDER_CRANK = {"mechanism": "invertedslidercrank", "a": "40 mm", "c": 
                          "d": "100 mm", "gamma": "70 deg", "theta2": "60 deg",
                          "omega2": "30 rad/s", "alpha2": "-200 rad/s^2", "circuit": "open"}
 
+GEARED_FIVEBAR = {"mechanism": "fivebar", "a": "40 mm", "b": "120 mm", "c": "110 mm",
+                  "d": "60 mm", "f": "150 mm", "lam": -2, "phi": "30 deg", "theta2": "45 deg",
+                  "omega2": "10 rad/s", "alpha2": "50 rad/s^2", "circuit": "open"}
+
 #: the slotted link of Figure 7-7 (SI: rad, rad/s, rad/s^2, m, m/s, m/s^2)
 SLOTTED = {"theta2": 0.6981317007977318, "omega2": 10.0, "alpha2": -50.0, "p": 0.08,
            "p_dot": 0.5, "p_ddot": 3.0}
 
 GALLERY = {"graphical-fourbar": EXAMPLE_7_1, "graphical-slidercrank": SLIDER_CRANK,
-           "graphical-invertedslidercrank": INVERTED_SLIDER_CRANK, "graphical-slotted": SLOTTED}
+           "graphical-invertedslidercrank": INVERTED_SLIDER_CRANK,
+           "graphical-fivebar": GEARED_FIVEBAR, "graphical-slotted": SLOTTED}
 
 
 def construction(name):
