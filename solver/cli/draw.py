@@ -40,6 +40,8 @@ def register(sub):
                    help="comma-separated figure formats (default: png,svg)")
     p.add_argument("--step", type=int, default=None,
                    help="draw only the first STEP steps of each construction")
+    p.add_argument("--jobs", type=int, default=0,
+                   help="worker processes for large batches (default: one per CPU; 1: none)")
     p.set_defaults(func=run)
 
 
@@ -89,8 +91,29 @@ def run(args):
         return 2
     import matplotlib
     matplotlib.use("Agg")
-    results = [draw_case(c, args.out, f"case{i:03d}", formats, args.step)
-               for i, c in enumerate(cases, 1)]
+    matplotlib.rcParams["svg.hashsalt"] = "accelab"
+    jobs = args.jobs if args.jobs > 0 else (os.cpu_count() or 1)
+    work = [(c, args.out, f"case{i:03d}", formats, args.step) for i, c in enumerate(cases, 1)]
+    if jobs > 1 and len(cases) >= 4:
+        results = _parallel(work, jobs)
+    else:
+        results = [draw_case(*w) for w in work]
     json.dump(results, sys.stdout)
     sys.stdout.write("\n")
     return 0 if all(r.get("ok") for r in results) else 1
+
+
+def _draw_one(work):
+    return draw_case(*work)
+
+
+def _parallel(work, jobs):
+    """Draw cases in worker processes (figures are independent); results in order."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    try:
+        ctx = multiprocessing.get_context("fork")
+    except ValueError:  # no fork on this platform
+        return [draw_case(*w) for w in work]
+    with ProcessPoolExecutor(max_workers=min(jobs, len(work)), mp_context=ctx) as pool:
+        return list(pool.map(_draw_one, work, chunksize=max(1, len(work) // (4 * jobs))))

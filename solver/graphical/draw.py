@@ -411,10 +411,11 @@ def save(con, outdir, stem, formats=("png", "svg"), step=None):
     paths = []
     for kind, maker in (("linkage", draw_linkage), ("polygons", draw_polygons)):
         fig = maker(con, step=step)
+        # the tight frame, measured once for every format (saves a layout pass each)
+        bbox = fig.get_tightbbox(fig.canvas.get_renderer()).padded(0.15)
         for ext in formats:
             path = os.path.join(outdir, f"{stem}-{kind}.{ext}")
-            fig.savefig(path, dpi=style.DPI, bbox_inches="tight", pad_inches=0.15,
-                        metadata=_metadata(ext))
+            fig.savefig(path, dpi=style.DPI, bbox_inches=bbox, metadata=_metadata(ext))
             paths.append(path)
         plt.close(fig)
     return paths
