@@ -75,7 +75,8 @@ def test_draw_all_ok_exits_0_and_step_option(tmp_path, capsys):
         "case001-slidercrank-linkage.png", "case001-slidercrank-polygons.png"]
     assert results[1]["A_C"] == pytest.approx(solve_case(fivebar)["A_C"], rel=1e-9)
     status, results = run_draw(tmp_path, capsys, [CASES[2]], "--format", "png", "--step", "99")
-    assert status == 1 and results[0]["error"] == "invalid_input" and "--step" in results[0]["message"]
+    assert status == 1 and results[0]["error"] == "invalid_input"
+    assert "--step" in results[0]["message"]
 
 
 def test_draw_unusable_file(tmp_path, capsys):

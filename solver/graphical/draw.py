@@ -196,7 +196,8 @@ def _caption(fig, con, step):
     fig.text(0.5, 0.0, text, ha="center", va="top", fontsize=style.FONT_SIZE)
 
 
-_SYMBOL = re.compile(r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?|\b(omega|alpha|theta|delta|gamma)(\d?)\b")
+_SYMBOL = re.compile(r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?"
+                     r"|\b(omega|alpha|theta|delta|gamma)(\d?)\b")
 
 
 def _mathtext(text):

@@ -56,7 +56,8 @@ def intersect_lines(p1, u1, p2, u2, what="the construction lines"):
     den = cross(u1, u2)
     sin_angle = abs(den) / (abs(u1) * abs(u2))
     if not sin_angle >= PARALLEL_TOLERANCE:
-        raise Singular(f"{what} are parallel (angle between them {math.degrees(math.asin(min(1.0, sin_angle))):.2g} deg): "
+        angle = math.degrees(math.asin(min(1.0, sin_angle)))
+        raise Singular(f"{what} are parallel (angle between them {angle:.2g} deg): "
                        "the polygon cannot be closed at this position (a toggle or limit "
                        "position); move the input angle away from it", condition=sin_angle)
     w = p2 - p1

@@ -85,7 +85,8 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
     links = [("O2", "A"), ("O4", "B")]
     m = 0.3 * max(abs(b), a)  # how far link 4's slide reaches past A and B
     con = Construction("invertedslidercrank",
-                       Linkage(pts, links, ["O2", "O4"], rods=[(B, e3, min(0.0, b) - m, max(0.0, b) + m)], blocks=[("A", e3)]),
+                       Linkage(pts, links, ["O2", "O4"], blocks=[("A", e3)],
+                               rods=[(B, e3, min(0.0, b) - m, max(0.0, b) + m)]),
                        [], {}, circuit, title=f"Inverted slider-crank ({circuit} circuit)")
     v = con.values
     R_AO4 = A - O4
