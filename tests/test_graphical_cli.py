@@ -79,6 +79,17 @@ def test_draw_all_ok_exits_0_and_step_option(tmp_path, capsys):
     assert "--step" in results[0]["message"]
 
 
+def test_draw_cases_option_and_stdout_layout(tmp_path, capsys, monkeypatch):
+    f = tmp_path / "c.json"
+    f.write_text(json.dumps([CASES[2], CASES[1]]))
+    assert main(["draw", "--cases", str(f), "--out", str(tmp_path), "--format", "png"]) == 1
+    out = capsys.readouterr().out
+    lines = out.splitlines()
+    assert lines[0] == "[" and lines[-1] == "]" and len(lines) == 4  # one case per line
+    assert [r["ok"] for r in json.loads(out)] == [True, False]
+    assert main(["draw", "--out", str(tmp_path)]) == 2
+
+
 def test_draw_unusable_file(tmp_path, capsys):
     assert main(["draw", str(tmp_path / "missing.json"), "--out", str(tmp_path)]) == 2
     bad = tmp_path / "bad.json"

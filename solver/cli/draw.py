@@ -32,8 +32,10 @@ def register(sub):
                                    "case (Chapter 7, section 7.2), draw them, and print the "
                                    "values read off the construction.",
                        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("cases", metavar="FILE", help="JSON list of cases in the batch format "
-                                                 "('-' for stdin)")
+    p.add_argument("cases", metavar="FILE", nargs="?",
+                   help="JSON list of cases in the batch format ('-' for stdin)")
+    p.add_argument("--cases", dest="cases_option", metavar="FILE",
+                   help="the same, as in 'accelab solve --cases'")
     p.add_argument("--out", metavar="DIR", default="drawings",
                    help="directory for the figures (default: drawings)")
     p.add_argument("--format", default="png,svg",
@@ -70,6 +72,10 @@ def draw_case(case, outdir, stem, formats=("png", "svg"), step=None):
 
 
 def run(args):
+    args.cases = args.cases or args.cases_option
+    if not args.cases:
+        print("accelab draw: give a batch FILE (see accelab draw --help)", file=sys.stderr)
+        return 2
     try:
         text = sys.stdin.read() if args.cases == "-" else open(args.cases).read()
         cases = json.loads(text)
@@ -98,8 +104,8 @@ def run(args):
         results = _parallel(work, jobs)
     else:
         results = [draw_case(*w) for w in work]
-    json.dump(results, sys.stdout)
-    sys.stdout.write("\n")
+    # a JSON list, one case per line (as readable as JSON lines, and one document)
+    sys.stdout.write("[\n" + ",\n".join(json.dumps(r) for r in results) + "\n]\n")
     return 0 if all(r.get("ok") for r in results) else 1
 
 
