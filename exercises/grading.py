@@ -143,6 +143,10 @@ def _grade(answer, value, expected, tolerance, defined):
         return _grade_angle(name, got, expected, tolerance, raw)
     if _close(got, expected, tolerance):
         return Check(name, True, 1.0, f"{name}: right (within {pct})")
+    if _close(-got, expected, tolerance) and _is_magnitude(answer):
+        return Check(name, False, 0.0, (
+            f"{name}: the size is right, but a magnitude is never negative: give |A|, the "
+            "length of the vector, and leave its direction to the angle."))
     if _close(-got, expected, tolerance):
         return Check(name, False, 0.0, (
             f"{name}: the size is right but the sign is wrong. Check the sense of rotation: "
@@ -158,6 +162,10 @@ def _grade(answer, value, expected, tolerance, defined):
     message += (" Check the given values and units, the circuit (branch), and each "
                 "term of the acceleration (tangential, normal, Coriolis).")
     return Check(name, False, 0.0, message)
+
+
+def _is_magnitude(answer):
+    return answer.name.endswith("_mag") or answer.description.lower().startswith("magnitude")
 
 
 def _close(got, expected, tolerance):

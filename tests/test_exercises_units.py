@@ -186,6 +186,11 @@ def test_sign_error_hint_and_units_hint():
     assert not r.ok and "radians" in r.message
 
 
+def test_negative_magnitude_gets_a_magnitude_hint():
+    r = grade(ACC, Q_(-EXPECTED, "m/s^2"), EXPECTED)
+    assert not r.ok and "never negative" in r.message and "sense of rotation" not in r.message
+
+
 def test_angles_compare_modulo_a_turn():
     assert grade(ANG, 270.0, math.radians(-90.0)).ok
     assert grade(ANG, Q_(-math.pi / 2, "rad"), math.radians(270.0)).ok
