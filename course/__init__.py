@@ -1,0 +1,8 @@
+"""accelab's course: acceleration analysis of planar linkages, one notebook per topic.
+
+The notebooks are kept as jupytext percent-format scripts (``NN_slug.py``) with
+no outputs in git; ``tests/test_course.py`` executes every one of them, and
+``python -m course.build_site`` turns the executed notebooks into the
+self-study site in ``build/site/``. :mod:`course.coursekit` holds the little
+the notebooks share (the ``explore`` control, number formatting, plot style).
+"""
