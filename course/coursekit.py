@@ -90,8 +90,8 @@ def static_values(lo, hi, step, frames=STATIC_FRAMES):
 
 
 def _label(name, value, unit):
-    text = f"{value:g}"
-    return f"{name} = {text} {unit}".strip()
+    unit = unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
+    return f"{name} = {value:g} {unit}".strip()
 
 
 def _render(fig):
@@ -249,20 +249,23 @@ def in_g(a):
 
 
 # ---------------------------------------------------------------- drawing
-def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, **text):
-    """Draw ``vec`` (complex, already in drawing units after ``scale``) as an
-    arrow from ``start`` in the colour and line style of its kind."""
+def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, offset=11, **text):
+    """Draw ``vec`` (complex) as an arrow from ``start`` (complex, drawing units)
+    in the colour and line style of its kind; the arrow is ``scale * vec`` long.
+    ``label`` goes beside the arrow, ``offset`` points to its left (negative:
+    to its right). Returns the tip."""
     spec = _style.COMPONENT[kind]
     tip = start + scale * vec
     ax.annotate("", xy=(tip.real, tip.imag), xytext=(start.real, start.imag),
+                annotation_clip=False, zorder=spec.get("zorder", 4),
                 arrowprops=dict(arrowstyle="-|>,head_length=0.7,head_width=0.3",
                                 color=spec["color"], lw=spec["linewidth"],
                                 linestyle=spec["linestyle"], shrinkA=0, shrinkB=0))
-    if label:
-        mid = start + 0.6 * scale * vec
-        off = 1j * scale * vec / max(abs(scale * vec), 1e-300)
-        pad = text.pop("pad", 0.08 * max(abs(scale * vec), 1e-300))
-        pos = mid + pad * off
-        ax.text(pos.real, pos.imag, label, color=spec["color"], ha="center", va="center",
-                fontsize=text.pop("fontsize", 12), **text)
+    if label and vec != 0:
+        mid = start + 0.55 * scale * vec
+        u = 1j * vec / abs(vec)
+        ax.annotate(label, (mid.real, mid.imag), xytext=(offset * u.real, offset * u.imag),
+                    textcoords="offset points", color=spec["color"], ha="center",
+                    va="center", fontsize=text.pop("fontsize", 12), annotation_clip=False,
+                    **text)
     return tip

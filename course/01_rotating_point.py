@@ -1,0 +1,463 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 1. The acceleration of a rotating point
+#
+# Every linkage analysis in this course starts from one small fact: how a point on a link
+# that turns about a fixed pivot accelerates. This notebook builds that fact, then uses it to
+# separate the two situations in which we subtract one acceleration from another.
+#
+# **You will be able to**
+#
+# - write the acceleration of a point on a rotating link as a tangential plus a normal
+#   component, in polar (complex exponential) and in cartesian form;
+# - say which way each component points from the signs of $\omega$ and $\alpha$, without a
+#   formula sheet;
+# - tell an *acceleration difference* (two points of one rigid body) from a *relative
+#   acceleration* (two points of different bodies), and know what each lets you assume;
+# - work problem 7-1 by hand, in inches and in metres, and check it with `solver`.
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import COLORS, cartesian, explore, in_g, polar, use_style, vector
+from solver import Q_, RotatingPoint
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# Acceleration is the rate of change of velocity, angular or linear:
+#
+# $$ \alpha = \frac{d\omega}{dt}, \qquad \mathbf{A} = \frac{d\mathbf{V}}{dt} \tag{7.1} $$
+#
+# Put a point $P$ at the fixed distance $p$ from a pivot at the origin, on a link at angle
+# $\theta$. In complex notation its position is $\mathbf{R}_P = p e^{j\theta}$ and its velocity
+# $\mathbf{V}_P = p\,\omega\, j e^{j\theta}$: the factor $j$ turns the velocity $90^\circ$ ahead of
+# the radius. Differentiate once more. Both $\omega$ and $\theta$ change with time, so the
+# product rule gives two terms:
+#
+# $$ \mathbf{A}_P = p\,\alpha\, j e^{j\theta} - p\,\omega^2 e^{j\theta}
+#    = \mathbf{A}^t_P + \mathbf{A}^n_P \tag{7.2} $$
+#
+# * The **tangential** component $p\alpha\,je^{j\theta}$ is perpendicular to the radius. The $j$
+#   turns it $90^\circ$ counter-clockwise from $\mathbf{R}_P$ when $\alpha > 0$; a negative
+#   $\alpha$ turns it the other way. It follows the sign of $\alpha$ only.
+# * The **normal** (centripetal) component $-p\omega^2 e^{j\theta}$ came from $j \cdot j = -1$:
+#   it points from $P$ straight back at the pivot, *whatever the sign of $\omega$*, because
+#   $\omega$ appears squared.
+#
+# With Euler's identity $e^{j\theta} = \cos\theta + j\sin\theta$ the same vector in cartesian
+# form (real part $x$, imaginary part $y$) is
+#
+# $$ \mathbf{A}_P = p\alpha\,(-\sin\theta + j\cos\theta) - p\omega^2(\cos\theta + j\sin\theta)
+#    \tag{7.3} $$
+#
+# and the sizes of the two parts, which is all a graphical construction needs, are
+#
+# $$ A^t = p\,\alpha, \qquad A^n = p\,\omega^2 \tag{7.6} $$
+#
+# Let us check eq. 7.3 against the solver for a point 4 in from its pivot at
+# $\theta = 30^\circ$, turning clockwise ($\omega = -20$ rad/s) while speeding up
+# counter-clockwise ($\alpha = 150$ rad/s$^2$). Writing the formula out here is for learning
+# only: the assertion makes sure it says what `solver` computes.
+
+# %%
+p, theta, omega, alpha = 4.0 * 0.0254, np.radians(30), -20.0, 150.0   # SI: m, rad, rad/s, rad/s^2
+by_hand = (p * alpha * (-np.sin(theta) + 1j * np.cos(theta))
+           - p * omega**2 * (np.cos(theta) + 1j * np.sin(theta)))          # eq. 7.3
+
+point = RotatingPoint(p="4 in")
+r = point.solve(theta2="30 deg", omega2="-20 rad/s", alpha2="150 rad/s^2")
+assert np.isclose(by_hand, r.A.to("m/s^2").magnitude, rtol=1e-12)
+
+print("A_t =", cartesian(r.A_t, "in/s^2"), "=", polar(r.A_t, "in/s^2"))
+print("A_n =", cartesian(r.A_n, "in/s^2"), "=", polar(r.A_n, "in/s^2"))
+print("A   =", cartesian(r.A, "in/s^2"), "=", polar(r.A, "in/s^2"))
+
+# %% [markdown]
+# The normal part points at $-150^\circ$ (that is, $210^\circ$), exactly opposite the radius at $30^\circ$; the
+# tangential part at $120^\circ$, a quarter turn counter-clockwise from the radius because
+# $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
+# vectors drawn at the point they belong to:
+
+# %%
+def draw_link(ax, r, scale, title=None, legend=True):
+    """The link O-P and the acceleration components of P, arrows scaled by `scale`."""
+    R = complex(r.R.to("in").magnitude)
+    ax.plot([0, R.real], [0, R.imag], color="#4d4d4d", lw=4, solid_capstyle="round", zorder=2)
+    ax.scatter([0, R.real], [0, R.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
+    ax.annotate("O", (0, 0), xytext=(-14, -12), textcoords="offset points")
+    ax.annotate("P", (R.real, R.imag), xytext=(6, 6), textcoords="offset points")
+    for name, kind, label in (("A_t", "tangential", r"$\mathbf{A}^t$"),
+                              ("A_n", "normal", r"$\mathbf{A}^n$"),
+                              ("A", "resultant", r"$\mathbf{A}$")):
+        vector(ax, R, complex(getattr(r, name).to("in/s^2").magnitude), kind, label, scale)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [in]")
+    ax.set_ylabel("y [in]")
+    if title:
+        ax.set_title(title)
+    if legend:
+        handles = [plt.Line2D([], [], color=COLORS[k], lw=2, label=k)
+                   for k in ("tangential", "normal", "resultant")]
+        ax.legend(handles=handles, loc="lower right", fontsize=9)
+
+
+fig, ax = plt.subplots(figsize=(5.5, 4.5))
+draw_link(ax, r, scale=4.0 / 2000, title="4 in link, $\\omega$ = -20 rad/s, $\\alpha$ = 150 rad/s$^2$")
+ax.set_xlim(-1.5, 6)
+ax.set_ylim(-1.5, 4.5)
+ax.text(-1.3, 4.1, "arrows: 1 in = 500 in/s$^2$", fontsize=9, color="#555555")
+plt.show()
+
+# %% [markdown]
+# ### Two cases of one equation
+#
+# Once the pivot itself moves, the acceleration of $P$ is the pivot's acceleration plus
+# that of $P$ as seen from the pivot:
+#
+# $$ \mathbf{A}_P = \mathbf{A}_A + \mathbf{A}_{PA} \tag{7.4} $$
+#
+# Read backwards, the same equation defines the difference of two accelerations:
+#
+# $$ \mathbf{A}_{PA} = \mathbf{A}_P - \mathbf{A}_A \tag{7.5} $$
+#
+# The algebra is identical; what we may *assume* about $\mathbf{A}_{PA}$ is not.
+#
+# | | Case 1: acceleration difference | Case 2: relative acceleration |
+# |---|---|---|
+# | the points | two points of **one** rigid body | points of **two** bodies |
+# | $\mathbf{A}_{PA}$ | $p\alpha\,je^{j\theta} - p\omega^2e^{j\theta}$ with the body's own $\omega$, $\alpha$ | whatever $\mathbf{A}_P - \mathbf{A}_A$ comes to |
+# | its normal part | along the line $PA$, toward $A$, of size $p\,\omega^2$ | no such rule |
+# | its tangential part | perpendicular to $PA$, of size $p\,\alpha$ | no such rule |
+#
+# Case 1 is what makes graphical and analytic linkage analysis possible: for two pins of one
+# link we know the *directions* of both parts of $\mathbf{A}_{PA}$ before we know their sizes.
+
+# %% [markdown]
+# ## Worked example 1: problem 7-1
+#
+# *A point 6.5 in from the centre of a body in pure rotation passes position $A$, at
+# $45^\circ$ from the $x$ axis, with $\omega = 100$ rad/s; the body has a constant
+# $\alpha = -500$ rad/s$^2$. It reaches position $B$ 0.01 s later. Find $\theta$ and $\omega$
+# at $B$; write the acceleration at $A$ and at $B$ in polar and cartesian form; write and
+# evaluate the acceleration difference between $B$ and $A$.*
+#
+# **Step 1: where is B?** With $\alpha$ constant, $\omega_B = \omega_A + \alpha t$ and
+# $\theta_B = \theta_A + \omega_A t + \tfrac12 \alpha t^2$ (angles in radians!).
+
+# %%
+t = Q_(0.01, "s")
+theta_A, omega_A, alpha_7_1 = Q_(45, "deg"), Q_(100, "rad/s"), Q_(-500, "rad/s^2")
+omega_B = omega_A + alpha_7_1 * t
+theta_B = (theta_A + omega_A * t + 0.5 * alpha_7_1 * t**2).to("deg")
+print(f"omega_B = {omega_B:.4g~P},  theta_B = {theta_B:.5g~P}")
+
+# %% [markdown]
+# The point turned $0.975$ rad ($55.86^\circ$) in those 10 ms and slowed by 5 rad/s.
+#
+# **Step 2: the acceleration at A and at B.** In polar form eq. 7.2 is already written:
+# $\mathbf{A} = p\alpha\,je^{j\theta} - p\omega^2e^{j\theta}$ with the numbers put in.
+# At $A$: $p\alpha = 6.5 \times (-500) = -3250$ in/s$^2$ and $p\omega^2 = 6.5\times 100^2 =
+# 65\,000$ in/s$^2$, so
+#
+# $$ \mathbf{A}_A = -3250\,j e^{j45^\circ} - 65\,000\, e^{j45^\circ}\ \text{in/s}^2 $$
+#
+# The solver gives both points and the cartesian form:
+
+# %%
+pt = RotatingPoint(p="6.5 in")
+at_A = pt.solve(theta2=theta_A, omega2=omega_A, alpha2=alpha_7_1)
+at_B = pt.solve(theta2=theta_B, omega2=omega_B, alpha2=alpha_7_1)
+
+for name, res in (("A", at_A), ("B", at_B)):
+    print(f"position {name}:")
+    print(f"   A_t = {polar(res.A_t, 'in/s^2')}   (|p alpha|)")
+    print(f"   A_n = {polar(res.A_n, 'in/s^2')}   (p omega^2, toward the centre)")
+    print(f"   A   = {cartesian(res.A, 'in/s^2')} = {polar(res.A, 'in/s^2')}")
+    print(f"       = {cartesian(res.A, 'm/s^2')} = {polar(res.A, 'm/s^2')}"
+          f"  ({in_g(res.A):.0f} g)")
+
+# %% [markdown]
+# Each tangential part points $90^\circ$ *clockwise* from its radius ($45^\circ - 90^\circ =
+# -45^\circ$ at $A$) because $\alpha < 0$, while the point itself still turns
+# counter-clockwise: the body is slowing down. The normal parts, $65\,000$ and
+# $58\,660$ in/s$^2$, dwarf the tangential ones; in SI that is about $1650$ m/s$^2$, some
+# 170 g.
+#
+# **Step 3: the difference.** Eq. 7.5 with $B$ and $A$:
+# $\mathbf{A}_{BA} = \mathbf{A}_B - \mathbf{A}_A$.
+
+# %%
+A_BA = at_B.A - at_A.A
+print("A_BA =", cartesian(A_BA, "in/s^2"), "=", polar(A_BA, "in/s^2"))
+print("     =", cartesian(A_BA, "m/s^2"), "=", polar(A_BA, "m/s^2"))
+# the same difference, component by component (eq. 7.4 with both sides split)
+parts = (at_B.A_t - at_A.A_t) + (at_B.A_n - at_A.A_n)
+assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
+
+# %% [markdown]
+# Drawn to scale, as the problem asks: the two positions on their circle with their
+# accelerations, and the vector triangle $\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$.
+
+# %%
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2))
+ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
+ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
+scale = 6.5 / 80_000            # in of drawing per in/s^2
+for res, label in ((at_A, "A"), (at_B, "B")):
+    z = complex(res.R.to("in").magnitude)
+    ax1.plot([0, z.real], [0, z.imag], color="#4d4d4d", lw=3, solid_capstyle="round")
+    ax1.scatter([z.real], [z.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
+    ax1.annotate(label, (z.real, z.imag), xytext=(10, 4), textcoords="offset points",
+                 fontsize=13, fontweight="bold")
+    vector(ax1, z, complex(res.A_t.to("in/s^2").magnitude), "tangential", None, scale)
+    vector(ax1, z, complex(res.A.to("in/s^2").magnitude), "resultant",
+           rf"$\mathbf{{A}}_{label}$", scale, offset=-14)
+arc = 6.5 * np.exp(1j * np.linspace(np.radians(45), theta_B.to("rad").magnitude, 40))
+ax1.plot(1.12 * arc.real, 1.12 * arc.imag, color="#888888", lw=1)
+ax1.annotate("0.01 s", (1.15 * arc[20].real, 1.15 * arc[20].imag), fontsize=10,
+             color="#555555", ha="left")
+ax1.scatter([0], [0], s=40, facecolor="white", edgecolor="k", zorder=5)
+ax1.annotate("O", (0, 0), xytext=(-14, -12), textcoords="offset points")
+handles = [plt.Line2D([], [], color=COLORS[k], lw=2, ls=ls, label=t)
+           for k, ls, t in (("tangential", "--", "tangential (small)"),
+                            ("resultant", "-", "total acceleration"))]
+ax1.legend(handles=handles, loc="lower left", fontsize=9)
+ax1.set_aspect("equal")
+ax1.set_xlabel("x [in]")
+ax1.set_ylabel("y [in]")
+ax1.set_title("Problem 7-1: arrows 1 in = 12 300 in/s$^2$")
+ax1.set_xlim(-8, 8)
+ax1.set_ylim(-4, 8.5)
+
+zA = complex(at_A.A.to("in/s^2").magnitude) / 1000
+zB = complex(at_B.A.to("in/s^2").magnitude) / 1000
+vector(ax2, 0j, zA, "resultant", r"$\mathbf{A}_A$")
+vector(ax2, 0j, zB, "known", r"$\mathbf{A}_B$", offset=-14)
+vector(ax2, zA, zB - zA, "tangential", r"$\mathbf{A}_{BA}$", offset=-14)
+ax2.scatter([0], [0], color="k", s=15)
+ax2.set_aspect("equal")
+ax2.set_xlabel("$A_x$ [1000 in/s$^2$]")
+ax2.set_ylabel("$A_y$ [1000 in/s$^2$]")
+ax2.set_title(r"$\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$ (eq. 7.4)")
+ax2.set_xlim(-50, 25)
+ax2.set_ylim(-62, 8)
+plt.show()
+
+# %% [markdown]
+# A caution on what we just computed. $A$ and $B$ here are *one particle at two instants*,
+# so $\mathbf{A}_{BA}$ is the change of its acceleration over 10 ms, not the acceleration
+# difference of two pins of a body at one instant. The subtraction is the same; the meaning
+# is not, and none of the Case 1 rules (normal part along $BA$ of size $|BA|\,\omega^2$) apply
+# to it. The next example compares the two real cases.
+
+# %% [markdown]
+# ## Worked example 2: acceleration difference or relative acceleration?
+#
+# **Case 1.** A carriage slides along $x$ with $\mathbf{A}_A = 12$ m/s$^2$ (no rotation: its
+# acceleration has no normal part). A link $AP$, 0.3 m long, is pinned to it at $A$ and turns
+# at $\theta = 60^\circ$ with $\omega = 8$ rad/s, $\alpha = -40$ rad/s$^2$. Seen from $A$, $P$ is
+# a rotating point, so `RotatingPoint` gives $\mathbf{A}_{PA}$, and eq. 7.4 adds the carriage.
+#
+# **Case 2.** Two cars. Car $P$ takes a bend of radius 50 m (centre at the origin) at
+# 15 m/s while speeding up at 2 m/s$^2$; car $A$, 20 m away, drives straight along $+x$
+# and brakes at 6 m/s$^2$. Each car's own acceleration is known; their relative
+# acceleration is eq. 7.5. A car on a circular path is a rotating point with
+# $\omega = v/R$ and $\alpha = \dot v/R$.
+
+# %%
+# Case 1: one body
+A_A1 = Q_(12 + 0j, "m/s^2")
+link = RotatingPoint(p="0.3 m").solve(theta2="60 deg", omega2="8 rad/s", alpha2="-40 rad/s^2")
+A_PA1 = link.A                                   # acceleration difference, about A
+A_P1 = A_A1 + A_PA1                              # eq. 7.4
+R_PA1 = complex(link.R.to("m").magnitude)        # P as seen from A
+
+# Case 2: two bodies
+bend, v, v_dot = Q_(50, "m"), Q_(15, "m/s"), Q_(2, "m/s^2")
+car_P = RotatingPoint(p=bend).solve(theta2="80 deg", omega2=v / bend, alpha2=v_dot / bend)
+A_P2 = car_P.A
+A_A2 = Q_(-6 + 0j, "m/s^2")
+R_P2 = complex(car_P.R.to("m").magnitude)
+R_A2 = R_P2 + 20 * np.exp(1j * np.radians(-110))  # car A is 20 m away
+A_PA2 = A_P2 - A_A2                              # relative acceleration, eq. 7.5
+
+
+def angle_to_line(a_vec, from_p_to_a):
+    """Angle between a vector and the line P->A [deg]."""
+    z = complex(a_vec.to("m/s^2").magnitude)
+    return np.degrees(np.angle(z / from_p_to_a))
+
+
+n1 = link.A_n
+print("Case 1: A_PA   =", polar(A_PA1, "m/s^2"))
+print("        A_PA^n =", polar(n1, "m/s^2"),
+      f" -> {abs(angle_to_line(n1, -R_PA1)):.3f} deg from the line P->A: exactly along it")
+print("        A_P    =", polar(A_P1, "m/s^2"))
+print("Case 2: A_P    =", polar(A_P2, "m/s^2"), "  A_A =", polar(A_A2, "m/s^2"))
+print("        A_PA   =", polar(A_PA2, "m/s^2"),
+      f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special")
+
+# %%
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
+# case 1: carriage, link, vectors at P (drawing scale 0.3 m per 40 m/s^2)
+s1 = 0.3 / 40
+P1 = R_PA1
+ax1.add_patch(plt.Rectangle((-0.25, -0.08), 0.5, 0.08, fc="#dddddd", ec="#4d4d4d"))
+ax1.plot([0, P1.real], [0, P1.imag], color="#4d4d4d", lw=4, solid_capstyle="round")
+ax1.scatter([0, P1.real], [0, P1.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
+ax1.annotate("A", (0, 0), xytext=(-16, 6), textcoords="offset points")
+ax1.annotate("P", (P1.real, P1.imag), xytext=(-16, 4), textcoords="offset points")
+vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
+vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential",
+       r"$\mathbf{A}^t_{PA}$", s1)
+vector(ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1)
+vector(ax1, P1, complex(A_P1.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s1)
+ax1.plot([P1.real, 0], [P1.imag, 0], ls=":", color="#888888")
+ax1.set_aspect("equal")
+ax1.set_xlim(-0.3, 0.45)
+ax1.set_ylim(-0.15, 0.45)
+ax1.set_xlabel("x [m]")
+ax1.set_ylabel("y [m]")
+ax1.set_title("Case 1: one body. $\\mathbf{A}^n_{PA}$ lies along PA")
+# case 2: two cars on the road, vectors at the cars (drawing scale 2.5 m per m/s^2)
+s2 = 2.5
+road = 50 * np.exp(1j * np.radians(np.linspace(55, 105, 60)))
+ax2.plot(road.real, road.imag, color="#bbbbbb", lw=6, solid_capstyle="butt")
+ax2.plot([R_A2.real - 15, R_A2.real + 15], [R_A2.imag] * 2, color="#bbbbbb", lw=6)
+for z, name in ((R_P2, "P"), (R_A2, "A")):
+    ax2.scatter([z.real], [z.imag], marker="s", s=60, color="#4d4d4d", zorder=5)
+    ax2.annotate(f"car {name}", (z.real, z.imag), xytext=(8, -16), textcoords="offset points")
+ax2.plot([R_P2.real, R_A2.real], [R_P2.imag, R_A2.imag], ls=":", color="#888888")
+vector(ax2, R_P2, complex(A_P2.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s2)
+vector(ax2, R_A2, complex(A_A2.magnitude), "known", r"$\mathbf{A}_A$", s2)
+vector(ax2, R_P2, complex(A_PA2.to("m/s^2").magnitude), "tangential",
+       r"$\mathbf{A}_{PA}$", s2)
+ax2.set_aspect("equal")
+ax2.set_xlabel("x [m]")
+ax2.set_ylabel("y [m]")
+ax2.set_xlim(-20, 32)
+ax2.set_ylim(24, 54)
+ax2.set_title("Case 2: two bodies. $\\mathbf{A}_{PA}$ has no such rule")
+plt.show()
+
+# %% [markdown]
+# In Case 1 the normal part of $\mathbf{A}_{PA}$ lies exactly on the line from $P$ to $A$
+# ($0^\circ$) and has the size $|PA|\,\omega^2 = 0.3 \times 8^2 = 19.2$ m/s$^2$: we could
+# have drawn its direction before computing anything. In Case 2 the relative acceleration
+# makes an arbitrary angle with the line joining the cars; there is no link, no shared
+# $\omega$, and no component with a direction known in advance.
+
+# %% [markdown]
+# ## Explore: how $\alpha$ and $\omega$ steer the acceleration
+#
+# The point keeps its radius (6.5 in) and angle ($45^\circ$); move $\alpha$ and $\omega$.
+# Watch the angle $\varphi$ between $\mathbf{A}$ and the inward radius: $\tan\varphi =
+# \alpha/\omega^2$. The tangential part swaps sides when $\alpha$ changes sign; flipping the
+# sign of $\omega$ changes nothing at all.
+
+# %%
+pt_explore = RotatingPoint(p="6.5 in")
+
+
+def draw(alpha2, omega2):
+    res = pt_explore.solve(theta2="45 deg", omega2=Q_(omega2, "rad/s"),
+                           alpha2=Q_(alpha2, "rad/s^2"))
+    fig, ax = plt.subplots(figsize=(4.2, 4.2))
+    ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
+    ax.plot(ring.real, ring.imag, color="#dddddd", lw=1)
+    draw_link(ax, res, scale=6.5 / 12_000, legend=False)
+    phi = np.degrees(np.arctan2(alpha2, omega2**2))
+    ax.set_title(f"$\\omega$ = {omega2:g} rad/s: |A| = {abs(res.A).to('in/s^2').magnitude:,.0f}"
+                 f" in/s$^2$, $\\varphi$ = {phi:.0f}$^\\circ$", fontsize=10)
+    ax.set_xlim(-3, 10.5)
+    ax.set_ylim(-3, 10.5)
+    return fig
+
+
+explore(draw, alpha2=(-1500, 1500, 50, -500, "rad/s^2"), omega2=(-40, 40, 1, 20, "rad/s"))
+
+# %% [markdown]
+# At $\omega = 20$ rad/s the normal part is $6.5 \times 400 = 2600$ in/s$^2$ in every panel;
+# only the tangential part grows, shrinks and swaps sides with $\alpha$. At $\omega = 100$
+# rad/s (problem 7-1) the normal part would be 25 times larger and $\varphi$ only a few
+# degrees: at high speed the acceleration of a point on a crank points almost straight at the
+# pivot.
+
+# %% [markdown]
+# ## Check yourself
+#
+# **1.** A point is 0.2 m from its pivot at $\theta = 90^\circ$ (straight up), with
+# $\omega = 5$ rad/s and $\alpha = 0$. Which way does its acceleration point, and how big is it?
+#
+# <details><summary>Answer</summary>
+#
+# Straight down, toward the pivot: only the normal part exists, $p\omega^2 = 0.2 \times 25 =
+# 5$ m/s$^2$, so $\mathbf{A} = -5j$ m/s$^2$ $= 5\,e^{j270^\circ}$ m/s$^2$.
+#
+# </details>
+#
+# **2.** Same point, now with $\omega = -5$ rad/s and $\alpha = -30$ rad/s$^2$. Give
+# $\mathbf{A}$ in cartesian form.
+#
+# <details><summary>Answer</summary>
+#
+# The normal part is unchanged, $-5j$ m/s$^2$. The tangential part is $p\alpha\,je^{j90^\circ}
+# = 0.2(-30)(j\cdot j) = +6$ m/s$^2$, i.e. along $+x$ (clockwise from straight up). So
+# $\mathbf{A} = 6 - 5j$ m/s$^2$, $7.81$ m/s$^2$ at $-39.8^\circ$.
+#
+# </details>
+#
+# **3.** Two pins $A$ and $B$ of one link are 0.1 m apart and the link has $\omega = 10$ rad/s.
+# What do you know about $\mathbf{A}_{BA}$ before knowing $\alpha$?
+#
+# <details><summary>Answer</summary>
+#
+# Its normal part: 10 m/s$^2$ ($0.1 \times 10^2$), along the line from $B$ toward $A$. And the
+# direction of its tangential part: perpendicular to $AB$. Only the size (and sense) of the
+# tangential part waits for $\alpha$. That is Case 1, and it is exactly what the graphical
+# method of the next notebook uses.
+#
+# </details>
+#
+# **4.** In problem 7-1, why is $|\mathbf{A}_B| < |\mathbf{A}_A|$?
+#
+# <details><summary>Answer</summary>
+#
+# The normal part dominates and grows with $\omega^2$; $\omega$ fell from 100 to 95 rad/s, so
+# $p\omega^2$ fell by about 10 % (from 65 000 to 58 660 in/s$^2$). The tangential part
+# $|p\alpha| = 3250$ in/s$^2$ is the same at both positions.
+#
+# </details>
+
+# %% [markdown]
+# ## Common mistakes
+#
+# - **Degrees in $\omega t$.** $\theta_B = \theta_A + \omega t + \tfrac12\alpha t^2$ holds in
+#   radians; adding $0.975$ to $45$ "degrees" puts $B$ in the wrong place. Let pint carry the
+#   units, as above.
+# - **Letting $\omega$'s sign steer the normal part.** $\omega^2$ is never negative: the normal
+#   part always points at the centre of rotation.
+# - **Letting $\omega$'s sign steer the tangential part.** It follows $\alpha$, and $\alpha$ may
+#   oppose $\omega$ (a slowing body, as in problem 7-1).
+# - **Treating a relative acceleration like an acceleration difference.** The normal part
+#   "along the line joining the points" belongs to two points of *one* rigid body only.
+# - **Mixing in/s$^2$ and ft/s$^2$**, or dividing by $g = 9.81$ with accelerations in in/s$^2$
+#   ($g = 386$ in/s$^2$). Convert with units, not by memory.
+#
+# [Next: 2. Graphical acceleration analysis of a fourbar](02_graphical_fourbar.ipynb)

@@ -1,0 +1,320 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 2. Graphical acceleration analysis of a fourbar
+#
+# Before computers, accelerations were found by drawing: vectors laid tip to tail at a
+# scale, closed by lines whose direction is known but whose length is not. The method is
+# still the quickest independent check on a program, and it shows *why* the analytic
+# equations look the way they do. Here we build Example 7-1 of the chapter one step at a
+# time with `solver.graphical`, which performs the construction as geometry (it never asks
+# the analytic solver for an answer).
+#
+# **You will be able to**
+#
+# - list what must be known before an acceleration polygon can be drawn (positions,
+#   velocities, the input's $\alpha_2$) and count the knowns in eq. 7.4;
+# - draw the acceleration polygon of a fourbar, steps 1 to 8 of Example 7-1, with the
+#   construction lines $pp$ and $qq$;
+# - read $\alpha_3$, $\alpha_4$ and their senses off the polygon, then find the acceleration
+#   of any coupler point;
+# - recognise the positions where the construction breaks down.
+
+# %%
+import math
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import cartesian, explore, polar, use_style, vector
+from solver import Q_, NotAssemblable, Singular
+from solver.graphical import construct, construct_case
+from solver.graphical.draw import draw_linkage, draw_polygon
+from solver.graphical.gallery import EXAMPLE_7_1
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# For any two points $A$ and $B$ of one link (Case 1 of notebook 1), the acceleration
+# difference equation with every term split into its components reads
+#
+# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}, \qquad
+#    \left(\mathbf{A}^t_B + \mathbf{A}^n_B\right) = \left(\mathbf{A}^t_A + \mathbf{A}^n_A\right)
+#    + \left(\mathbf{A}^t_{BA} + \mathbf{A}^n_{BA}\right) \tag{7.4} $$
+#
+# and the size of each component of a point turning at radius $r$ is
+#
+# $$ A^t = r\,\alpha, \qquad A^n = r\,\omega^2 \tag{7.6} $$
+#
+# Six vectors, each with a size and a direction: twelve numbers. A vector equation in the
+# plane gives two scalar equations, so we must know ten of them. For the fourbar with $A$ on
+# the crank and $B$ on the rocker:
+#
+# | term | size | direction |
+# |---|---|---|
+# | $\mathbf{A}^t_A$ | $a\,\alpha_2$, known | perpendicular to $O_2A$, known |
+# | $\mathbf{A}^n_A$ | $a\,\omega_2^2$, known | from $A$ toward $O_2$, known |
+# | $\mathbf{A}^n_B$ | $c\,\omega_4^2$, known once $\omega_4$ is | from $B$ toward $O_4$, known |
+# | $\mathbf{A}^n_{BA}$ | $b\,\omega_3^2$, known once $\omega_3$ is | from $B$ toward $A$, known |
+# | $\mathbf{A}^t_B$ | **unknown** ($c\,\alpha_4$) | perpendicular to $O_4B$: line $pp$ |
+# | $\mathbf{A}^t_{BA}$ | **unknown** ($b\,\alpha_3$) | perpendicular to $AB$: line $qq$ |
+#
+# Ten knowns, two unknown sizes: the polygon closes where the lines $pp$ and $qq$ cross.
+# The table also shows what has to come first: the link angles (a position analysis) and
+# $\omega_3$, $\omega_4$ (a velocity analysis). The graphical method is a freeze-frame: one
+# position, one drawing.
+#
+# The linkage of this notebook, used throughout the course as "Example 7-1" (the chapter's
+# example prints no numbers, so the course fixes them):
+
+# %%
+EXAMPLE_7_1
+
+# %% [markdown]
+# ## Worked example: Example 7-1, step by step
+#
+# `construct_case` records the construction as a list of steps; `draw_linkage` and
+# `draw_polygon` draw what the steps up to a given one have added. A small helper puts the
+# linkage and one polygon side by side.
+
+# %%
+con = construct_case(EXAMPLE_7_1)
+for s in con.steps:
+    print(f"{s.label:>3}  {s.phase:<12} {s.text[:88]}")
+
+
+def show(step, diagram=None, figsize=(12, 5.4)):
+    """The linkage (left) and one polygon (right) as they stand after `step`."""
+    if diagram is None:
+        fig, ax = plt.subplots(figsize=(7, 5.4))
+        draw_linkage(con, step=step, ax=ax)
+    else:
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=figsize, width_ratios=[1.15, 1])
+        draw_linkage(con, step=step, ax=ax1)
+        draw_polygon(con, diagram, step=step, ax=ax2)
+    fig.suptitle(f"after step {step}", fontsize=11, color="#555555")
+    plt.show()
+
+
+# %% [markdown]
+# **Position and velocity first (P, V1-V3).** The linkage is drawn to scale: $A$ at $a$ from
+# $O_2$, then arcs of radius $b$ about $A$ and $c$ about $O_4$ meet at $B$ (the open circuit
+# takes the upper intersection). The velocity polygon solves $\mathbf{V}_B = \mathbf{V}_A +
+# \mathbf{V}_{BA}$ the same way: $\mathbf{V}_A$ is fully known, $\mathbf{V}_B$ is perpendicular
+# to $O_4B$ and $\mathbf{V}_{BA}$ perpendicular to $AB$. Their lengths give $\omega_4 =
+# V_B/c$ and $\omega_3 = V_{BA}/b$.
+
+# %%
+show("V3", "velocity")
+v = con.values
+print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both clockwise)")
+
+# %% [markdown]
+# **Steps 1-2: the input point.** $A$ turns about a fixed pivot, so both parts of its
+# acceleration are known from eq. 7.6 and drawn at $A$: $A^n_A = a\omega_2^2$ toward $O_2$,
+# $A^t_A = a|\alpha_2|$ perpendicular to $O_2A$, clockwise here because $\alpha_2 < 0$.
+
+# %%
+a_in = Q_(2, "in")
+print("A_A^n:", polar(Q_(v["A_A_n"], "m/s^2"), "in/s^2"),
+      f"  (a omega2^2 = {(a_in * Q_(10, 'rad/s')**2).to('in/s^2'):.4g~P})")
+print("A_A^t:", polar(Q_(v["A_A_t"], "m/s^2"), "in/s^2"),
+      f"  (a |alpha2| = {(a_in * Q_(5, 'rad/s^2')).to('in/s^2'):.4g~P})")
+show("2")
+
+# %% [markdown]
+# The tangential part is a twentieth of the normal one ($\alpha_2$ is small next to
+# $\omega_2^2$), so it is hard to see at this scale: a real drawing would magnify it.
+#
+# **Steps 3-5: the directions we know.** $B$ turns about $O_4$, so $\mathbf{A}^t_B$ lies on
+# the line $pp$ through $B$ perpendicular to $O_4B$, and $\mathbf{A}^n_B = c\omega_4^2$ points
+# at $O_4$. Relative to $A$, $B$ turns with link 3: $\mathbf{A}^n_{BA} = b\omega_3^2$ points
+# from $B$ to $A$ and $\mathbf{A}^t_{BA}$ lies on the line $qq$ perpendicular to $AB$.
+
+# %%
+show("5")
+
+# %% [markdown]
+# **Step 6: the polygon.** From the pole $o_A$ lay the fully known vectors tip to tail, in
+# the order the equation adds them: $\mathbf{A}^t_A$, $\mathbf{A}^n_A$ (together
+# $\mathbf{A}_A$), then $\mathbf{A}^n_{BA}$. $\mathbf{A}^n_B$ sits on the *left* of eq. 7.4,
+# so it is subtracted: draw $-\mathbf{A}^n_B$. A line parallel to $qq$ through that tip and a
+# line parallel to $pp$ through the pole cross at one point; it closes the polygon and cuts
+# off $\mathbf{A}^t_{BA}$ and $\mathbf{A}^t_B$.
+
+# %%
+show("6", "acceleration", figsize=(12, 6))
+
+# %% [markdown]
+# **Step 7: read the answer.** Measured along $pp$ and $qq$ and divided by the link lengths
+# (eq. 7.6), the two tangential parts give the angular accelerations. Their *senses* come
+# from the arrows: $\mathbf{A}^t_B$ points the way $B$ is being speeded up about $O_4$.
+
+# %%
+print(f"A_B^t  = {abs(v['A_B_t']):.4f} m/s^2  -> alpha4 = A_B^t / c  = {v['alpha4']:+.4f} rad/s^2")
+print(f"A_BA^t = {abs(v['A_BA_t']):.4f} m/s^2  -> alpha3 = A_BA^t / b = {v['alpha3']:+.4f} rad/s^2")
+print("A_A =", cartesian(Q_(v["A_A"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_A"], "m/s^2"), "in/s^2"))
+print("A_B =", cartesian(Q_(v["A_B"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_B"], "m/s^2"), "in/s^2"))
+c_len = 9 * 0.0254
+assert math.isclose(v["alpha4"], abs(v["A_B_t"]) / c_len, rel_tol=1e-12)  # CCW: positive
+
+# %% [markdown]
+# Both angular accelerations come out counter-clockwise (positive), although $\alpha_2$ is
+# clockwise: the input's acceleration is tiny here, and what accelerates links 3 and 4 is
+# mostly the *changing direction* of the crank pin's velocity ($a\omega_2^2$).
+#
+# **Step 8: any other point.** With $\alpha_3$ and $\omega_3$ known, a coupler point $P$
+# ($p = 3$ in from $A$, $30^\circ$ off the line $AB$) follows from the same equation with $A$ as
+# reference: $\mathbf{A}_P = \mathbf{A}_A + \mathbf{A}^t_{PA} + \mathbf{A}^n_{PA}$, all three
+# fully known now. No construction lines are needed.
+
+# %%
+show("8", "point")
+print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"], "m/s^2"), "in/s^2"))
+
+# %% [markdown]
+# Notebook 3 solves the same linkage from the differentiated vector loop, and the two
+# answers agree to better than one part in $10^9$: the drawing is exact geometry, only a
+# ruler makes it approximate.
+#
+# ### When the construction fails
+#
+# The lines $pp$ and $qq$ must cross. They are perpendicular to $O_4B$ and $AB$, so they are
+# parallel exactly when links 3 and 4 lie on one line: a **toggle** position. A non-Grashof
+# linkage ($a = 5$, $b = 5$, $c = 5$, $d = 7$ in) reaches one where $|O_4A| = b + c$; just
+# beyond it the arcs that locate $B$ no longer meet and the linkage cannot be assembled at
+# all.
+
+# %%
+a, b, c, d = (x * 0.0254 for x in (5, 5, 5, 7))          # SI, as solver.graphical takes them
+toggle = math.acos((a * a + d * d - (b + c) ** 2) / (2 * a * d))
+print(f"toggle at theta2 = {math.degrees(toggle):.4f} deg")
+for t2 in (toggle - 0.05, toggle, toggle + 0.05):
+    try:
+        g = construct("fourbar", a=a, b=b, c=c, d=d, theta2=t2, omega2=10.0, alpha2=0.0)
+        print(f"theta2 = {math.degrees(t2):8.4f} deg: alpha4 = {g.values['alpha4']:.5g} rad/s^2")
+    except (Singular, NotAssemblable) as exc:
+        print(f"theta2 = {math.degrees(t2):8.4f} deg: {type(exc).__name__}: {str(exc)[:110]}...")
+
+# %% [markdown]
+# Near the toggle $\alpha_4$ grows without bound: the two construction lines meet at a
+# shallower and shallower angle, far from the pole. At the toggle itself the solver refuses
+# to return a number rather than return one it cannot vouch for.
+
+# %% [markdown]
+# ## Explore: a new drawing for every position
+#
+# The graphical method's cost is that nothing carries over from one crank angle to the
+# next: each position needs its own polygon. Move $\theta_2$ and watch the acceleration
+# polygon of Example 7-1 change shape and size: blue normal components, red dashed tangential
+# ones, black $\mathbf{A}_A$ and $\mathbf{A}_B$ from the pole (the black dot). Every panel has
+# the same scale (the axes grow with $\omega_2^2$ when you move $\omega_2$).
+
+# %%
+def draw(theta2, omega2):
+    case = dict(EXAMPLE_7_1, theta2=f"{theta2} deg", omega2=f"{omega2} rad/s")
+    case.pop("p"), case.pop("delta3")
+    g = construct_case(case)
+    arrows, _, _ = g.items("acceleration")
+    fig, ax = plt.subplots(figsize=(4.4, 4.4))
+    for arr in arrows:             # the finished polygon, one scale for every theta2
+        label = f"${arr.name}$" if arr.name in (r"\mathbf{A}_{A}", r"\mathbf{A}_{B}") else None
+        vector(ax, arr.start, arr.vector, arr.kind, label, offset=-12)
+    ax.scatter([0], [0], color="k", s=25, zorder=9)
+    reach = 8.5 * (omega2 / 10) ** 2     # the axes grow as omega2^2
+    ax.set_xlim(-reach, reach)
+    ax.set_ylim(-reach, reach)
+    ax.set_aspect("equal")
+    ax.set_xlabel("$A_x$ [m/s$^2$]")
+    ax.set_ylabel("$A_y$ [m/s$^2$]")
+    ax.set_title(f"$\\alpha_3$ = {g.values['alpha3']:.3g}, $\\alpha_4$ = "
+                 f"{g.values['alpha4']:.3g} rad/s$^2$", fontsize=10)
+    return fig
+
+
+explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(1, 20, 1, 10, "rad/s"))
+
+# %% [markdown]
+# The polygon turns with the crank and stretches and shrinks: at some angles
+# $\mathbf{A}^t_B$ is the longest vector, at others almost nothing. Doubling $\omega_2$ (with
+# $\alpha_2$ small) makes every vector four times longer and leaves the shape alone, since
+# every term but $\mathbf{A}^t_A$ scales with $\omega_2^2$: with the axes following
+# $\omega_2^2$, the picture hardly changes.
+
+# %% [markdown]
+# ## Check yourself
+#
+# **1.** Why must the velocity polygon be drawn before the acceleration polygon?
+#
+# <details><summary>Answer</summary>
+#
+# The normal components $b\omega_3^2$ and $c\omega_4^2$ need $\omega_3$ and $\omega_4$. Without
+# them there are four unknown sizes in eq. 7.4 and only two equations.
+#
+# </details>
+#
+# **2.** In step 6, what goes wrong if you draw $+\mathbf{A}^n_B$ instead of
+# $-\mathbf{A}^n_B$?
+#
+# <details><summary>Answer</summary>
+#
+# The polygon closes at the wrong point: you have solved $\mathbf{A}^t_B - \mathbf{A}^n_B =
+# \mathbf{A}_A + \mathbf{A}_{BA}$, not eq. 7.4. Both $\alpha_3$ and $\alpha_4$ come out wrong,
+# usually without any visible sign that something is off. Terms on the left side of the
+# equation are subtracted when the polygon is laid from the right side.
+#
+# </details>
+#
+# **3.** $\mathbf{A}^t_{BA}$ in the polygon points, roughly, from right to left, and $B$ is above
+# $A$. Is $\alpha_3$ clockwise or counter-clockwise?
+#
+# <details><summary>Answer</summary>
+#
+# Counter-clockwise. $\mathbf{A}^t_{BA} = b\alpha_3\,je^{j\theta_3}$: with $\theta_3$ near
+# $90^\circ$ (B above A), $je^{j\theta_3}$ points to the left, so a leftward
+# $\mathbf{A}^t_{BA}$ means $\alpha_3 > 0$. The printed $\alpha_3 = +8.77$ rad/s$^2$ agrees.
+#
+# </details>
+#
+# **4.** To find the acceleration of a point on the rocker (link 4), which reference point
+# would you use and what do you need?
+#
+# <details><summary>Answer</summary>
+#
+# $O_4$, the rocker's fixed pivot: $\mathbf{A}_U = u\alpha_4\,je^{j(\theta_4+\delta_4)} -
+# u\omega_4^2 e^{j(\theta_4+\delta_4)}$, since $\mathbf{A}_{O_4} = 0$. You need $\omega_4$ and
+# $\alpha_4$, i.e. the finished polygon.
+#
+# </details>
+
+# %% [markdown]
+# ## Common mistakes
+#
+# - **Skipping the velocity analysis.** No $\omega_3$, $\omega_4$, no normal components, no
+#   polygon.
+# - **Normal components pointing outward.** A normal component always points from the moving
+#   point toward its centre of rotation relative to the reference: $\mathbf{A}^n_{BA}$ from $B$
+#   toward $A$, not from $A$ toward $B$.
+# - **Adding a term from the left side of eq. 7.4.** $\mathbf{A}^n_B$ is subtracted in the
+#   polygon; $\mathbf{A}_B$ is the vector from the pole to the closing point.
+# - **Taking a reference point on another link.** For the coupler point $P$, use $A$ or $B$
+#   (on link 3), never $O_2$: the Case 1 rules hold only within one rigid body.
+# - **Two scales on one drawing.** Lengths and accelerations each need one scale, written on
+#   the drawing, and the polygon must use a single acceleration scale throughout.
+# - **Reading the sense of $\alpha$ from the shape of the polygon.** Read it from the
+#   direction of the tangential vector relative to its radius ($je^{j\theta}$).
+#
+# [Next: 3. The analytic fourbar](03_analytic_fourbar.ipynb)

@@ -1,0 +1,363 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 3. The analytic fourbar
+#
+# A drawing gives one position. To design a linkage we need the accelerations at every crank
+# angle, and that calls for the analytic solution: differentiate the vector loop twice and
+# solve for the two unknown angular accelerations. This notebook derives it, checks it
+# against the graphical answer of notebook 2, then runs a whole cycle on both circuits.
+#
+# **You will be able to**
+#
+# - differentiate the fourbar's vector loop into the acceleration equation and recognise in
+#   it the acceleration difference equation 7.4;
+# - solve it for $\alpha_3$ and $\alpha_4$ and compute $\mathbf{A}_A$, $\mathbf{A}_{BA}$,
+#   $\mathbf{A}_B$, in US and SI units;
+# - plot $\alpha_3$, $\alpha_4$ and $|\mathbf{A}_B|$ over a cycle and say what changes between
+#   the open and crossed circuits;
+# - recognise toggle and non-assemblable positions and read the solver's `valid` mask.
+
+# %%
+import math
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import CIRCUIT_COLORS, cartesian, explore, polar, use_style
+from solver import FourBar, NotAssemblable, Q_, Singular
+from solver.graphical import construct_case
+from solver.graphical.draw import draw_linkage
+from solver.graphical.gallery import EXAMPLE_7_1
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# The fourbar closes a vector loop (links $a$, $b$, $c$, ground $d$ at $\theta_1 = 0$):
+#
+# $$ a e^{j\theta_2} + b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_1} = 0 \tag{4.5} $$
+#
+# Differentiating once gives the velocity equation (each $e^{j\theta}$ brings down
+# $j\omega$):
+#
+# $$ ja\omega_2 e^{j\theta_2} + jb\omega_3 e^{j\theta_3} - jc\omega_4 e^{j\theta_4} = 0
+#    \tag{6.14} $$
+#
+# Differentiating again, every term has two functions of time, $\omega$ and $\theta$, and so
+# yields two terms:
+#
+# $$ \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
+#  + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right)
+#  - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right) = 0 \tag{7.7} $$
+#
+# Each bracket is a rotating point's acceleration (eq. 7.2): the first is $\mathbf{A}_A$, the
+# second $\mathbf{A}_{BA}$ (B about A on the coupler), the third $\mathbf{A}_B$ (B about $O_4$).
+# Eq. 7.7 is the acceleration difference equation in disguise:
+#
+# $$ \mathbf{A}_A + \mathbf{A}_{BA} - \mathbf{A}_B = 0 \tag{7.8} $$
+#
+# Its real and imaginary parts are two linear equations in the two unknowns $\alpha_3$,
+# $\alpha_4$. Solving them (Cramer's rule) gives
+#
+# $$ \alpha_3 = \frac{CD - AF}{AE - BD}, \qquad \alpha_4 = \frac{CE - BF}{AE - BD} \tag{7.12} $$
+#
+# with $A = c\sin\theta_4$, $B = b\sin\theta_3$, $D = c\cos\theta_4$, $E = b\cos\theta_3$,
+# $C = a\alpha_2\sin\theta_2 + a\omega_2^2\cos\theta_2 + b\omega_3^2\cos\theta_3 -
+# c\omega_4^2\cos\theta_4$ and $F = a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 -
+# b\omega_3^2\sin\theta_3 + c\omega_4^2\sin\theta_4$.
+#
+# The denominator is $AE - BD = bc\sin(\theta_4 - \theta_3)$: it vanishes when links 3 and 4
+# are in line, the same toggle that made the construction lines parallel in notebook 2. The
+# linear accelerations then follow from eq. 7.8's three brackets (eqs. 7.13).
+#
+# The solver does not use the letters $A$ to $F$ (it projects eq. 7.7 on the directions of
+# links 3 and 4, which is the same algebra). Written out for learning, checked against it:
+
+# %%
+fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
+r = fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
+
+a, b, c = 2.0, 6.0, 9.0                      # in
+t2, w2, al2 = math.radians(30), 10.0, -5.0
+t3, t4 = r.theta3.to("rad").magnitude, r.theta4.to("rad").magnitude
+w3, w4 = r.omega3.to("rad/s").magnitude, r.omega4.to("rad/s").magnitude
+A, B, D, E = c * math.sin(t4), b * math.sin(t3), c * math.cos(t4), b * math.cos(t3)
+C = (a * al2 * math.sin(t2) + a * w2**2 * math.cos(t2) + b * w3**2 * math.cos(t3)
+     - c * w4**2 * math.cos(t4))
+F = (a * al2 * math.cos(t2) - a * w2**2 * math.sin(t2) - b * w3**2 * math.sin(t3)
+     + c * w4**2 * math.sin(t4))
+alpha3 = (C * D - A * F) / (A * E - B * D)      # eq. 7.12
+alpha4 = (C * E - B * F) / (A * E - B * D)
+assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
+assert math.isclose(alpha4, r.alpha4.to("rad/s^2").magnitude, rel_tol=1e-12)
+print(f"alpha3 = {alpha3:.6f} rad/s^2, alpha4 = {alpha4:.6f} rad/s^2 (eq. 7.12 = solver)")
+
+# %% [markdown]
+# ## Worked example 1: Example 7-1 by the equations
+#
+# The same linkage and input as notebook 2: $a = 2$, $b = 6$, $c = 9$, $d = 7$ in,
+# $\theta_2 = 30^\circ$, $\omega_2 = 10$ rad/s, $\alpha_2 = -5$ rad/s$^2$, open circuit. The
+# solver returns Quantities; the vectors are complex, as in the chapter's notation.
+
+# %%
+print(f"theta3 = {r.theta3.to('deg'):.4f~P}, theta4 = {r.theta4.to('deg'):.4f~P}")
+print(f"omega3 = {r.omega3:.4f~P}, omega4 = {r.omega4:.4f~P}")
+print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
+for name in ("A_A", "A_BA_t", "A_BA_n", "A_BA", "A_B"):
+    q = getattr(r, name)
+    print(f"{name:7s}= {cartesian(q, 'in/s^2'):>24s} = {polar(q, 'in/s^2'):>26s}"
+          f"  = {polar(q, 'm/s^2')}")
+
+# %% [markdown]
+# Check them against the graphical construction, which never calls the analytic solver:
+
+# %%
+graphical = construct_case(EXAMPLE_7_1).values
+print(f"{'':8s}{'analytic':>16s}{'graphical':>16s}{'relative difference':>22s}")
+for name, unit in (("alpha3", "rad/s^2"), ("alpha4", "rad/s^2"), ("A_A", "m/s^2"),
+                   ("A_B", "m/s^2"), ("A_BA", "m/s^2")):
+    exact = complex(getattr(r, name).to(unit).magnitude)
+    drawn = complex(graphical[name])
+    rel = abs(exact - drawn) / abs(exact)
+    print(f"{name:8s}{abs(exact):16.10f}{abs(drawn):16.10f}{rel:22.1e}")
+    assert rel < 1e-9
+
+# %% [markdown]
+# Exact agreement: both methods solve the same vector equation, one with geometry and one
+# with algebra. On paper the drawing would be good to two or three figures.
+
+# %% [markdown]
+# ## Worked example 2: a whole cycle, open and crossed
+#
+# The solver takes an array of crank angles and returns arrays, one position per element.
+# The same linkage has two assemblies for every crank angle: **open** and **crossed**
+# (coupler and rocker reflected about the line $AO_4$).
+
+# %%
+fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
+for ax, circuit in zip(axes, ("open", "crossed")):
+    g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
+    draw_linkage(g, step="P", ax=ax)
+    ax.set_title(f"{circuit} circuit at $\\theta_2$ = 30$^\\circ$")
+plt.show()
+
+# %%
+theta2 = Q_(np.linspace(0, 360, 721), "deg")
+cycle = {circuit: fb.solve(theta2=theta2, omega2="10 rad/s", alpha2="-5 rad/s^2",
+                           circuit=circuit, order=2)
+         for circuit in ("open", "crossed")}
+deg = theta2.magnitude
+
+fig, axes = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
+for circuit, res in cycle.items():
+    col = CIRCUIT_COLORS[circuit]
+    axes[0].plot(deg, res.alpha3.to("rad/s^2").magnitude, color=col, label=circuit)
+    axes[1].plot(deg, res.alpha4.to("rad/s^2").magnitude, color=col, label=circuit)
+    axes[2].plot(deg, abs(res.A_B).to("in/s^2").magnitude, color=col, label=circuit)
+axes[2].plot(deg, abs(cycle["open"].A_A).to("in/s^2").magnitude, color="#777777", ls="--",
+             label="$|\\mathbf{A}_A|$ (both)")
+axes[0].set_ylabel("$\\alpha_3$ [rad/s$^2$]")
+axes[1].set_ylabel("$\\alpha_4$ [rad/s$^2$]")
+axes[2].set_ylabel("$|\\mathbf{A}_B|$ [in/s$^2$]")
+axes[2].set_xlabel("crank angle $\\theta_2$ [deg]")
+axes[2].set_xticks(range(0, 361, 45))
+for ax in axes:
+    ax.axvline(30, color="#aaaaaa", lw=0.8)
+axes[0].legend(loc="upper right")
+axes[2].legend(loc="upper right")
+fig.suptitle("Example 7-1 linkage over a cycle, $\\omega_2$ = 10 rad/s, $\\alpha_2$ = -5 rad/s$^2$")
+plt.show()
+
+for circuit, res in cycle.items():
+    a4 = res.alpha4.to("rad/s^2").magnitude
+    ab = abs(res.A_B).to("in/s^2").magnitude
+    print(f"{circuit:8s} alpha4 from {a4.min():7.2f} to {a4.max():6.2f} rad/s^2;"
+          f" |A_B| peaks at {ab.max():5.1f} in/s^2 ({ab.max() * 0.0254:.2f} m/s^2)"
+          f" at theta2 = {deg[ab.argmax()]:.1f} deg")
+
+# %% [markdown]
+# What to notice:
+#
+# - $\mathbf{A}_A$ is the same for both circuits (it depends on the crank only) and of constant
+#   size, $a\sqrt{\omega_2^4 + \alpha_2^2} \approx a\omega_2^2 = 200$ in/s$^2$; the rest of the linkage turns it into an
+#   acceleration of $B$ that more than doubles and falls to a fraction of it within a turn.
+# - The two circuits are mirror images of each other about the ground line, so their curves
+#   are mirror images too, run backwards: the crossed circuit at $\theta_2$ does what the open
+#   one does at $-\theta_2$, with the signs of the angular accelerations reversed. The small
+#   $\alpha_2$ spoils the symmetry slightly; with $\alpha_2 = 0$ it is exact, as this check
+#   confirms:
+
+# %%
+flip = fb.solve(theta2=-theta2, omega2="10 rad/s", circuit="open", order=2)
+mirror = fb.solve(theta2=theta2, omega2="10 rad/s", circuit="crossed", order=2)
+assert np.allclose(mirror.alpha4.magnitude, -flip.alpha4.magnitude, atol=1e-9)
+assert np.allclose(mirror.alpha3.magnitude, -flip.alpha3.magnitude, atol=1e-9)
+print("crossed(theta2) = -open(-theta2) for alpha3 and alpha4 when alpha2 = 0")
+
+# %% [markdown]
+# So for a *given crank angle* the two assemblies can have very different accelerations
+# (at $30^\circ$: $\alpha_3 = 8.77$ versus $70.3$ rad/s$^2$), and a design must say which circuit
+# it means. A linkage cannot switch circuits without being taken apart (or passing through a
+# toggle), so the solver follows one circuit through the whole sweep.
+
+# %% [markdown]
+# ### Where the solution fails: toggles and gaps
+#
+# Take a non-Grashof linkage, $a = 5$, $b = 5$, $c = 5$, $d = 7$ in. Its crank cannot turn
+# round: beyond a certain angle the coupler and rocker cannot reach each other. At the limit
+# they lie in line, $\sin(\theta_4 - \theta_3) = 0$, and the denominator of eq. 7.12 vanishes.
+# A sweep returns NaN there and a `valid` mask; a single angle raises an error that says
+# what is wrong.
+
+# %%
+rocker = FourBar(a="5 in", b="5 in", c="5 in", d="7 in")
+swing = Q_(np.linspace(-180, 180, 721), "deg")
+sweep = rocker.solve(theta2=swing, omega2="10 rad/s", order=2)
+print(f"valid at {sweep.valid.sum()} of {sweep.valid.size} angles; the others are",
+      " or ".join(sorted(set(sweep.status[~sweep.valid]))))
+limit = math.degrees(math.acos((5**2 + 7**2 - (5 + 5) ** 2) / (2 * 5 * 7)))
+for angle in (limit, 150.0):
+    try:
+        rocker.solve(theta2=Q_(angle, "deg"), omega2="10 rad/s")
+    except (Singular, NotAssemblable) as exc:
+        print(f"\ntheta2 = {angle:.4f} deg -> {type(exc).__name__}:\n  {exc}")
+
+# %%
+fig, ax = plt.subplots(figsize=(9, 3.8))
+a4 = sweep.alpha4.to("rad/s^2").magnitude
+ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
+for lo, hi in ((-180, -limit), (limit, 180)):
+    ax.axvspan(lo, hi, color="#eeeeee", label="cannot be assembled" if lo < 0 else None)
+for x in (-limit, limit):
+    ax.axvline(x, color="#d55e00", ls=":", lw=1.2)
+    ax.text(x, 2e4, " toggle ", color="#d55e00", ha="left" if x < 0 else "right")
+ax.set_yscale("symlog", linthresh=100)
+ax.set_xlabel("crank angle $\\theta_2$ [deg]")
+ax.set_ylabel("$\\alpha_4$ [rad/s$^2$] (symlog)")
+ax.set_xticks(range(-180, 181, 45))
+ax.set_xlim(-180, 180)
+ax.set_title("Non-Grashof fourbar (5, 5, 5, 7 in), open circuit, $\\omega_2$ = 10 rad/s")
+ax.legend(loc="lower center")
+plt.show()
+
+# %% [markdown]
+# $\alpha_4$ runs away as the crank nears a toggle (the plot's vertical scale is logarithmic
+# beyond $\pm 100$ rad/s$^2$): the crank cannot be driven through it at speed, and a real
+# mechanism stops and reverses there (and, being non-Grashof, comes back on the other
+# circuit). Beyond the toggles the linkage does not exist, and the solver says so instead of
+# inventing numbers. The fast swing of $\alpha_4$ near $\theta_2 = 0$ is a warning of another
+# kind: there coupler and rocker meet at only about $23^\circ$ (a poor transmission angle),
+# and small motions of the crank swing the rocker hard.
+
+# %% [markdown]
+# ## Explore: the rocker's length and the Grashof condition
+#
+# Change the rocker $c$ of Example 7-1 and watch $\alpha_4$ over a cycle (open circuit,
+# $\omega_2 = 10$ rad/s). With $a = 2$, $b = 6$, $d = 7$ the linkage is a Grashof crank-rocker
+# while $a + c \le b + d$, that is $c \le 11$ in; at $c = 11$ it can fold flat (a change point)
+# and beyond that the crank can no longer turn round.
+
+# %%
+def draw(c, omega2):
+    link = FourBar(a="2 in", b="6 in", c=Q_(c, "in"), d="7 in")
+    res = link.solve(theta2=theta2, omega2=Q_(omega2, "rad/s"), order=2)
+    fig, ax = plt.subplots(figsize=(5.2, 3.6))
+    ax.plot(deg, res.alpha4.to("rad/s^2").magnitude, color=CIRCUIT_COLORS["open"])
+    bad = ~res.valid
+    if bad.any():
+        ax.fill_between(deg, -400, 400, where=bad, color="#eeeeee", label="not assemblable")
+        ax.legend(loc="lower right", fontsize=9)
+    ax.set_ylim(-400, 400)
+    ax.set_xticks(range(0, 361, 90))
+    ax.set_xlabel("$\\theta_2$ [deg]")
+    ax.set_ylabel("$\\alpha_4$ [rad/s$^2$]")
+    grashof = "Grashof" if 2 + max(c, 7) <= 6 + min(c, 7) else "non-Grashof"
+    ax.set_title(f"c = {c:g} in ({grashof})", fontsize=10)
+    return fig
+
+
+explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"),
+        values=[5, 9, 10.8, 11.5])
+
+# %% [markdown]
+# A shorter rocker swings through a larger angle ($48^\circ$ for $c = 5$ in against $33^\circ$
+# for 9 in) and needs larger angular accelerations (peaks of 66 against 49 rad/s$^2$).
+# Approaching $c = 11$ in the peak grows quickly (140 rad/s$^2$ at 10.8 in, 289 at 10.95), as
+# the linkage nears the flat position it passes through at the change point. At
+# $c = 11.5$ in the crank can only rock: the gaps are the crank angles where the loop cannot
+# close, and next to them $\alpha_4$ runs off the chart.
+
+# %% [markdown]
+# ## Check yourself
+#
+# **1.** In eq. 7.7, which bracket is $\mathbf{A}_{BA}$, and why does it carry $\omega_3$ and
+# $\alpha_3$ rather than $\omega_2$, $\alpha_2$?
+#
+# <details><summary>Answer</summary>
+#
+# The second, $b\alpha_3 je^{j\theta_3} - b\omega_3^2e^{j\theta_3}$. $A$ and $B$ are both on the
+# coupler (link 3), so $B$ turns about $A$ with the coupler's own $\omega_3$ and $\alpha_3$
+# (Case 1 of notebook 1).
+#
+# </details>
+#
+# **2.** With $\alpha_2 = 0$, does $\mathbf{A}_A$ vanish? Do $\alpha_3$ and $\alpha_4$?
+#
+# <details><summary>Answer</summary>
+#
+# No and no. $\mathbf{A}_A$ keeps its normal part $-a\omega_2^2e^{j\theta_2}$, and the terms in
+# $\omega^2$ in $C$ and $F$ keep $\alpha_3$ and $\alpha_4$ non-zero at almost every angle. A
+# crank turning at constant speed still makes the rest of the linkage accelerate.
+#
+# </details>
+#
+# **3.** If $\omega_2$ doubles (with $\alpha_2 = 0$), what happens to $\alpha_3$, $\alpha_4$ and
+# $\mathbf{A}_B$ at a given $\theta_2$?
+#
+# <details><summary>Answer</summary>
+#
+# All are multiplied by four. $\omega_3$ and $\omega_4$ are proportional to $\omega_2$, so every
+# term in $C$ and $F$ scales as $\omega_2^2$. Check it: `fb.solve(theta2="30 deg",
+# omega2="20 rad/s").alpha4` is four times the value at 10 rad/s.
+#
+# </details>
+#
+# **4.** A sweep returns `valid` False at a few angles. Give two different reasons, and how
+# to tell them apart.
+#
+# <details><summary>Answer</summary>
+#
+# The linkage cannot be assembled there ($|O_4A|$ outside $|b - c| \dots b + c$), or it is at a
+# toggle (links 3 and 4 in line, eq. 7.12's denominator zero). `result.status` says
+# `'not_assemblable'` or `'singular'` for each angle.
+#
+# </details>
+
+# %% [markdown]
+# ## Common mistakes
+#
+# - **Solving acceleration before position and velocity.** Eq. 7.12 needs $\theta_3$,
+#   $\theta_4$, $\omega_3$, $\omega_4$ at the same crank angle and on the same circuit.
+# - **Mixing circuits.** Taking $\theta_3$, $\theta_4$ of the open circuit with $\omega$'s from a
+#   crossed-circuit formula gives numbers that belong to no linkage.
+# - **Degrees in the trigonometry.** `math.sin(30)` is the sine of 30 radians. Let the
+#   solver take Quantities such as `"30 deg"`.
+# - **Copying eq. 7.12 from a scan.** Printed equations can carry typos; derive them from the
+#   loop (as above) or check them against an independent method before trusting them.
+# - **Ignoring the `valid` mask.** NaN propagates silently into maxima and means; use
+#   `np.nanmax` or select `result.valid` first, and ask why the gaps are there.
+#
+# [Next: 4. The slider-crank and the engine](04_slider_crank_engine.ipynb)
