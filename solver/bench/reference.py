@@ -1,0 +1,311 @@
+"""The high-precision reference: every case solved as vector loops with mpmath.
+
+This is an implementation separate from both the closed forms and
+:mod:`solver.vectorloops`: it reads a case's vectors and loops (SI floats),
+closes the loops by Newton-Raphson at ``dps`` significant digits, continuing
+along the crank angles from the case's guesses (each position starts from a
+cubic Taylor prediction from the last), and gets the n-th derivatives from
+the n-th derivative of every loop,
+
+    sum_v s_v z_v^(n) = 0,   z_v = L_v e^{j theta_v},
+
+whose unknown part is J q^(n) with the position Jacobian J (Chapter 7,
+eq. 7.33, and eq. 7.19 for a vector of varying length). Results are rounded
+to float64 at the end, so the reference error is far below what the methods
+can reach (the tests check it against mpmath's own numerical differentiation
+of the position).
+
+The reference of a cycle is cached as JSON (:func:`cached`), keyed by the
+case, the crank angles and the precision, so a rerun costs nothing.
+"""
+
+import hashlib
+import json
+import os
+
+import mpmath as mp
+import numpy as np
+
+from .cases import MOTION
+
+DPS = 40
+
+
+class LoopReference:
+    """A case's loops in mpmath.
+
+    Parameters
+    ----------
+    case : :class:`~solver.bench.cases.Case`
+    """
+
+    def __init__(self, case):
+        self.case = case
+        self.names = list(case.vectors)
+        self.unknowns = []  # (vector, "angle" | "length")
+        for name in self.names:
+            v = case.vectors[name]
+            if v["angle"] == "unknown":
+                self.unknowns.append((name, "angle"))
+            if v["length"] == "unknown":
+                self.unknowns.append((name, "length"))
+        self.index = {u: k for k, u in enumerate(self.unknowns)}
+        # every angle as ratio * source + offset, the source "input", an
+        # unknown's index, or None (fixed); follow chains resolved here
+        self.angle = {name: self._resolve(name) for name in self.names}
+        self.length = {}
+        for name in self.names:
+            L = case.vectors[name]["length"]
+            self.length[name] = self.index[(name, "length")] if L == "unknown" else float(L)
+        self.loops = [self._parse(loop) for loop in case.loops]
+        size = max(v["length"] for v in case.vectors.values() if v["length"] != "unknown")
+        self.scale = [size if kind == "length" else 1.0 for _, kind in self.unknowns]
+        if 2 * len(self.loops) != len(self.unknowns):
+            raise ValueError(f"{case.name}: {len(self.unknowns)} unknowns for "
+                             f"{len(self.loops)} loops")
+
+    def _resolve(self, name):
+        angle = self.case.vectors[name]["angle"]
+        if angle == "input":
+            return "input", 1.0, 0.0
+        if angle == "unknown":
+            return self.index[(name, "angle")], 1.0, 0.0
+        if isinstance(angle, dict):
+            src, r, o = self._resolve(angle["follow"])
+            k = float(angle.get("ratio", 1.0))
+            return src, k * r, k * o + float(angle.get("offset", 0.0))
+        return None, 0.0, float(angle)
+
+    @staticmethod
+    def _parse(text):
+        terms, sign = [], 1
+        for tok in text.replace("+", " + ").replace("-", " - ").split():
+            if tok in "+-":
+                sign = 1 if tok == "+" else -1
+            else:
+                terms.append((sign, tok))
+                sign = 1
+        return terms
+
+    # --- every vector's state ------------------------------------------------
+    def _state(self, q, th_in):
+        """``{name: (L, th, e)}``: each vector's length and angle with their
+        derivatives 0..n-1 (lists) and e^{j theta}. ``q`` is the list of the
+        unknowns' derivative vectors (lists of mpf), ``th_in`` the input's."""
+        n = len(q)
+        zero = mp.mpf(0)
+        out = {}
+        for name in self.names:
+            src, r, o = self.angle[name]
+            if src is None:
+                th = [mp.mpf(o)] + [zero] * (n - 1)
+            else:
+                base = th_in if src == "input" else [qk[src] for qk in q]
+                th = [r * base[k] for k in range(n)]
+                th[0] += o
+            spec = self.length[name]
+            if isinstance(spec, int):
+                L = [qk[spec] for qk in q]
+            else:
+                L = [mp.mpf(spec)] + [zero] * (n - 1)
+            out[name] = (L, th, mp.expj(th[0]))
+        return out
+
+    @staticmethod
+    def _dz(L, th, e, n):
+        """n-th time derivative of z = L e^{j theta} (eqs. 7.2, 7.19, 7.33)."""
+        if n == 0:
+            return L[0] * e
+        w = th[1]
+        if n == 1:
+            return (L[1] + 1j * L[0] * w) * e
+        al = th[2]
+        if n == 2:
+            return (L[2] - L[0] * w * w + 1j * (L[0] * al + 2 * L[1] * w)) * e
+        jk = th[3]
+        return (L[3] - 3 * L[1] * w * w - 3 * L[0] * w * al
+                + 1j * (3 * L[2] * w + 3 * L[1] * al + L[0] * jk - L[0] * w ** 3)) * e
+
+    def _loops(self, state, n):
+        out = []
+        for loop in self.loops:
+            s = mp.mpc(0)
+            for sign, name in loop:
+                L, th, e = state[name]
+                s += sign * self._dz(L, th, e, n)
+            out += [s.real, s.imag]
+        return out
+
+    def _jacobian(self, state):
+        """d(loops)/d(unknowns) at a position (real, square)."""
+        nu = len(self.unknowns)
+        J = mp.matrix(nu, nu)
+        for i, loop in enumerate(self.loops):
+            for sign, name in loop:
+                L, th, e = state[name]
+                src, r, _ = self.angle[name]
+                if isinstance(src, int):  # dz/dq = j r L e^{j theta}
+                    d = sign * r * L[0] * 1j * e
+                    J[2 * i, src] += d.real
+                    J[2 * i + 1, src] += d.imag
+                spec = self.length[name]
+                if isinstance(spec, int):  # dz/dL = e^{j theta}
+                    J[2 * i, spec] += sign * e.real
+                    J[2 * i + 1, spec] += sign * e.imag
+        return J
+
+    def _newton(self, q0, theta2, strict):
+        """Close the loops from ``q0`` (list of mpf).
+
+        ``strict`` iterates until a step is below the working precision;
+        otherwise it stops once a step is below 10^(-dps/2 + 1): quadratic
+        convergence then leaves an error near 10^-dps times the curvature,
+        far below float64 on a well-conditioned cycle.
+        """
+        q0 = list(q0)
+        stop = mp.mpf(10) ** (-(mp.mp.dps - 6) if strict else -(mp.mp.dps // 2 - 1))
+        for _ in range(80):
+            state = self._state([q0], [theta2])
+            F = self._loops(state, 0)
+            J = self._jacobian(state)
+            dq = mp.lu_solve(J, mp.matrix([-f for f in F]))
+            q0 = [q0[k] + dq[k] for k in range(len(q0))]
+            if max(abs(x) for x in dq) < stop:
+                return q0
+        raise ArithmeticError(f"{self.case.name}: reference Newton did not converge at "
+                              f"theta2 = {float(theta2)!r}")
+
+    def solve_one(self, guess, theta2, omega2, alpha2, jerk2, strict=False):
+        """The unknowns and their first three time derivatives at one crank angle.
+
+        ``guess`` lists the unknowns in the order of :attr:`unknowns`.
+        Returns a list of four lists of mpf: q, q', q'', q'''.
+        """
+        th = [mp.mpf(theta2), mp.mpf(omega2), mp.mpf(alpha2), mp.mpf(jerk2)]
+        q = [self._newton([mp.mpf(g) for g in guess], th[0], strict)]
+        J = self._jacobian(self._state(q, th[:1]))
+        nu = len(self.unknowns)
+        for n in (1, 2, 3):
+            # the n-th derivative of the loops with the unknowns' n-th derivatives at zero
+            state = self._state(q + [[mp.mpf(0)] * nu], th[:n + 1])
+            known = self._loops(state, n)
+            x = mp.lu_solve(J, mp.matrix([-k for k in known]))
+            q.append([x[k] for k in range(nu)])
+        return q
+
+    def start(self, guess):
+        """The guesses (dict vector -> float) in the order of :attr:`unknowns`."""
+        return [float(guess[name]) for name, _ in self.unknowns]
+
+    def sweep(self, theta2, guess, motion=None, dps=None):
+        """Continue from ``guess`` (dict vector -> float) along ``theta2``.
+
+        Each position starts from a cubic Taylor prediction from the last
+        (its theta2-derivatives follow from the time derivatives by the
+        chain rule); where Newton-Raphson fails from it, or lands far from
+        it (another assembly), the step is halved, down to 1e-6 rad.
+        Returns a dict output name -> list of floats.
+        """
+        m = dict(MOTION, **(motion or {}))
+        out = {k: [] for k in self.case.outputs}
+        with mp.workdps(dps or DPS):
+            w, al, jk = mp.mpf(m["omega2"]), mp.mpf(m["alpha2"]), mp.mpf(m["jerk2"])
+            t = mp.mpf(float(theta2[0]))
+            prev = (t, self.solve_one(self.start(guess), t, w, al, jk))
+            self.record(out, prev[1], t, m)
+            for t in theta2[1:]:
+                prev = self._step(prev, mp.mpf(float(t)), w, al, jk)
+                self.record(out, prev[1], prev[0], m)
+        return {k: [float(x) for x in v] for k, v in out.items()}
+
+    def _step(self, prev, t, w, al, jk, depth=0):
+        t0, (q, q1, q2, q3) = prev
+        h = t - t0
+        nu = len(q)
+        d1 = [x / w for x in q1]
+        d2 = [(q2[k] - d1[k] * al) / w ** 2 for k in range(nu)]
+        d3 = [(q3[k] - 3 * d2[k] * w * al - d1[k] * jk) / w ** 3 for k in range(nu)]
+        g = [q[k] + h * (d1[k] + h * (d2[k] / 2 + h * d3[k] / 6)) for k in range(nu)]
+        try:
+            sol = self.solve_one(g, t, w, al, jk)
+            if max(abs(sol[0][k] - g[k]) / self.scale[k] for k in range(nu)) < 0.05:
+                return t, sol
+        except (ArithmeticError, ZeroDivisionError):
+            pass
+        if depth > 20:
+            raise ArithmeticError(f"{self.case.name}: the reference cannot follow the "
+                                  f"assembly to theta2 = {float(t)!r}")
+        mid = self._step(prev, (t0 + t) / 2, w, al, jk, depth + 1)
+        return self._step(mid, t, w, al, jk, depth + 1)
+
+    def record(self, out, q, theta2, motion):
+        """Append the case's outputs at one solved position to ``out``."""
+        th = [mp.mpf(theta2), mp.mpf(motion["omega2"]), mp.mpf(motion["alpha2"]),
+              mp.mpf(motion["jerk2"])]
+        state = self._state(q, th)
+        for name, (vec, kind, n) in self.case.outputs.items():
+            L, angles, _ = state[vec]
+            if kind == "angle":
+                value = angles[n]
+                if n == 0:  # angles in (-pi, pi], as the kernels report them
+                    value = mp.atan2(mp.sin(value), mp.cos(value))
+            else:
+                value = L[n]
+            out[name].append(value)
+
+
+def cycle_key(case, theta2, dps=DPS, motion=None):
+    """A hash of everything the reference of a cycle depends on."""
+    blob = json.dumps({"vectors": case.vectors, "loops": case.loops, "guess": case.guess,
+                       "outputs": case.outputs,
+                       "theta2": [float(t).hex() for t in theta2], "dps": dps,
+                       "motion": dict(MOTION, **(motion or {})), "version": 2},
+                      sort_keys=True, default=str)
+    return hashlib.sha256(blob.encode()).hexdigest()[:16]
+
+
+def cached(case, theta2, cache_dir=None, dps=DPS):
+    """Reference outputs of ``case`` along ``theta2`` (dict name -> float
+    array), read from ``cache_dir`` when computed before."""
+    key = cycle_key(case, theta2, dps)
+    path = os.path.join(cache_dir, f"reference-{case.name}-{key}.json") if cache_dir else None
+    if path and os.path.exists(path):
+        with open(path) as f:
+            data = json.load(f)
+    else:
+        data = LoopReference(case).sweep(theta2, case.guess, dps=dps)
+        if path:
+            os.makedirs(cache_dir, exist_ok=True)
+            with open(path, "w") as f:
+                json.dump(data, f)
+    return {k: np.array(v, dtype=float) for k, v in data.items()}
+
+
+def at_points(case, theta2, guesses, dps=60, motion=None):
+    """Reference at separate crank angles (no continuation), each from its own
+    guess (dict vector -> float), iterated to full precision: for points near
+    a toggle, where the assembly must come from an accurate position.
+    Raises ArithmeticError if Newton-Raphson left the guessed assembly.
+    Returns dict name -> float array."""
+    ref = LoopReference(case)
+    m = dict(MOTION, **(motion or {}))
+    out = {k: [] for k in case.outputs}
+    with mp.workdps(dps):
+        for t, g in zip(theta2, guesses):
+            start = ref.start(g)
+            q = ref.solve_one(start, float(t), m["omega2"], m["alpha2"], m["jerk2"],
+                              strict=True)
+            for k, u in enumerate(ref.unknowns):
+                if abs(float(q[0][k]) - start[k]) > 1e-5:
+                    raise ArithmeticError(f"{case.name}: the reference left the guessed "
+                                          f"assembly at theta2 = {float(t)!r} ({u})")
+            ref.record(out, q, float(t), m)
+    return {k: np.array([float(x) for x in v]) for k, v in out.items()}
+
+
+def toggle_angle(a, b, c, d, dps=60):
+    """Crank angle [rad] (an mpf) of the fourbar's toggle where
+    |O4 - A| = |b - c| (links 3 and 4 folded), by the law of cosines."""
+    with mp.workdps(dps):
+        a, b, c, d = (mp.mpf(x) for x in (a, b, c, d))
+        return +mp.acos((a * a + d * d - (b - c) ** 2) / (2 * a * d))

@@ -1,0 +1,101 @@
+"""The clock: median of repeats after a warm-up, and what machine it ran on.
+
+Times come from :func:`time.perf_counter`. A call that takes less than
+``min_time`` is run several times per repeat (``number``) and the repeat's
+time divided by that count, so short calls are not swamped by the clock's
+resolution. The benchmark asserts nothing about time; it reports.
+"""
+
+import os
+import platform
+import statistics
+import sys
+import time
+
+
+def measure(fn, repeats=7, min_time=0.02, max_number=10000):
+    """Median wall time of one call of ``fn`` [s].
+
+    Parameters
+    ----------
+    fn : callable
+        Called with no arguments. Called once first as a warm-up (caches,
+        JIT compilation, lazy imports), and that call's result returned.
+    repeats : int
+        Number of timed repeats whose median is reported.
+    min_time : float
+        Minimum duration of one repeat [s]; short calls are looped.
+
+    Returns
+    -------
+    dict
+        ``median`` [s per call], ``min``, ``max``, ``repeats``, ``number``
+        (calls per repeat), and ``result`` (the warm-up call's return value).
+    """
+    t0 = time.perf_counter()
+    result = fn()
+    first = time.perf_counter() - t0
+    number = 1
+    if first < min_time:  # a second, warm, estimate decides the loop count
+        t0 = time.perf_counter()
+        fn()
+        once = max(time.perf_counter() - t0, 1e-7)
+        number = int(min(max_number, max(1, min_time / once)))
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        times.append((time.perf_counter() - t0) / number)
+    return {"median": statistics.median(times), "min": min(times), "max": max(times),
+            "repeats": repeats, "number": number, "result": result}
+
+
+def machine():
+    """What the numbers were measured on: CPU, cores, Python and package versions."""
+    import numpy
+    import pint
+    import matplotlib
+    info = {"python": sys.version.split()[0], "implementation": platform.python_implementation(),
+            "platform": platform.platform(), "machine": platform.machine(),
+            "cpu": _cpu_name(), "cores": os.cpu_count(),
+            "numpy": numpy.__version__, "pint": pint.__version__,
+            "matplotlib": matplotlib.__version__}
+    try:
+        import mpmath
+        info["mpmath"] = mpmath.__version__
+    except ImportError:  # pragma: no cover
+        pass
+    for name in ("pylinkage", "mechanism", "numba", "scipy"):
+        info[name] = _version(name)
+    try:
+        from threadpoolctl import threadpool_info
+        info["blas"] = [{k: p.get(k) for k in ("internal_api", "version", "num_threads",
+                                                  "architecture")} for p in threadpool_info()]
+    except Exception:  # threadpoolctl is optional
+        pass
+    info["OPENBLAS_CORETYPE"] = os.environ.get("OPENBLAS_CORETYPE")
+    try:
+        info["load_average"] = list(os.getloadavg())
+    except OSError:  # pragma: no cover
+        pass
+    return info
+
+
+def _version(name):
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version(name)
+    except PackageNotFoundError:
+        return None
+
+
+def _cpu_name():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or None
