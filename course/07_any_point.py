@@ -1,0 +1,343 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 7. The acceleration of any point
+#
+# Once every link's $\omega$ and $\alpha$ are known, the acceleration of *any* point of *any* link
+# follows from one equation. This notebook uses it for coupler points, whose paths a designer
+# shapes, and for centres of gravity, where Newton's second law will act.
+#
+# **You will be able to**
+#
+# - write the acceleration of a point on a crank, a rocker or a coupler (eqs. 7.30-7.32) from the
+#   link's angle, its internal offset angle $\delta$ and its $\omega$, $\alpha$;
+# - get it from the solver, for a coupler point (`p`, `delta3`) or for any point of any link
+#   (`Result.point`), at one position or over a cycle;
+# - see on a coupler curve where a point accelerates hardest;
+# - turn the accelerations of the centres of gravity into the forces $m\mathbf{A}_G$ that the
+#   dynamic force analysis needs, in lbf and in newtons.
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.colors import Normalize
+
+from coursekit import COLORS, explore, in_g, polar, use_style, vector
+from solver import FourBar, Q_
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# Angular acceleration is a *free vector*: a link has one $\alpha$, whatever point you look at.
+# So a point fixed on a link accelerates like a point on a rotating radius, measured from any
+# other point of the same link whose acceleration is known (eq. 7.4).
+#
+# **A point S on the crank**, at the distance $s$ from $O_2$ and the constant angle $\delta_2$ from
+# the line $O_2A$. It turns about a fixed pivot, so
+#
+# $$ \mathbf{R}_S = s\,e^{j(\theta_2+\delta_2)} \tag{4.25} $$
+#
+# $$ \mathbf{A}_S = s\alpha_2\, je^{j(\theta_2+\delta_2)} - s\omega_2^2\, e^{j(\theta_2+\delta_2)} \tag{7.30} $$
+#
+# **A point U on the rocker**, at $u$ from $O_4$ and the angle $\delta_4$ from $O_4B$: the same form
+# with link 4's motion,
+#
+# $$ \mathbf{A}_U = u\alpha_4\, je^{j(\theta_4+\delta_4)} - u\omega_4^2\, e^{j(\theta_4+\delta_4)} \tag{7.31} $$
+#
+# **A point P on the coupler**, at $p$ from A and the angle $\delta_3$ from the line AB. The coupler
+# has no fixed pivot, so start from A, whose acceleration we know, and add the acceleration
+# difference of P from A:
+#
+# $$ \mathbf{A}_P = \mathbf{A}_A + \mathbf{A}_{PA} \tag{7.32a} $$
+#
+# $$ \mathbf{A}_{PA} = p\alpha_3\, je^{j(\theta_3+\delta_3)} - p\omega_3^2\, e^{j(\theta_3+\delta_3)} \tag{7.32b} $$
+#
+# Eq. 7.32 is eq. 7.4 again. It works for any point of any rigid link, referred to any other
+# point of the same link, once positions and velocities are known.
+
+# %% [markdown]
+# ## Worked examples
+#
+# ### 1. A coupler point and three centres of gravity
+#
+# The fourbar $a$ = 2 in, $b$ = 6 in, $c$ = 9 in, $d$ = 7 in at $\theta_2 = 30°$, $\omega_2$ = 10 rad/s,
+# $\alpha_2$ = -5 rad/s². The coupler is a triangular plate with the point P at $p$ = 3 in,
+# $\delta_3$ = 40°. Its centre of gravity $G_3$ is the centroid of the triangle A, B, P; the crank's
+# and rocker's centres of gravity are at their middles.
+
+# %%
+fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
+motion = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
+r = fourbar.solve(**motion, p="3 in", delta3="40 deg")
+print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
+print(f"A_A = {polar(r.A_A, 'in/s^2')}")
+print(f"A_P = {polar(r.A_P, 'in/s^2')} = {polar(r.A_P, 'm/s^2')}")
+
+# %% [markdown]
+# Eq. 7.32 written out by hand, checked against the solver:
+
+# %%
+p, delta3 = 3.0, np.radians(40)                                # in, rad
+t3, w3, a3 = r.theta3.magnitude, r.omega3.magnitude, r.alpha3.magnitude
+A_PA = p * a3 * 1j * np.exp(1j * (t3 + delta3)) - p * w3**2 * np.exp(1j * (t3 + delta3))   # eq. 7.32b
+A_P = r.A_A.to("in/s^2").magnitude + A_PA                                                  # eq. 7.32a
+assert np.isclose(A_P, r.A_P.to("in/s^2").magnitude, rtol=1e-12)
+print(f"by hand: A_P = {A_P:.4f} in/s^2")
+
+# %% [markdown]
+# For points that are not the coupler point, `Result.point(link, p, delta)` gives the position,
+# velocity, acceleration (and its tangential and normal parts about the link's base pin) and jerk
+# of any point of link 2, 3 or 4, with no new solve. The coupler's centroid, in the coupler's own
+# frame (A at the origin, B on the x axis), is $(0 + b + p e^{j\delta_3})/3$:
+
+# %%
+g3 = (0 + 6 + 3 * np.exp(1j * delta3)) / 3                      # in, from A, in link 3's frame
+cg = {"S = G2": (2, "1 in", "0 deg"),
+      "G3": (3, f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
+      "U = G4": (4, "4.5 in", "0 deg")}
+points = {name: r.point(*spec) for name, spec in cg.items()}
+print(f"G3: {abs(g3):.4f} in from A at {np.degrees(np.angle(g3)):.3f} deg from AB")
+for name, pm in points.items():
+    print(f"{name:7} A = {polar(pm.A, 'in/s^2')}   ({in_g(pm.A):.3f} g)")
+# the solver's coupler point and Result.point agree
+assert np.isclose(r.point(3, "3 in", "40 deg").si("A"), r.si("A_P"))
+
+# %% [markdown]
+# The drawing puts each acceleration at its point (one scale for all). Points of one link
+# share $\alpha$ and $\omega$ but not their accelerations: the farther from the link's
+# instantaneous centre of zero acceleration, the larger.
+
+# %%
+def linkage_points(res, i=None):
+    """Pin positions [in] (complex) of a result, at index i of a sweep."""
+    pick = (lambda z: z) if i is None else (lambda z: z[i])
+    return {k: pick(getattr(res, "R_" + k).to("in").magnitude) for k in ("A", "B", "P")}
+
+
+def draw_fourbar(ax, pins, colour="#4d4d4d"):
+    O2, O4 = 0j, 7 + 0j
+    A, B, P = pins["A"], pins["B"], pins["P"]
+    ax.fill([A.real, B.real, P.real], [A.imag, B.imag, P.imag], color="#d9d9d9", ec=colour, lw=1.2)
+    for z0, z1 in ((O2, A), (B, O4)):
+        ax.plot([z0.real, z1.real], [z0.imag, z1.imag], color=colour, lw=4, solid_capstyle="round")
+    ax.plot([O2.real, O4.real], [0, 0], "^", color="#222222", ms=10)
+    ax.scatter([A.real, B.real], [A.imag, B.imag], s=36, c="white", edgecolors="#222222", zorder=5)
+
+
+fig, ax = plt.subplots(figsize=(8.5, 5.5))
+pins = linkage_points(r)
+draw_fourbar(ax, pins)
+scale = 0.008                                                   # in of drawing per in/s^2
+ends = [0j, 7 + 0j]
+here = {"A": r.A_A, "P": r.A_P, "B": r.A_B, **{k: pm.A for k, pm in points.items()}}
+where = {"A": pins["A"], "P": pins["P"], "B": pins["B"],
+         **{k: pm.R.to("in").magnitude for k, pm in points.items()}}
+for name, A in here.items():
+    z0 = where[name]
+    ax.plot(z0.real, z0.imag, "o", color="black", ms=4, zorder=6)
+    tip = vector(ax, z0, A.to("in/s^2").magnitude, "resultant", scale=scale)
+    ends += [z0, tip]
+    ax.annotate(name, (z0.real, z0.imag), textcoords="offset points", xytext=(6, 6), fontsize=11)
+ax.set_xlim(min(z.real for z in ends) - 0.5, max(z.real for z in ends) + 0.5)
+ax.set_ylim(min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
+ax.set_aspect("equal")
+ax.set_xlabel("x [in]")
+ax.set_ylabel("y [in]")
+ax.set_title("Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = 125 in/s$^2$)")
+plt.show()
+
+# %% [markdown]
+# ### 2. Coupler curves coloured by acceleration
+#
+# Over a whole crank turn (steady 10 rad/s) the coupler point traces its coupler curve. Colouring
+# the curve by $|\mathbf{A}_P|$ shows *where on its path* a point accelerates hardest: usually on
+# the tight bends traversed quickly. Each panel draws the linkage at $\theta_2 = 60°$ with the
+# chosen point (star) tied to A by a dashed line; a point outside the plate is still a point of
+# link 3, as if the plate were larger. One sweep solves the linkage; `Result.point` then gives
+# every other point of the coupler without solving again.
+
+# %%
+theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
+cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="40 deg")
+assert cycle.valid.all()
+choices = {r"P: $p$ = 3 in, $\delta_3$ = 40°": ("3 in", "40 deg"),
+           r"$G_3$, the centroid": (f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
+           r"$p$ = 8 in, $\delta_3$ = -30°": ("8 in", "-30 deg")}
+norm = Normalize(0, 500)
+fig, axes = plt.subplots(1, 3, figsize=(13, 4.6), sharex=True, sharey=True)
+for ax, (label, (pp, dd)) in zip(axes, choices.items()):
+    pm = cycle.point(3, pp, dd)
+    z = pm.R.to("in").magnitude
+    A = np.abs(pm.A.to("in/s^2").magnitude)
+    seg = np.stack([np.column_stack([z.real, z.imag])[:-1], np.column_stack([z.real, z.imag])[1:]], axis=1)
+    lc = LineCollection(seg, cmap="viridis", norm=norm, lw=3)
+    lc.set_array(A[:-1])
+    ax.add_collection(lc)
+    k = np.argmax(A)
+    ax.plot(z.real[k], z.imag[k], "o", mfc="none", mec="black", ms=10)
+    ax.annotate(f"max {A[k]:.0f} in/s²\n({in_g(pm.A[k]):.2f} g)", (z.real[k], z.imag[k]),
+                textcoords="offset points", xytext=(8, -24), fontsize=9)
+    draw_fourbar(ax, linkage_points(cycle, 60))               # the plate A, B, P at theta2 = 60 deg
+    A60 = cycle.R_A[60].to("in").magnitude
+    ax.plot([A60.real, z[60].real], [A60.imag, z[60].imag], color="#4d4d4d", lw=1, ls="--")
+    ax.plot(z[60].real, z[60].imag, "*", color="black", ms=11, zorder=7)
+    ax.set_title(label, fontsize=11)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [in]")
+axes[0].set_ylabel("y [in]")
+fig.colorbar(lc, ax=axes, label=r"$|\mathbf{A}|$ [in/s$^2$]", shrink=0.8)
+plt.show()
+
+# %% [markdown]
+# ### 3. Ready for F = m a
+#
+# The forces that make the links move are $m\mathbf{A}_G$, one per link, applied at its centre of
+# gravity (with a torque $I_G\alpha$ about it, which needs the $\alpha$ we already have). Give the
+# links masses: crank 0.2 lb, coupler plate 0.6 lb, rocker 0.8 lb, and run the crank at a steady
+# 300 rpm. pint carries the units, including the US trap that a pound of *mass* at 1 g needs a
+# pound of *force*: it knows $g_c$ and converts lb·in/s² to lbf.
+
+# %%
+masses = {"S = G2": Q_(0.2, "lb"), "G3": Q_(0.6, "lb"), "U = G4": Q_(0.8, "lb")}
+fast = fourbar.solve(theta2=theta, omega2="300 rpm", alpha2=0)
+assert fast.valid.all()
+print(f"1 lb at 1 g needs {(Q_(1, 'lb') * Q_(1, 'standard_gravity')).to('lbf'):.4f~P}")
+fig, ax = plt.subplots(figsize=(8.5, 4))
+colour = {"S = G2": COLORS["normal"], "G3": "black", "U = G4": COLORS["tangential"]}
+for name, (link, pp, dd) in cg.items():
+    force = masses[name] * fast.point(link, pp, dd).A                  # m A_G, a complex Quantity
+    size = np.abs(force.to("lbf").magnitude)
+    ax.plot(np.degrees(theta.magnitude), size, color=colour[name],
+            label=f"{name}: m = {masses[name]:~P}")
+    k = np.argmax(size)
+    at = (f"at theta2 = {np.degrees(theta.magnitude[k]):.0f} deg" if np.ptp(size) > 1e-9 * size[k]
+          else "at every angle (s omega2^2, constant)")
+    print(f"{name:7} largest |m A| = {size[k]:5.2f} lbf = {Q_(size[k], 'lbf').to('N'):5.2f~P} {at}")
+ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
+ax.set_ylabel(r"$|m\,\mathbf{A}_G|$ [lbf]")
+ax.set_xticks(range(0, 361, 60))
+secondary = ax.secondary_yaxis("right", functions=(lambda f: f * 4.4482216, lambda n: n / 4.4482216))
+secondary.set_ylabel("[N]")
+ax.set_title("Force needed to accelerate each link's mass, 300 rpm")
+ax.legend()
+plt.show()
+
+# %% [markdown]
+# At 300 rpm the crank's centre of gravity needs half a pound-force all the time; the coupler and
+# the rocker need ten times as much, both near $\theta_2 \approx 50°$, where the crank pulls the
+# coupler round fastest. The rocker's centre of gravity accelerates less than the coupler's, but
+# it is heavier: force is mass times acceleration, and both matter. These curves are the inputs
+# the dynamic force analysis (a later chapter) starts from.
+#
+# ## Explore
+#
+# Move the coupler point around the coupler: the angle $\delta_3$ from AB turns it about A (and,
+# live, $p$ moves it away from A). Watch the shape of the coupler curve and where its hottest
+# stretch is.
+
+# %%
+NORM = Normalize(0, 600)
+
+
+def draw(delta3=40, p=3.0):
+    res = fourbar.solve(theta2=theta, omega2="10 rad/s", p=f"{p} in", delta3=f"{delta3} deg")
+    z = res.R_P.to("in").magnitude
+    A = np.abs(res.A_P.to("in/s^2").magnitude)
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    xy = np.column_stack([z.real, z.imag])
+    lc = LineCollection(np.stack([xy[:-1], xy[1:]], axis=1), cmap="viridis", norm=NORM, lw=3)
+    lc.set_array(A[:-1])
+    ax.add_collection(lc)
+    fig.colorbar(lc, ax=ax, label=r"$|\mathbf{A}_P|$ [in/s$^2$]", extend="max")
+    draw_fourbar(ax, linkage_points(res, 60))
+    ax.set_xlim(min(-6, z.real.min() - 1), max(10, z.real.max() + 1))   # one frame unless P leaves it
+    ax.set_ylim(min(-6, z.imag.min() - 1), max(10, z.imag.max() + 1))
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [in]")
+    ax.set_ylabel("y [in]")
+    ax.set_title(rf"$p$ = {p:g} in, $\delta_3$ = {delta3}°: largest $|\mathbf{{A}}_P|$ {A.max():.0f} in/s²",
+                 fontsize=10)
+    return fig
+
+
+explore(draw, delta3=(0, 360, 10, 40, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
+
+# %% [markdown]
+# ## Check yourself
+#
+# 1. Two points of the same coupler: do they have the same angular acceleration? The same linear
+#    acceleration?
+#
+# <details><summary>Answer</summary>
+#
+# Same $\alpha_3$ (and $\omega_3$): angular acceleration is a free vector, a property of the link.
+# Different linear accelerations: $\mathbf{A}_{PA}$ depends on where P is ($p$, $\delta_3$).
+#
+# </details>
+#
+# 2. Why does eq. 7.32 start from A and not from $O_2$?
+#
+# <details><summary>Answer</summary>
+#
+# Eq. 7.4 relates two points *of the same rigid body*. P is on the coupler; $O_2$ is not. A is a
+# point of the coupler (the pin it shares with the crank) whose acceleration we already know.
+# Starting from B works as well, with the angle measured from BA.
+#
+# </details>
+#
+# 3. A point on the coupler at $p = 0$: what is its acceleration?
+#
+# <details><summary>Answer</summary>
+#
+# $\mathbf{A}_A$: it *is* A. Eq. 7.32b gives $\mathbf{A}_{PA} = 0$.
+#
+# </details>
+#
+# 4. A 0.6 lb coupler's centre of gravity accelerates at 2 g. What force must act on it, in lbf
+#    and in N?
+#
+# <details><summary>Answer</summary>
+#
+# 1.2 lbf, about 5.3 N: a pound of mass at 1 g needs a pound of force
+# ($m a = 0.6\ \text{lb} \times 2 \times 386\ \text{in/s}^2 = 463\ \text{lb·in/s}^2$, and
+# $1\ \text{lbf} = 386\ \text{lb·in/s}^2$).
+#
+# </details>
+#
+# 5. The crank runs at a steady speed. Does its centre of gravity have a tangential acceleration?
+#
+# <details><summary>Answer</summary>
+#
+# No: $\alpha_2 = 0$, so eq. 7.30 leaves only the normal part $s\omega_2^2$ toward $O_2$. The
+# coupler's and rocker's centres of gravity still have both parts, because $\alpha_3$ and
+# $\alpha_4$ are not zero.
+#
+# </details>
+#
+# ## Common mistakes
+#
+# - **Measuring $\delta_3$ from the wrong line.** It is the angle from line AB (the direction of
+#   $\theta_3$), counter-clockwise, fixed in the link; not from the x axis.
+# - **Adding $\mathbf{A}_{PA}$ to a point of another link**, e.g. to $\mathbf{A}_B$ with the
+#   offset measured from A. Refer P to a point of the coupler, with $p$ and $\delta$ measured from
+#   that point.
+# - **Using the pin's acceleration for the link's centre of gravity.** The force $m\mathbf{A}_G$
+#   needs the acceleration of G itself.
+# - **Mixing pound-mass and pound-force.** $m a$ with $m$ in lb and $a$ in in/s² is *not* in lbf
+#   until divided by $g_c = 386.09$ lb·in/(lbf·s²); let pint do it, or use blobs or slugs.
+#
+# [Next: 8. Human tolerance of acceleration](08_human_tolerance.ipynb)
