@@ -9,7 +9,15 @@ z_v = L_v e^{j theta_v}. The Jacobian is analytic:
 
 and the same matrix serves the velocity, acceleration and jerk solves
 (:mod:`.derivatives`).
+
+Everything here works on a stack of M positions at once (M = 1 for one
+position): F, the Jacobian and dF/dtheta2 of all M come from one real
+matrix product ``[L cos, cos, L sin, sin] @ B`` with a matrix B built once
+per linkage, and
+the M small Newton systems are solved by one stacked ``np.linalg.solve``.
 """
+
+import math
 
 import numpy as np
 
@@ -18,6 +26,31 @@ from ..errors import NoConvergence
 MAX_ITERATIONS = 50
 MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed assembly
 MAX_LENGTH_STEP = 0.5     # [length scale] per iteration
+DEFAULT_TOL = 1e-13       # loop residual / length scale at which Newton stops
+STEP_TOL_FACTOR = 1e-8 / math.sqrt(DEFAULT_TOL)   # last step <= this * sqrt(tol)
+
+# reasons a position did not converge
+CONVERGED, NOT_CLOSED, SINGULAR_STEP = 0, 1, 2
+
+
+def check_tol(tol):
+    """The convergence tolerance as a float in (0, 1e-2], or InvalidInput."""
+    from ..errors import InvalidInput
+    try:
+        tol = float(tol)
+    except (TypeError, ValueError):
+        raise InvalidInput(f"tol must be a plain number like 1e-13 (got {tol!r})", "tol") from None
+    if not 0 < tol <= 1e-2:
+        raise InvalidInput(f"tol must be in (0, 1e-2], a loop residual relative to the longest "
+                           f"link (got {tol!r}); the default is {DEFAULT_TOL:g}", "tol")
+    return tol
+
+
+def step_tolerance(tol):
+    """Largest last Newton step [scaled] accepted at tolerance ``tol``: 1e-8 at
+    the default 1e-13, growing like sqrt(tol) (Newton's error after a step of
+    size s is of order s**2)."""
+    return STEP_TOL_FACTOR * math.sqrt(tol)
 
 
 class LoopSystem:
@@ -27,8 +60,8 @@ class LoopSystem:
         self.model = model
         m = model
         self.signs = m.signs
-        self.n_loops = m.signs.shape[0]
-        self.n_unknowns = m.n_unknowns
+        self.n_loops = nl = m.signs.shape[0]
+        self.n_unknowns = nu = m.n_unknowns
         self.vl = np.flatnonzero(m.length_unknown >= 0)        # vectors with unknown length
         self.il = m.length_unknown[self.vl]
         self.va = np.flatnonzero(m.angle_unknown >= 0)          # vectors on an unknown angle
@@ -41,88 +74,336 @@ class LoopSystem:
         self.step_limit = np.where(m.unknown_is_length, MAX_LENGTH_STEP * m.length_scale,
                                    MAX_ANGLE_STEP)
         # dense maps from vectors to unknowns, for a Jacobian in real arithmetic
-        nv, nu = len(self.fixed_length), self.n_unknowns
+        nv = len(self.fixed_length)
+        self.n_vectors = nv
         self.Ma = np.zeros((nv, nu))
         self.Ma[self.va, self.ia] = self.ratio[self.va]
         self.Ml = np.zeros((nv, nu))
         self.Ml[self.vl, self.il] = 1.0
         self.k_in = np.where(m.angle_input, self.ratio, 0.0)
+        # gathers: base angle of every vector from [q, theta2, 0]; length from q or fixed
+        self.base_index = np.full(nv, nu + 1)
+        self.base_index[self.vin] = nu
+        self.base_index[self.va] = self.ia
+        self.length_index = np.zeros(nv, dtype=int)
+        self.length_index[self.vl] = self.il
+        self.length_mask = np.zeros(nv)
+        self.length_mask[self.vl] = 1.0
+        # B maps the row [L cos, cos, L sin, sin] (one entry per vector) of one
+        # position to column blocks of 2 n_loops each: F; dF/dq_0 ... dF/dq_{nu-1};
+        # dF/dtheta2 (rows of each block: real and imaginary part of each loop).
+        Bc = np.zeros((2 * nv, nu + 2, nl), dtype=complex)   # acting on [z, e]
+        Bc[:nv, 0, :] = m.signs.T
+        Bc[:nv, 1:nu + 1, :] = 1j * self.Ma[:, :, None] * m.signs.T[:, None, :]
+        Bc[nv:, 1:nu + 1, :] = self.Ml[:, :, None] * m.signs.T[:, None, :]
+        Bc[:nv, nu + 1, :] = 1j * self.k_in[:, None] * m.signs.T
+        # real form: (yr + j yi)(br + j bi) = (yr br - yi bi) + j (yr bi + yi br)
+        B = np.zeros((2, 2 * nv, nu + 2, nl, 2))
+        B[0, :, :, :, 0], B[0, :, :, :, 1] = Bc.real, Bc.imag
+        B[1, :, :, :, 0], B[1, :, :, :, 1] = -Bc.imag, Bc.real
+        self.B = B.reshape(4 * nv, (nu + 2) * 2 * nl)
+        # the input angle's period: 2 pi when every driven vector turns an integer
+        # number of times per crank turn (a gear ratio like -2), else none
+        k = self.ratio[self.vin]
+        self.period = 2 * np.pi if np.all(k == np.round(k)) else None
+        self._tables()
 
-    # --- evaluation at one position ---------------------------------------
+    def _tables(self):
+        """Plain-Python tables for :meth:`newton1` (one position, no numpy)."""
+        m, nu = self.model, self.n_unknowns
+        self._py_vectors = []
+        for v in range(self.n_vectors):
+            b = int(self.base_index[v])
+            li = int(m.length_unknown[v])
+            self._py_vectors.append((b, float(self.ratio[v]), float(self.offset[v]), li,
+                                     float(self.fixed_length[v])))
+        terms, angle, length, driven = [], [], [], []
+        for l, row in enumerate(m.signs):
+            for v in np.flatnonzero(row):
+                sg = float(row[v])
+                terms.append((2 * l, v, sg))
+                if m.angle_unknown[v] >= 0:
+                    angle.append((2 * l, v, int(m.angle_unknown[v]), sg * self.ratio[v]))
+                if m.length_unknown[v] >= 0:
+                    length.append((2 * l, v, int(m.length_unknown[v]), sg))
+                if m.angle_input[v]:
+                    driven.append((2 * l, v, sg * self.ratio[v]))
+        self._py_terms, self._py_angle = terms, angle
+        self._py_length, self._py_driven = length, driven
+        self._py_scale = [float(x) for x in self.scale]
+        self._py_limit = [float(x) for x in self.step_limit]
+
+    # --- geometry of a stack of positions --------------------------------
+    def vectors(self, q, theta2):
+        """Lengths L (M, nv) [m], angles theta (M, nv) [rad] of a stack of positions."""
+        M = q.shape[0]
+        X = np.empty((M, self.n_unknowns + 2))
+        X[:, :-2] = q
+        X[:, -2] = theta2
+        X[:, -1] = 0.0
+        theta = X[:, self.base_index] * self.ratio + self.offset
+        if len(self.vl):
+            L = self.fixed_length + q[:, self.length_index] * self.length_mask
+        else:
+            L = np.broadcast_to(self.fixed_length, theta.shape)
+        return L, theta
+
+    def evaluate(self, q, theta2):
+        """Residual F (M, 2 nl), Jacobian J (M, 2 nl, nu) and dF/dtheta2 (M, 2 nl).
+
+        Rows come in (real, imaginary) pairs, loop by loop.
+        """
+        L, theta = self.vectors(q, theta2)
+        return self.evaluate_lt(L, np.cos(theta), np.sin(theta))
+
+    def evaluate_lt(self, L, c, s):
+        """As :meth:`evaluate`, from lengths and the cosines, sines of the angles."""
+        M = c.shape[0]
+        nu, nl = self.n_unknowns, self.n_loops
+        R = (np.concatenate([L * c, c, L * s, s], axis=1) @ self.B).reshape(M, nu + 2, 2 * nl)
+        return R[:, 0], R[:, 1:nu + 1].transpose(0, 2, 1), R[:, nu + 1]
+
+    def jacobian_stack(self, L, e):
+        """The real Jacobians (M, 2 nl, nu) at given lengths and e^{j theta}."""
+        return self.evaluate_lt(L, e.real, e.imag)[1]
+
+    # --- the older one-position helpers (kept for callers and teaching) --------
     def lengths_angles(self, q, theta2):
-        """Lengths L_v [m] and angles theta_v [rad] of every vector."""
-        L = self.fixed_length.copy()
-        L[self.vl] = q[self.il]
-        base = np.zeros(len(L))
-        base[self.vin] = theta2
-        base[self.va] = q[self.ia]
-        return L, self.ratio * base + self.offset
+        """Lengths L_v [m] and angles theta_v [rad] of every vector at one position."""
+        L, theta = self.vectors(np.asarray(q, dtype=float)[None], theta2)
+        return np.array(L[0]), theta[0]
 
     def residual(self, L, e):
         f = self.signs @ (L * e)
         return np.concatenate([f.real, f.imag])
 
     def jacobian(self, L, e):
-        """Real Jacobian dF/dq, shape (2 n_loops, n_unknowns)."""
-        return self._jacobian_real(L, e.real, e.imag)
-
-    def _jacobian_real(self, L, c, s):
-        # angle unknowns: k j L e = k L (-s + j c); length unknowns: e = c + j s
-        re = (self.Ma * (-L * s)[:, None]) + self.Ml * c[:, None]
-        im = (self.Ma * (L * c)[:, None]) + self.Ml * s[:, None]
-        return np.vstack([self.signs @ re, self.signs @ im])
+        """Real Jacobian dF/dq at one position, shape (2 n_loops, n_unknowns), rows
+        all real parts then all imaginary parts."""
+        D = 1j * self.Ma * (L * e)[:, None] + self.Ml * e[:, None]
+        Jc = self.signs @ D
+        return np.vstack([Jc.real, Jc.imag])
 
     def dF_dtheta2(self, L, e):
         k = self.k_in * L
         return np.concatenate([self.signs @ (-k * e.imag), self.signs @ (k * e.real)])
 
-    def solve_position(self, q0, theta2):
-        """Newton-Raphson from q0 to machine precision.
+    # --- Newton-Raphson -----------------------------------------------------
+    def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS):
+        """Newton-Raphson on a stack of M positions at once.
+
+        Parameters
+        ----------
+        q0 : array (M, nu)
+            Starting values (angles [rad], lengths [m]).
+        theta2 : array (M,)
+            Input angles [rad].
+        tol : float
+            Stop when the loop residual is at most ``tol`` times the length
+            scale and the last full (undamped) step was at most
+            :func:`step_tolerance` (``tol``). At least one step is taken.
+
+        Returns
+        -------
+        q : (M, nu) solutions (the last iterate where not converged)
+        iterations : (M,) Newton steps taken
+        residual : (M,) loop residual norm reached [m]
+        reason : (M,) int8, CONVERGED, NOT_CLOSED or SINGULAR_STEP
+        slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged)
+        """
+        q = np.array(q0, dtype=float, copy=True)
+        theta2 = np.asarray(theta2, dtype=float)
+        M = q.shape[0]
+        iterations = np.zeros(M, dtype=int)
+        residual = np.full(M, np.inf)
+        reason = np.full(M, NOT_CLOSED, dtype=np.int8)
+        slope = np.full_like(q, np.nan)
+        tol_res = tol * self.model.length_scale
+        step_tol = step_tolerance(tol)
+        size = np.full(M, np.inf)
+        active = np.arange(M)
+        qa, ta = q, theta2
+        for it in range(max_iterations + 1):
+            F, J, Ft = self.evaluate(qa, ta)
+            res = np.sqrt(np.einsum("ij,ij->i", F, F))
+            residual[active] = res
+            done = (size < step_tol) & (res <= tol_res)
+            rhs = np.stack([F, Ft], axis=-1)
+            sol, bad = _solve_stack(J, rhs)
+            if done.any():
+                idx = active[done]
+                q[idx] = qa[done]
+                reason[idx] = CONVERGED
+                slope[idx] = -sol[done, :, 1]
+                keep = ~done & ~bad
+            else:
+                keep = ~bad
+            if bad.any():
+                hit = bad & ~done
+                q[active[hit]] = qa[hit]
+                reason[active[hit]] = SINGULAR_STEP
+            if it == max_iterations or not keep.any():
+                q[active[keep]] = qa[keep]
+                break
+            if not keep.all():
+                active, qa, ta, sol = active[keep], qa[keep], ta[keep], sol[keep]
+            dq = -sol[:, :, 0]
+            ratio = np.max(np.abs(dq) / self.step_limit, axis=1)
+            size = np.max(np.abs(dq) / self.scale, axis=1)
+            damped = ratio > 1.0
+            if damped.any():  # never leap to another assembly in one step
+                dq[damped] /= ratio[damped, None]
+                size[damped] = np.inf
+            qa = qa + dq
+            iterations[active] += 1
+        return q, iterations, residual, reason, slope
+
+    def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS):
+        """Newton-Raphson at one position, in plain Python floats.
+
+        The same iteration, stopping rule and damping as :meth:`newton`, for
+        the sequential steps of a sweep, where numpy's per-call overhead on
+        a 4 x 4 system would cost more than the arithmetic.
+
+        Returns ``(q, iterations, residual, reason, slope)`` with q and slope
+        as lists (slope None where not converged).
+        """
+        q = [float(x) for x in q0]
+        nu = len(q)
+        n = 2 * self.n_loops
+        vectors, terms = self._py_vectors, self._py_terms
+        angle, length, driven = self._py_angle, self._py_length, self._py_driven
+        scale, limit = self._py_scale, self._py_limit
+        tol_res = tol * self.model.length_scale
+        step_tol = step_tolerance(tol)
+        cos, sin, sqrt = math.cos, math.sin, math.sqrt
+        size = math.inf
+        res = math.inf
+        steps = 0
+        while True:
+            X = q + [theta2, 0.0]
+            c, s, Lc, Ls = [], [], [], []
+            for b, k, o, li, Lf in vectors:
+                th = k * X[b] + o
+                cv, sv = cos(th), sin(th)
+                L = q[li] if li >= 0 else Lf
+                c.append(cv)
+                s.append(sv)
+                Lc.append(L * cv)
+                Ls.append(L * sv)
+            F = [0.0] * n
+            for r, v, sg in terms:
+                F[r] += sg * Lc[v]
+                F[r + 1] += sg * Ls[v]
+            res = sqrt(sum(f * f for f in F))
+            # augmented matrix [J | -F | -dF/dtheta2]
+            A = [[0.0] * (nu + 2) for _ in range(n)]
+            for r, v, u, cf in angle:
+                A[r][u] -= cf * Ls[v]
+                A[r + 1][u] += cf * Lc[v]
+            for r, v, u, sg in length:
+                A[r][u] += sg * c[v]
+                A[r + 1][u] += sg * s[v]
+            for r, v, cf in driven:
+                A[r][nu + 1] += cf * Ls[v]
+                A[r + 1][nu + 1] -= cf * Lc[v]
+            for r in range(n):
+                A[r][nu] = -F[r]
+            x = _gauss(A, nu)
+            if size < step_tol and res <= tol_res:
+                return q, steps, res, CONVERGED, (None if x is None else [row[1] for row in x])
+            if x is None or res != res:
+                return q, steps, res, SINGULAR_STEP, None
+            if steps == max_iterations:
+                return q, steps, res, NOT_CLOSED, None
+            dq = [row[0] for row in x]
+            ratio = max(abs(d) / lim for d, lim in zip(dq, limit))
+            size = max(abs(d) / sc for d, sc in zip(dq, scale))
+            if ratio > 1.0:  # never leap to another assembly in one step
+                dq = [d / ratio for d in dq]
+                size = math.inf
+            q = [a + d for a, d in zip(q, dq)]
+            steps += 1
+
+    def solve_position(self, q0, theta2, tol=DEFAULT_TOL):
+        """Newton-Raphson at one position from q0 to machine precision.
 
         Returns ``(q, iterations, residual_norm, J, slope)`` with ``slope`` =
         dq/dtheta2 there (the continuation predictor); raises NoConvergence
         (with the residual it reached) when the loops do not close.
         """
-        q = np.array(q0, dtype=float)
-        scale = self.scale
-        limit = self.step_limit
-        tol_res = 1e-13 * self.model.length_scale
-        signs = self.signs
-        res_norm = np.inf
-        size = np.inf
-        for it in range(1, MAX_ITERATIONS + 1):
-            L, th = self.lengths_angles(q, theta2)
-            c, s = np.cos(th), np.sin(th)
-            F = np.concatenate([signs @ (L * c), signs @ (L * s)])
-            res_norm = float(np.sqrt(F @ F))
-            if size < 1e-8 and res_norm <= tol_res:
-                # the last step was quadratic-small: q is at round-off
-                J = self._jacobian_real(L, c, s)
-                k = self.k_in * L
-                dFdt = np.concatenate([signs @ (-k * s), signs @ (k * c)])
-                slope = np.linalg.solve(J, -dFdt)
-                return q, it - 1, res_norm, J, slope
-            J = self._jacobian_real(L, c, s)
+        theta2 = float(theta2)
+        q, it, res, reason, slope = self.newton1(q0, theta2, tol)
+        if reason != CONVERGED:
+            raise no_convergence(theta2, res, it, reason)
+        q = np.array(q)
+        J = self.evaluate(q[None], np.array([theta2]))[1][0]
+        slope = np.full(len(q), np.nan) if slope is None else np.array(slope)
+        return q, it, res, J, slope
+
+
+def _gauss(A, nu):
+    """Solve the square system in the augmented rows A (n x (nu + 2): J, then two
+    right-hand sides) by Gaussian elimination with partial pivoting, in place.
+
+    Returns the solution rows [[x_rhs1, x_rhs2], ...] or None when singular.
+    """
+    n = len(A)
+    for k in range(nu):
+        p = max(range(k, n), key=lambda r: abs(A[r][k]))
+        if A[p][k] == 0.0:
+            return None
+        if p != k:
+            A[k], A[p] = A[p], A[k]
+        rk = A[k]
+        inv = 1.0 / rk[k]
+        for r in range(k + 1, n):
+            row = A[r]
+            f = row[k] * inv
+            if f != 0.0:
+                for j in range(k + 1, nu + 2):
+                    row[j] -= f * rk[j]
+    x = [[0.0, 0.0] for _ in range(nu)]
+    for k in range(nu - 1, -1, -1):
+        rk = A[k]
+        a, b = rk[nu], rk[nu + 1]
+        for j in range(k + 1, nu):
+            a -= rk[j] * x[j][0]
+            b -= rk[j] * x[j][1]
+        x[k][0], x[k][1] = a / rk[k], b / rk[k]
+    return x
+
+
+def _solve_stack(J, rhs):
+    """Solve M small systems; a singular one gives NaN and a True in ``bad``."""
+    bad = np.zeros(J.shape[0], dtype=bool)
+    try:
+        sol = np.linalg.solve(J, rhs)
+    except np.linalg.LinAlgError:
+        sol = np.full(rhs.shape[:1] + (J.shape[2], rhs.shape[2]), np.nan)
+        for i in range(J.shape[0]):
             try:
-                dq = np.linalg.solve(J, -F)
+                sol[i] = np.linalg.solve(J[i], rhs[i])
             except np.linalg.LinAlgError:
-                raise NoConvergence(
-                    f"Newton-Raphson hit a singular Jacobian at theta2 = "
-                    f"{np.degrees(theta2):.6g} deg (loop residual {res_norm:.3e} m): the guesses "
-                    f"sit at a singular configuration; move them.", residual=res_norm,
-                    iterations=it) from None
-            size = float(np.max(np.abs(dq) / scale))
-            big = np.abs(dq) > limit
-            if big.any():  # damp: never leap to another assembly in one step
-                dq *= np.min(limit[big] / np.abs(dq[big]))
-                size = np.inf
-            q += dq
-        raise NoConvergence(
-            f"Newton-Raphson did not close the loops at theta2 = {np.degrees(theta2):.6g} deg "
-            f"after {MAX_ITERATIONS} iterations (loop residual {res_norm:.3e} m): the linkage "
-            f"cannot be assembled there, or the guesses are too far from an assembly. Check "
-            f"the lengths, or give guesses closer to the intended assembly.",
-            residual=res_norm, iterations=MAX_ITERATIONS)
+                bad[i] = True
+    nonfinite = ~np.isfinite(sol).all(axis=(1, 2))
+    return sol, bad | nonfinite
+
+
+def no_convergence(theta2, residual, iterations, reason):
+    """The NoConvergence error for one position that Newton-Raphson did not close."""
+    residual, iterations = float(residual), int(iterations)
+    if reason == SINGULAR_STEP:
+        return NoConvergence(
+            f"Newton-Raphson hit a singular Jacobian at theta2 = {np.degrees(theta2):.6g} deg "
+            f"(loop residual {residual:.3e} m): the guesses sit at a singular configuration; "
+            f"move them.", residual=residual, iterations=iterations)
+    return NoConvergence(
+        f"Newton-Raphson did not close the loops at theta2 = {np.degrees(theta2):.6g} deg "
+        f"after {iterations} iterations (loop residual {residual:.3e} m): the linkage cannot "
+        f"be assembled there, or the guesses are too far from an assembly. Check the lengths, "
+        f"or give guesses closer to the intended assembly.",
+        residual=residual, iterations=iterations)
 
 
 def condition(J, model):

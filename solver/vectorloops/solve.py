@@ -6,12 +6,17 @@ from ..kernels import Motion, OK, SINGULAR, SINGULAR_CONDITION
 from ..errors import Singular
 from .derivatives import point_motion, solve_derivatives
 from .description import read_description
-from .newton import LoopSystem, condition
+from .newton import DEFAULT_TOL, LoopSystem, check_tol, condition
 from .sweep import singular_message, solve_sweep
 
 
-def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3):
+def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TOL, batch=True):
     """Solve a :class:`LoopSystem` at an array of input angles (a sweep).
+
+    ``tol`` is Newton-Raphson's convergence tolerance: the loop residual
+    relative to the longest link (default 1e-13; see :meth:`LoopSystem.newton`).
+    ``batch=False`` walks the sweep position by position instead of solving
+    the positions between a coarse chain together (same results; slower).
 
     Returns a Motion with ``q`` (N, n_unknowns), per-vector ``L``, ``theta``,
     ``dL``/``dth`` (lists of derivative arrays), point motions ``points``
@@ -21,7 +26,8 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3):
     theta2 = np.atleast_1d(np.asarray(theta2, dtype=float))
     N = len(theta2)
     inputs = [np.broadcast_to(np.asarray(x, dtype=float), (N,)) for x in (omega2, alpha2, jerk2)]
-    q, status, iterations, message = solve_sweep(system, theta2, system.model.guess)
+    tol = check_tol(tol)
+    q, status, iterations, message = solve_sweep(system, theta2, system.model.guess, tol, batch)
     ok = status == OK
     nv = len(system.fixed_length)
     out = Motion(q=q, status=status, iterations=iterations, message=message,

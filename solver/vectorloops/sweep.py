@@ -5,82 +5,381 @@ solution advanced by the velocity solution (dq/dtheta2 times the step). A
 converged solution far from that prediction means Newton-Raphson crossed to
 another assembly; the step is then subdivided, and a position still reached
 only by a jump is reported ``singular`` rather than returned.
+
+To be fast the sweep does this sequential continuation only on a coarse
+subset of the positions (steps of up to :data:`COARSE_STEP` in theta2, where
+the input array is monotonic), then solves every position in between in one
+batched Newton-Raphson (numpy over positions) from cubic Hermite
+interpolation of the coarse solutions and their slopes dq/dtheta2. Each
+batched position must converge close to its interpolated guess; an interval
+where one does not (a toggle nearby, a non-assemblable stretch, another
+assembly within reach) is walked again position by position, and if that walk
+disagrees with the coarse chain the sweep restarts from there. Results are
+the same as the position-by-position walk to round-off (``batch=False``
+gives that walk).
+
+After a stretch that cannot be assembled, the first position that closes
+again is accepted only if a continuation walk from the nearest solved
+position (nearest in theta2, modulo a turn of the crank when the input
+drives only whole gear ratios) reaches it on the followed assembly;
+otherwise it is reported ``not_assemblable`` on this assembly, with a message.
 """
+
+import math
 
 import numpy as np
 
-from ..errors import NoConvergence, Singular
+from ..errors import NotAssemblable, Singular
 from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR, SINGULAR_CONDITION
+from .newton import CONVERGED, DEFAULT_TOL, no_convergence
 
 JUMP_TOLERANCE = 0.05   # [rad or length scale] beyond the predicted change
 SUBSTEPS = 8
-
-
-def _jumped(system, q, pred, change):
-    return np.max(np.abs(q - pred) / system.scale) > JUMP_TOLERANCE + 0.5 * change
-
-
-def solve_sweep(system, theta2, q0):
-    """Positions along ``theta2`` (1-D array [rad]) from the guesses ``q0``.
-
-    Returns ``(q, status, iterations, message)``: q (N, n_unknowns) with NaN
-    where not valid, int8 status per position (0 ok, 1 not assemblable,
-    2 only reachable by a branch jump), Newton iterations per position, and
-    the first error message met (or None). Singular Jacobians at converged
-    positions are flagged afterwards, on the whole stack at once.
-    """
-    N = len(theta2)
-    nu = system.n_unknowns
-    q = np.full((N, nu), np.nan)
-    status = np.full(N, OK, dtype=np.int8)
-    iterations = np.zeros(N, dtype=int)
-    message = None
-    q_prev, t_prev, slope = np.asarray(q0, dtype=float), None, None
-    for i in range(N):
-        t = float(theta2[i])
-        try:
-            if slope is None:
-                qi, it, _, J, new_slope = system.solve_position(q_prev, t)
-            else:
-                pred = q_prev + slope * (t - t_prev)
-                change = float(np.max(np.abs(slope * (t - t_prev)) / system.scale))
-                qi, it, _, J, new_slope = system.solve_position(pred, t)
-                if _jumped(system, qi, pred, change):
-                    qi, it, J, new_slope = _subdivide(system, q_prev, t_prev, slope, t)
-        except NoConvergence as exc:
-            status[i] = NOT_ASSEMBLABLE
-            message = message or exc
-            continue
-        except _BranchJump as exc:
-            status[i] = SINGULAR
-            message = message or exc
-            continue
-        iterations[i] = it
-        q[i] = qi
-        q_prev, t_prev, slope = qi, t, new_slope
-    return q, status, iterations, message
+COARSE_STEP = 0.25      # [rad] largest theta2 step between sequentially solved positions
+MAX_STRIDE = 32         # most positions between two sequentially solved ones
+MIN_STRIDE = 4          # below this, walk position by position
+GAP_CHUNK = 16          # positions tried together while the loops do not close
+WALK_STEP = 0.05        # [rad] continuation step when rejoining the assembly after a gap
+MIN_WALK_STEP = 1e-6    # [rad] smallest step of that walk before it gives up
+MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
 
 
 class _BranchJump(Singular):
     """Newton-Raphson reached closure only on another assembly."""
 
 
-def _subdivide(system, q_prev, t_prev, slope, t):
-    """Walk from t_prev to t in small steps; raise _BranchJump if it still jumps."""
-    total = 0
-    for k in range(1, SUBSTEPS + 1):
-        tk = t_prev + (t - t_prev) * k / SUBSTEPS
-        pred = q_prev + slope * (tk - t_prev)
-        change = float(np.max(np.abs(slope * (tk - t_prev)) / system.scale))
-        qk, it, _, J, new_slope = system.solve_position(pred, tk)
-        total += it
-        if _jumped(system, qk, pred, change):
-            raise _BranchJump(
-                f"near theta2 = {np.degrees(tk):.6g} deg Newton-Raphson reaches the loops' "
-                f"closure only on another assembly: the linkage passes a limit (toggle) "
-                f"position there. Sweep a range that avoids it.")
-        q_prev, t_prev, slope = qk, tk, new_slope
-    return q_prev, total, J, slope
+class _Sweep:
+    """The state of one sweep: results so far and the continuation state."""
+
+    def __init__(self, system, theta2, q0, tol):
+        self.system, self.theta2, self.tol = system, theta2, tol
+        N, nu = len(theta2), system.n_unknowns
+        self.q = np.full((N, nu), np.nan)
+        self.slope = np.full((N, nu), np.nan)     # at sequentially solved positions
+        self.status = np.full(N, OK, dtype=np.int8)
+        self.iterations = np.zeros(N, dtype=int)
+        self.sequential = np.zeros(N, dtype=bool)  # solved by continuation (anchors)
+        self.errors = {}
+        self.guess = np.asarray(q0, dtype=float)
+        self.last = None        # index of the last position solved by continuation
+        self.gap = False        # a position failed since self.last
+        self.walk_failed = {}   # (anchor, direction) -> distance a rejoining walk failed at
+        self.failures = 0       # consecutive failed positions
+        self.scale = system.scale
+
+    # --- bookkeeping --------------------------------------------------------
+    def accept(self, i, q, it, slope):
+        self.q[i], self.iterations[i], self.status[i] = q, it, OK
+        self.slope[i] = np.nan if slope is None else slope
+        self.sequential[i] = True
+        self.last, self.gap = i, False
+        self.failures = 0
+
+    def fail(self, i, status, exc):
+        self.status[i] = status
+        self.q[i] = np.nan
+        self.errors[i] = exc
+        self.failures += 1
+        if self.last is not None:
+            self.gap = True
+
+    def message(self):
+        bad = [i for i in self.errors if self.status[i] != OK]
+        return self.errors[min(bad)] if bad else None
+
+    def jumped(self, q, pred, change):
+        return np.max(np.abs(q - pred) / self.scale) > JUMP_TOLERANCE + 0.5 * change
+
+    def predict(self, t):
+        """Continuation predictor from the last solved position: (guess, change)."""
+        if self.last is None:
+            return self.guess, None
+        q, slope = self.q[self.last], self.slope[self.last]
+        if not np.isfinite(slope).all():
+            return q, None
+        dq = slope * (t - self.theta2[self.last])
+        return q + dq, float(np.max(np.abs(dq) / self.scale))
+
+    # --- one position by continuation ----------------------------------------
+    def step(self, i, result=None):
+        """Solve position i from the continuation state (or post-process the
+        Newton ``result`` already computed from that same prediction)."""
+        t = float(self.theta2[i])
+        pred, change = self.predict(t)
+        if result is None:
+            result = self.system.newton1(pred, t, self.tol)
+        q, it, res, reason, slope = result
+        if reason != CONVERGED:
+            self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res, it, reason))
+            return False
+        if change is not None and self.jumped(np.asarray(q), pred, change):
+            try:
+                q, it, slope = self.subdivide(t)
+            except _BranchJump as exc:
+                self.fail(i, SINGULAR, exc)
+                return False
+        if self.gap:
+            ok, q, slope = self.rejoin(i, np.asarray(q), slope)
+            if not ok:
+                return False
+        self.accept(i, q, it, slope)
+        return True
+
+    def subdivide(self, t):
+        """Walk from the last solved position to t in small steps; raise
+        _BranchJump if it still jumps."""
+        q_prev = self.q[self.last]
+        t_prev = float(self.theta2[self.last])
+        slope = self.slope[self.last]
+        total = 0
+        for k in range(1, SUBSTEPS + 1):
+            tk = t_prev + (t - t_prev) * k / SUBSTEPS
+            h = tk - (t_prev + (t - t_prev) * (k - 1) / SUBSTEPS)
+            pred = q_prev + slope * h
+            change = float(np.max(np.abs(slope * h) / self.scale))
+            qk, it, res, reason, new_slope = self.system.newton1(pred, tk, self.tol)
+            total += it
+            if reason != CONVERGED or new_slope is None or self.jumped(np.asarray(qk), pred,
+                                                                         change):
+                raise _BranchJump(
+                    f"near theta2 = {np.degrees(tk):.6g} deg Newton-Raphson reaches the loops' "
+                    f"closure only on another assembly: the linkage passes a limit (toggle) "
+                    f"position there. Sweep a range that avoids it.")
+            q_prev, slope = np.asarray(qk), np.asarray(new_slope)
+        return q_prev, total, slope
+
+    # --- after a stretch that cannot be assembled ------------------------------
+    def rejoin(self, i, q_try, slope_try):
+        """Is the solution found at i, after a gap, on the followed assembly?
+
+        Walk by continuation from the nearest solved position to theta2[i]; the
+        walk defines the assembly. Returns ``(ok, q, slope)``.
+        """
+        t = float(self.theta2[i])
+        anchors = np.flatnonzero(self.sequential[:i] & (self.status[:i] == OK))
+        d = t - self.theta2[anchors]
+        period = self.system.period
+        if period:
+            d = np.remainder(d + period / 2, period) - period / 2
+        j = int(np.argmin(np.abs(d)))
+        a, dist = int(anchors[j]), float(d[j])
+        key = (a, dist > 0)
+        if key in self.walk_failed and abs(dist) >= self.walk_failed[key]:
+            reached = None
+        else:
+            reached = self.walk(a, dist)
+            if reached is None:
+                self.walk_failed[key] = abs(dist)
+        if reached is None:
+            self.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
+                f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range "
+                f"where they cannot, but not on the assembly this sweep follows: no continuous "
+                f"path from the solved position at theta2 = "
+                f"{np.degrees(self.theta2[a]):.6g} deg reaches it. Solve this range on its "
+                f"own, with guesses for the assembly you want."))
+            return False, None, None
+        q_w, slope_w = reached
+        if period and dist != t - self.theta2[a]:   # same configuration, one turn away
+            q_w, _, _, reason, slope_w = self.system.newton1(q_w, t, self.tol)
+            if reason != CONVERGED:
+                self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, 0.0, 0, reason))
+                return False, None, None
+            q_w = np.asarray(q_w)
+        if np.max(np.abs(q_w - q_try) / self.scale) <= MATCH_TOLERANCE:
+            return True, q_try, slope_try
+        return True, q_w, slope_w
+
+    def walk(self, a, dist):
+        """Continuation from solved position a over ``dist`` [rad] of theta2, in
+        steps of at most WALK_STEP, halved where a step jumps or fails.
+        Returns (q, slope) at theta2[a] + dist, or None."""
+        q = self.q[a]
+        slope = self.slope[a]
+        t = float(self.theta2[a])
+        target = t + dist
+        h = math.copysign(min(WALK_STEP, abs(dist)), dist)
+        while abs(target - t) > 0.0:
+            if not np.isfinite(slope).all():
+                return None
+            h = math.copysign(min(abs(h), abs(target - t)), dist)
+            pred = q + slope * h
+            change = float(np.max(np.abs(slope * h) / self.scale))
+            qk, _, _, reason, sk = self.system.newton1(pred, t + h, self.tol)
+            if reason == CONVERGED and sk is not None and not self.jumped(np.asarray(qk), pred,
+                                                                          change):
+                q, slope, t = np.asarray(qk), np.asarray(sk), t + h
+                h *= 2.0
+                continue
+            h /= 2.0
+            if abs(h) < MIN_WALK_STEP:
+                return None
+        return q, slope
+
+    def scan_gap(self, i, stop):
+        """Positions i..stop-1 while the loops do not close: every one starts from
+        the same prediction, so Newton-Raphson runs on them together. Processes
+        positions until one is accepted; returns the next index."""
+        idx = np.arange(i, stop)
+        t = self.theta2[idx]
+        if self.last is None or not np.isfinite(self.slope[self.last]).all():
+            q0 = np.broadcast_to(self.guess if self.last is None else self.q[self.last],
+                                 (len(idx), self.system.n_unknowns))
+        else:
+            q0 = self.q[self.last] + self.slope[self.last] * (t - self.theta2[self.last])[:, None]
+        q, it, res, reason, slope = self.system.newton(q0, t, self.tol)
+        for k, n in enumerate(idx):
+            result = (q[k], int(it[k]), float(res[k]), reason[k],
+                      slope[k] if reason[k] == CONVERGED else None)
+            if self.step(n, result):
+                return n + 1
+        return stop
+
+    # --- the coarse chain and the batched positions between ----------------------
+    def coarse_end(self, a):
+        """Index b of the next sequentially solved position after a: theta2 monotonic
+        on [a, b], |theta2[b] - theta2[a]| <= COARSE_STEP, b - a <= MAX_STRIDE."""
+        t = self.theta2
+        w = t[a:a + MAX_STRIDE + 1]
+        if len(w) < 2:
+            return a + 1
+        d = np.diff(w)
+        sign = np.sign(d[0])
+        if sign == 0:
+            return a + 1
+        steps = d * sign
+        run = len(steps) if (steps > 0).all() else int(np.argmin(steps > 0))
+        dist = (w[1:run + 1] - w[0]) * sign
+        n = int(np.searchsorted(dist, COARSE_STEP, side="right"))
+        return a + max(n, 1)
+
+    def coarse_step(self, a, b):
+        """Continuation from a straight to b; accepted only without a jump and with
+        slopes at both ends consistent with the chord (a smooth branch)."""
+        t = float(self.theta2[b])
+        pred, change = self.predict(t)
+        q, it, res, reason, slope = self.system.newton1(pred, t, self.tol)
+        if reason != CONVERGED or slope is None:
+            return False
+        q, slope = np.asarray(q), np.asarray(slope)
+        if self.jumped(q, pred, change):
+            return False
+        h = t - float(self.theta2[a])
+        trapezoid = q - self.q[a] - 0.5 * h * (self.slope[a] + slope)
+        if np.max(np.abs(trapezoid) / self.scale) > JUMP_TOLERANCE:
+            return False
+        self.accept(b, q, it, slope)
+        return True
+
+    def batch(self, intervals):
+        """Solve the interior positions of the coarse ``intervals`` [(a, b), ...]
+        together. Returns the intervals where some position failed its check."""
+        if not intervals:
+            return []
+        A = np.array([a for a, b in intervals])
+        Bn = np.array([b for a, b in intervals])
+        counts = Bn - A - 1
+        owner = np.repeat(np.arange(len(intervals)), counts)
+        idx = np.concatenate([np.arange(a + 1, b) for a, b in intervals])
+        a, b = A[owner], Bn[owner]
+        th = self.theta2
+        h = (th[b] - th[a])[:, None]
+        s = ((th[idx] - th[a]) / (th[b] - th[a]))[:, None]
+        s2, s3 = s * s, s * s * s
+        qa, qb, sa, sb = self.q[a], self.q[b], self.slope[a] * h, self.slope[b] * h
+        guess = ((2 * s3 - 3 * s2 + 1) * qa + (s3 - 2 * s2 + s) * sa
+                 + (3 * s2 - 2 * s3) * qb + (s3 - s2) * sb)
+        rate = ((6 * s2 - 6 * s) * qa + (3 * s2 - 4 * s + 1) * sa
+                + (6 * s - 6 * s2) * qb + (3 * s2 - 2 * s) * sb) / h
+        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol)
+        dt = np.abs(th[idx] - th[idx - 1])[:, None]
+        change = np.max(np.abs(rate * dt) / self.scale, axis=1)
+        off = np.max(np.abs(q - guess) / self.scale, axis=1)
+        good = (reason == CONVERGED) & (off <= JUMP_TOLERANCE + 0.5 * change)
+        self.q[idx], self.iterations[idx] = q, it
+        bad = np.unique(owner[~good])
+        return [intervals[k] for k in bad]
+
+    def reset_after(self, b):
+        """Forget everything solved after position b (the chain is restarted there)."""
+        self.q[b + 1:] = np.nan
+        self.slope[b + 1:] = np.nan
+        self.status[b + 1:] = OK
+        self.iterations[b + 1:] = 0
+        self.sequential[b + 1:] = False
+        self.errors = {i: e for i, e in self.errors.items() if i <= b}
+        self.walk_failed = {k: v for k, v in self.walk_failed.items() if k[0] <= b}
+
+    def advance(self, i, stop):
+        """Solve position i by continuation; while the loops do not close (the
+        position before failed) try a chunk of positions at once. Returns the
+        next index."""
+        if self.failures and (self.last is None or self.gap):
+            chunk = max(GAP_CHUNK, min(self.failures, 256))
+            return self.scan_gap(i, min(stop, i + chunk))
+        self.step(i)
+        return i + 1
+
+    def walk_dense(self, start, stop):
+        """Position by position from start to stop - 1 (no coarse steps)."""
+        i = start
+        while i < stop:
+            i = self.advance(i, stop)
+
+    def run(self, batch=True):
+        N = len(self.theta2)
+        start = 0
+        while start < N:
+            intervals = []
+            i = start
+            dense_until = -1
+            while i < N:
+                if (batch and i > dense_until and self.last == i - 1 and not self.gap
+                        and np.isfinite(self.slope[i - 1]).all()):
+                    b = self.coarse_end(i - 1)
+                    if b - (i - 1) >= MIN_STRIDE:
+                        if self.coarse_step(i - 1, b):
+                            intervals.append((i - 1, b))
+                            i = b + 1
+                            continue
+                        dense_until = b
+                i = self.advance(i, N)
+            start = N
+            for a, b in self.batch(intervals):
+                # walk this interval again position by position from a
+                q_b, slope_b, it_b = self.q[b].copy(), self.slope[b].copy(), self.iterations[b]
+                self.last, self.gap, self.failures = a, False, 0
+                self.walk_dense(a + 1, b + 1)
+                if (self.status[b] == OK and self.last == b
+                        and np.max(np.abs(self.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE):
+                    self.q[b], self.slope[b], self.iterations[b] = q_b, slope_b, it_b
+                    continue
+                # the walk reached b differently: the chain after b is void
+                self.reset_after(b)
+                start = b + 1
+                break
+        return self.q, self.status, self.iterations, self.message()
+
+
+def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
+    """Positions along ``theta2`` (1-D array [rad]) from the guesses ``q0``.
+
+    Parameters
+    ----------
+    tol : float
+        Newton-Raphson's convergence tolerance (loop residual relative to the
+        length scale; see :meth:`LoopSystem.newton`).
+    batch : bool
+        Solve the positions between a coarse sequential chain together
+        (default); False walks position by position (the reference path).
+
+    Returns ``(q, status, iterations, message)``: q (N, n_unknowns) with NaN
+    where not valid, int8 status per position (0 ok, 1 not assemblable,
+    2 only reachable by a branch jump), Newton iterations per position, and
+    the error of the first failed position (or None). Singular Jacobians at
+    converged positions are flagged afterwards, on the whole stack at once.
+    """
+    theta2 = np.asarray(theta2, dtype=float)
+    return _Sweep(system, theta2, q0, tol).run(batch)
 
 
 def singular_message(theta2, cond):
