@@ -1,0 +1,352 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 4. The slider-crank and the engine
+#
+# The slider-crank turns rotation into straight-line motion, and its best known member is
+# the piston engine. The chapter makes a striking claim: the pistons of a small car engine
+# accelerate at about 40 g at idle and about 2000 g at 6000 rpm. In this notebook we derive the
+# slider-crank's accelerations and then check that claim ourselves, from an engine geometry
+# we make up but could find in a catalogue.
+#
+# **You will be able to**
+#
+# - differentiate the slider-crank's vector loop and solve it for $\alpha_3$ and the slider's
+#   acceleration $\ddot d$;
+# - explain why the slider's acceleration has no normal component, and what the chapter's
+#   label $\mathbf{A}_{BA}$ in eq. 7.15 really is;
+# - estimate a piston's acceleration from bore, stroke, rod length and speed, in m/s$^2$,
+#   ft/s$^2$ and g, and say how it scales with speed and rod length;
+# - recognise slider-cranks that cannot be assembled.
+
+# %%
+import math
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import COLORS, cartesian, explore, in_g, polar, use_style
+from solver import NotAssemblable, Q_, SliderCrank, Singular
+from solver.graphical import construct_case
+from solver.graphical.draw import draw_linkage, draw_polygon
+from solver.graphical.gallery import SLIDER_CRANK
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# With the slide along the $x$ axis ($\theta_1 = 0$), a crank $a$, a connecting rod $b$ and a
+# slider offset $c$ (perpendicular to the slide, $\theta_4 = 90^\circ$) close the loop
+#
+# $$ a e^{j\theta_2} - b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_1} = 0 \tag{4.14} $$
+#
+# Here $b e^{j\theta_3}$ points from the slider pin $B$ back to the crank pin $A$, and the
+# slider's position $d$ is the one length that changes. Differentiating twice ($a$, $b$, $c$,
+# $\theta_1$, $\theta_4$ constant):
+#
+# $$ \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
+#  - \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) - \ddot d = 0
+#    \tag{7.14} $$
+#
+# The first bracket is $\mathbf{A}_A$. The second is the acceleration of $A$ turning about $B$
+# with the rod, $\mathbf{A}_{AB}$ (the vector $b e^{j\theta_3}$ points from $B$ to $A$), and the
+# last term is the slider's acceleration $\mathbf{A}_B = \ddot d$, which lies along the slide:
+# a block in pure translation has no normal component. So eq. 7.14 is eq. 7.4 once more,
+#
+# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}, \qquad \mathbf{A}_{BA} = -\mathbf{A}_{AB}
+#    \tag{7.15} $$
+#
+# (The chapter labels the second bracket $\mathbf{A}_{BA}$ in eq. 7.15b; by eq. 7.4's own
+# definition it is $\mathbf{A}_{AB}$, the same vector reversed. This course follows eq. 7.4.)
+#
+# The imaginary part of eq. 7.14 has one unknown, $\alpha_3$; the real part then gives
+# $\ddot d$:
+#
+# $$ \alpha_3 = \frac{a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 + b\omega_3^2\sin\theta_3}
+#    {b\cos\theta_3} \tag{7.16d} $$
+#
+# $$ \ddot d = -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 + b\alpha_3\sin\theta_3
+#    + b\omega_3^2\cos\theta_3 \tag{7.16e} $$
+#
+# The denominator $b\cos\theta_3$ vanishes when the rod stands perpendicular to the slide,
+# which only a rod no longer than crank plus offset can reach. Checked against the solver,
+# at the slider-crank `solver.graphical` also draws (40 mm crank, 120 mm rod, 10 mm offset):
+
+# %%
+sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")
+r = sc.solve(theta2="60 deg", omega2="30 rad/s", alpha2="-200 rad/s^2")
+
+a, b = 0.040, 0.120                                 # m
+t2, w2, al2 = math.radians(60), 30.0, -200.0
+t3, w3 = r.theta3.to("rad").magnitude, r.omega3.to("rad/s").magnitude
+alpha3 = (a * al2 * math.cos(t2) - a * w2**2 * math.sin(t2)
+          + b * w3**2 * math.sin(t3)) / (b * math.cos(t3))                   # eq. 7.16d
+d_ddot = (-a * al2 * math.sin(t2) - a * w2**2 * math.cos(t2)
+          + b * alpha3 * math.sin(t3) + b * w3**2 * math.cos(t3))            # eq. 7.16e
+assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
+assert math.isclose(d_ddot, r.d_ddot.to("m/s^2").magnitude, rel_tol=1e-12)
+
+# the chapter's second bracket is A_AB = -A_BA, and A_B = A_A + A_BA (eq. 7.4)
+bracket = (b * alpha3 * 1j - b * w3**2) * np.exp(1j * t3)
+assert np.isclose(bracket, -r.A_BA.to("m/s^2").magnitude)
+assert np.isclose(r.A_B.to("m/s^2").magnitude, (r.A_A + r.A_BA).to("m/s^2").magnitude)
+
+print(f"theta3 = {r.theta3.to('deg'):.4f~P}, omega3 = {r.omega3:.4f~P}, alpha3 = {r.alpha3:.4f~P}")
+print(f"d = {r.d.to('mm'):.3f~P}, d_dot = {r.d_dot:.4f~P}, d_ddot = {r.d_ddot:.4f~P}")
+print("A_A  =", cartesian(r.A_A, "m/s^2"), "=", polar(r.A_A, "m/s^2"))
+print("A_BA =", cartesian(r.A_BA, "m/s^2"), "=", polar(r.A_BA, "m/s^2"))
+print("A_B  =", cartesian(r.A_B, "m/s^2"), " (along the slide only)")
+
+# %% [markdown]
+# ## Worked example 1: one position, drawn and computed
+#
+# The graphical construction of the same position solves eq. 7.15 with a polygon: $\mathbf{A}_A$
+# is known, $\mathbf{A}^n_{BA} = b\omega_3^2$ is known, $\mathbf{A}^t_{BA}$ has a known direction
+# (perpendicular to the rod) and $\mathbf{A}_B$ a known direction (along the slide). Two lines,
+# one crossing: the same recipe as the fourbar, with the slide in the place of the rocker.
+
+# %%
+con = construct_case(SLIDER_CRANK)
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), width_ratios=[1.2, 1])
+draw_linkage(con, ax=ax1)
+draw_polygon(con, "acceleration", ax=ax2)
+plt.show()
+print(f"graphical: alpha3 = {con.values['alpha3']:.6f} rad/s^2, A_B = "
+      f"{con.values['A_B'].real:.6f} m/s^2 along x")
+assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-9)
+
+# %% [markdown]
+# The same slider acceleration in US units, as a drawing in inches ($a = 1.575$ in,
+# $b = 4.724$ in) would carry it; pint converts:
+
+# %%
+print(f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
+      f" = {in_g(r.d_ddot):.3f} g")
+
+# %% [markdown]
+# ## Worked example 2: how hard does a piston accelerate?
+#
+# The chapter: *the piston of a small four-cylinder economy car engine (about 1.5 L) is at
+# about 40 g at idle, as much as 700 g at highway speeds, and about 2000 g at its top speed
+# of 6000 rpm.* Let us check.
+#
+# **A plausible engine.** Four cylinders of bore 77 mm and stroke 80 mm give
+# $4 \times \frac{\pi}{4}(77\ \text{mm})^2 \times 80\ \text{mm} = 1.49$ L. The crank radius is
+# half the stroke, $a = 40$ mm. Connecting rods of such engines are about 3 to 3.5 crank
+# radii long; take $b = 130$ mm. No offset ($c = 0$): the cylinder axis passes through the
+# crank axis. The crank turns at constant speed ($\alpha_2 = 0$); the piston is at top dead
+# centre (TDC, farthest from the crank) when $\theta_2 = 0$.
+
+# %%
+bore, stroke, rod = Q_(77, "mm"), Q_(80, "mm"), Q_(130, "mm")
+displacement = (4 * math.pi / 4 * bore**2 * stroke).to("L")
+engine = SliderCrank(a=stroke / 2, b=rod)
+print(f"displacement {displacement.magnitude:.3f} L, crank radius a = {stroke / 2:~P}, "
+      f"rod/crank ratio b/a = {(rod / (stroke / 2)).to(''):.2f~P}")
+
+theta2 = Q_(np.linspace(0, 360, 721), "deg")
+speeds = {"idle": Q_(800, "rpm"), "highway": Q_(3500, "rpm"), "top speed": Q_(6000, "rpm")}
+peaks = {}
+for name, n in speeds.items():
+    piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
+    peak = np.max(np.abs(piston))
+    peaks[name] = peak
+    print(f"{name:10s} {n:5.0f~P}: peak |d_ddot| = {peak.to('m/s^2'):8.0f~P}"
+          f" = {peak.to('ft/s^2'):7.0f~P} = {in_g(peak):5.0f} g")
+
+# %% [markdown]
+# About 37 g at 800 rpm, 720 g at 3500 rpm, 2100 g at 6000 rpm: the chapter's figures,
+# from nothing but the geometry. Why so large? At 6000 rpm the crank turns 100 times a
+# second, $\omega_2 = 628$ rad/s, and the crank pin alone already has $a\omega_2^2 =
+# 0.04 \times 628^2 \approx 15\,800$ m/s$^2$, some 1600 g.
+#
+# The peak is at TDC and is *larger* than $a\omega_2^2$: there the rod adds its own
+# centripetal term. With no offset, at $\theta_2 = 0$ the exact value is
+# $\ddot d = -a\omega_2^2(1 + a/b)$, pointing back toward the crank:
+
+# %%
+top = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
+w = Q_(6000, "rpm").to("rad/s")
+by_hand = -(stroke / 2) * w**2 * (1 + (stroke / 2) / rod)
+assert math.isclose(top.d_ddot.to("m/s^2").magnitude, by_hand.to("m/s^2").magnitude,
+                    rel_tol=1e-12)
+print(f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
+      f"= a w^2 (1 + a/b) with a w^2 = {((stroke / 2) * w**2).to('m/s^2'):.1f~P}")
+
+# %% [markdown]
+# Over a revolution, in g at the three speeds. Every curve is the same shape scaled by
+# $\omega_2^2$; the right-hand plot divides it out.
+
+# %%
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.3))
+colours = ["#56B4E9", "#E69F00", "#D55E00"]
+for (name, n), col in zip(speeds.items(), colours):
+    piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
+    g_level = in_g(piston)
+    ax1.plot(theta2.magnitude, g_level, color=col, label=f"{name}, {n:.0f~P}")
+    w = n.to("rad/s").magnitude
+    ax2.plot(theta2.magnitude, piston.to("m/s^2").magnitude / (0.040 * w**2), color=col,
+             lw=4 - 1.2 * colours.index(col))
+ax1.set_ylabel("piston acceleration $\\ddot d$ [g]")
+ax2.set_ylabel("$\\ddot d \\,/\\, a\\omega_2^2$")
+ax2.axhline(-1.0, color="#888888", ls=":")
+ax2.text(180, -0.93, "crank pin alone, $-a\\omega_2^2$", ha="center", fontsize=9,
+         color="#555555")
+ax2.set_title("the same curve at every speed")
+ax1.set_title("1.49 L engine: bore 77, stroke 80, rod 130 mm")
+for ax in (ax1, ax2):
+    ax.set_xlabel("crank angle $\\theta_2$ [deg] (0 = top dead centre)")
+    ax.set_xticks(range(0, 361, 90))
+ax1.legend(loc="lower center", fontsize=9)
+plt.show()
+
+# %% [markdown]
+# The acceleration is most negative at TDC (the piston is being pulled back toward the crank
+# as it reverses) and positive, but smaller and flatter, around bottom dead centre. The
+# asymmetry is the rod's doing: a very long rod would make the piston move like the shadow
+# of the crank pin, $\ddot d = -a\omega_2^2\cos\theta_2$, symmetric about BDC.
+#
+# **How sure is "about 2000 g"?** The answer depends on the stroke and rod we assumed. A
+# sweep over plausible 1.5 L geometries:
+
+# %%
+print(f"{'stroke':>8s}{'bore':>8s}{'rod':>8s}{'b/a':>6s}{'idle 800':>10s}{'6000 rpm':>10s}")
+for stroke_mm in (72, 80, 88):
+    bore_mm = math.sqrt(1.5e6 / 4 / (math.pi / 4) / stroke_mm)      # keep 1.5 L
+    for ratio in (3.0, 3.5):
+        rod_mm = ratio * stroke_mm / 2
+        eng = SliderCrank(a=Q_(stroke_mm / 2, "mm"), b=Q_(rod_mm, "mm"))
+        g_idle = in_g(eng.solve(theta2="0 deg", omega2="800 rpm", order=2).d_ddot)
+        g_top = in_g(eng.solve(theta2="0 deg", omega2="6000 rpm", order=2).d_ddot)
+        print(f"{stroke_mm:6.0f}mm{bore_mm:6.1f}mm{rod_mm:6.0f}mm{ratio:6.1f}"
+              f"{abs(g_idle):8.0f} g{abs(g_top):8.0f} g")
+
+# %% [markdown]
+# From about 1860 to 2360 g at 6000 rpm, and 33 to 42 g at 800 rpm: the claim holds for any
+# reasonable small engine. Newton's law then says what it costs: a 0.3 kg piston at 2100 g
+# needs $F = m\,\ddot d \approx 0.3 \times 20\,600 \approx 6$ kN from its rod, reversing 100
+# times a second. That is why pistons are made of aluminium alloys and rods are forged.
+
+# %% [markdown]
+# ### A slider-crank that cannot be assembled
+#
+# If the rod is shorter than the crank ($b < a$), the rod cannot reach the slide line at
+# crank angles where the crank pin is more than $b$ away from it: $|a\sin\theta_2 - c| \le b$
+# is needed. At the edge, the rod stands perpendicular to the slide and eq. 7.16d divides by
+# $\cos\theta_3 = 0$.
+
+# %%
+short = SliderCrank(a="50 mm", b="40 mm")
+sweep = short.solve(theta2=theta2, omega2="10 rad/s", order=2)
+print(f"assembles at {sweep.valid.sum()} of {sweep.valid.size} crank angles")
+try:
+    short.solve(theta2="90 deg", omega2="10 rad/s")
+except (NotAssemblable, Singular) as exc:
+    print(f"{type(exc).__name__}: {exc}")
+
+# %% [markdown]
+# ## Explore: the rod length
+#
+# The rod/crank ratio shapes the piston's motion. Move the rod length (crank radius 40 mm,
+# 6000 rpm): a short rod raises the TDC peak toward $a\omega_2^2(1 + a/b)$ and flattens and
+# splits the positive lobe at BDC; a long rod brings the curve toward the pure cosine of the
+# crank pin (dotted).
+
+# %%
+def draw(rod_mm, rpm):
+    eng = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm"))
+    res = eng.solve(theta2=theta2, omega2=Q_(rpm, "rpm"), order=2)
+    w = Q_(rpm, "rpm").to("rad/s").magnitude
+    fig, ax = plt.subplots(figsize=(5.0, 3.6))
+    ax.plot(theta2.magnitude, in_g(res.d_ddot), color=COLORS["resultant"], lw=2)
+    ax.plot(theta2.magnitude, -0.040 * w**2 * np.cos(theta2.to("rad").magnitude) / 9.80665,
+            color="#888888", ls=":", label="crank pin's shadow")
+    ax.set_ylim(-3000, 1800)
+    ax.set_xticks(range(0, 361, 90))
+    ax.set_xlabel("$\\theta_2$ [deg]")
+    ax.set_ylabel("piston [g]")
+    peak = abs(in_g(res.d_ddot)).max()
+    ax.set_title(f"b/a = {rod_mm / 40:.2f}: peak {peak:.0f} g at {rpm:g} rpm", fontsize=10)
+    ax.legend(loc="lower center", fontsize=9)
+    return fig
+
+
+explore(draw, rod_mm=(80, 400, 10, 130, "mm"), rpm=(600, 7000, 100, 6000, "rpm"),
+        values=[80, 130, 200, 400])
+
+# %% [markdown]
+# With $b = 80$ mm ($b/a = 2$) the peak is 50 % above the crank pin's; with 400 mm it is
+# only 10 % above. Engines use $b/a$ around 3 to 3.5: a longer rod would make a taller,
+# heavier engine for little gain.
+
+# %% [markdown]
+# ## Check yourself
+#
+# **1.** The engine's speed drops from 6000 to 3000 rpm. What happens to the peak piston
+# acceleration?
+#
+# <details><summary>Answer</summary>
+#
+# It falls to a quarter, about 530 g: at constant speed every term of eq. 7.16e is
+# proportional to $\omega_2^2$.
+#
+# </details>
+#
+# **2.** Why has $\mathbf{A}_B$ no normal component, while $\mathbf{A}_A$ has one?
+#
+# <details><summary>Answer</summary>
+#
+# The slider translates along a straight line: its path has no curvature, so there is no
+# centripetal acceleration, only acceleration along the path ($\ddot d$). The crank pin moves
+# on a circle and always has $a\omega_2^2$ toward $O_2$.
+#
+# </details>
+#
+# **3.** Convert 2100 g to ft/s$^2$ and to in/s$^2$.
+#
+# <details><summary>Answer</summary>
+#
+# $2100 \times 32.17 \approx 67\,600$ ft/s$^2$ $\approx 811\,000$ in/s$^2$ (with $g = 32.17$
+# ft/s$^2$ $= 386.1$ in/s$^2$). In code: `Q_(2100, "standard_gravity").to("ft/s^2")`.
+#
+# </details>
+#
+# **4.** At TDC, what is the direction of the piston's acceleration, and what is
+# $\alpha_3$ there (no offset, constant $\omega_2$)?
+#
+# <details><summary>Answer</summary>
+#
+# Toward the crank ($-x$): $\ddot d = -a\omega_2^2(1 + a/b)$. And $\alpha_3 = 0$: by eq. 7.16d
+# with $\theta_2 = 0$, $\theta_3 = 180^\circ$ and $\alpha_2 = 0$ every term of the numerator
+# vanishes. The rod has its largest angular *velocity* there instead.
+#
+# </details>
+
+# %% [markdown]
+# ## Common mistakes
+#
+# - **rpm used as rad/s.** $6000$ rpm is $6000 \times 2\pi/60 = 628$ rad/s; forgetting the
+#   factor $2\pi/60$ is an error of almost ten in $\omega$ and a hundred in acceleration. Let
+#   pint convert: `Q_(6000, "rpm").to("rad/s")`.
+# - **Stroke taken for the crank radius.** The stroke is the piston's travel, twice the crank
+#   radius: $a = \text{stroke}/2$.
+# - **"g" in pint.** `"g"` is the gram; standard gravity is `"standard_gravity"` (or `"g_0"`).
+# - **Trusting eq. 7.15b's label.** The bracket $b\alpha_3je^{j\theta_3} - b\omega_3^2e^{j\theta_3}$
+#   is $\mathbf{A}_{AB}$ because $\mathbf{R}_3$ points from $B$ to $A$; eq. 7.4 needs
+#   $\mathbf{A}_{BA} = -\mathbf{A}_{AB}$.
+# - **Looking for the peak at BDC.** Without offset the largest magnitude is at TDC, where
+#   crank and rod terms add; at BDC they partly cancel.
+#
+# [Next: 5. Coriolis acceleration](05_coriolis.ipynb)
