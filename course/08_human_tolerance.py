@@ -1,0 +1,343 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 8. Human tolerance of acceleration
+#
+# Machines that carry people have a limit that machines carrying parts do not: the passenger.
+# This notebook puts a linkage's accelerations in the unit people feel them in, the $g$, sets
+# them beside accelerations everyone knows, and asks whether a ride driven by a fourbar is
+# tolerable, and for how long.
+#
+# **You will be able to**
+#
+# - express any acceleration in $g$ (and back) with pint, without confusing $g$ with the gram;
+# - tell the acceleration of a seat from the load its rider *feels*, which includes gravity, and
+#   split that load along the rider's body;
+# - compare a mechanism's accelerations with the everyday levels of the chapter's Table 7-1, and
+#   say how long each level lasts per cycle;
+# - say what such a comparison can and cannot establish.
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import COLORS, G0, explore, in_g, use_style
+from solver import FourBar, Q_
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# We do not feel velocity (a smooth airliner at 500 mph feels like a parked one); the inner ear
+# and the body feel **acceleration**. The convenient unit is the acceleration of gravity at sea
+# level,
+#
+# $$ 1\,g \approx 386\ \text{in/s}^2 \approx 32.2\ \text{ft/s}^2 \approx 9.81\ \text{m/s}^2 , $$
+#
+# standardised as exactly 9.80665 m/s². (pint calls it `standard_gravity` or `g_0`; its `g` is the
+# gram. `coursekit.G0` is one standard gravity.)
+#
+# **What a rider feels.** A seat must push its rider with the force $m(\mathbf{A} - \mathbf{g})$:
+# $m\mathbf{A}$ to accelerate them and $-m\mathbf{g}$ to hold them up. Divided by $m$ this is the
+# load the rider feels, pressed into the seat,
+#
+# $$ \mathbf{f} = \mathbf{A} - \mathbf{g}, \qquad \mathbf{g} = -g\,\hat{\mathbf{y}} , $$
+#
+# so a rider at rest feels $1\,g$ upward (their weight), an extra $1\,g$ upward acceleration is
+# felt as twice their weight, and a free fall ($\mathbf{A} = \mathbf{g}$) as weightlessness.
+# The chapter's Table 7-1 lists everyday accelerations, *in addition to* the 1 g we live in:
+#
+# | activity (Table 7-1) | acceleration |
+# |---|---|
+# | gentle acceleration in an automobile | 0.1 g |
+# | jet aircraft on takeoff | 0.3 g |
+# | hard acceleration in an automobile | 0.5 g |
+# | panic stop in an automobile | 0.7 g |
+# | fast cornering in an automobile | 0.8 g |
+# | roller coaster | 3.5 g |
+# | F-16 Air Force jet | 9.0 g |
+#
+# Tolerance depends on three things (the chapter's Figure 7-10, from military and NASA tests):
+# the **direction** of the load relative to the body (headward loads drain or flood the brain of
+# blood and are the least tolerated), its **size**, and its **duration**. Those tests used young,
+# fit, trained subjects; children, the elderly and the general public should not be expected to
+# tolerate as much.
+
+# %% [markdown]
+# ## Worked examples
+#
+# ### 1. Accelerations in g
+#
+# Table 7-1 in SI and US units, and the two engine numbers the chapter quotes for machinery that
+# carries no one (notebook 4 reproduces them): a small car engine's piston sees about 40 g at idle
+# and about 2000 g at 6000 rpm.
+
+# %%
+table = {"gentle acceleration, car": 0.1, "jet takeoff": 0.3, "hard acceleration, car": 0.5,
+         "panic stop, car": 0.7, "fast cornering, car": 0.8, "roller coaster": 3.5,
+         "F-16 fighter jet": 9.0}
+for what, level in table.items():
+    a = level * G0
+    print(f"{what:24} {level:4.1f} g = {a.to('m/s^2'):6.2f~P} = {a.to('in/s^2'):7.0f~P}")
+for what, level in {"piston at idle": 40, "piston at 6000 rpm": 2000}.items():
+    a = level * G0
+    print(f"{what:24} {level:4.0f} g = {a.to('m/s^2'):6.0f~P} = {a.to('in/s^2'):7.0f~P}")
+assert np.isclose(in_g(Q_(386.09, "in/s^2")), 1.0, rtol=1e-4)
+
+# %% [markdown]
+# ### 2. A ride on a fourbar
+#
+# A fairground ride carries its car on the coupler of a crank-rocker: crank $a$ = 3 m, coupler
+# $b$ = 7 m, rocker $c$ = 6 m, ground $d$ = 8 m; the car is at $p$ = 4 m, $\delta_3$ = 60° on the
+# coupler and is bolted to it, so it tilts with the coupler. The motor turns the crank at a steady
+# 12 rpm: one cycle every 5 s. The car swoops through a loop 5 m wide and 7 m high.
+
+# %%
+ride = FourBar(a="3 m", b="7 m", c="6 m", d="8 m")
+car = dict(p="4 m", delta3="60 deg")
+N = 721
+theta = Q_(np.linspace(0, 2 * np.pi, N), "rad")
+
+
+def ride_cycle(rpm):
+    """Time [s], the car's acceleration and the rider's felt load (in g, complex), the body axes."""
+    r = ride.solve(theta2=theta, omega2=Q_(rpm, "rpm"), alpha2=0, **car)
+    assert r.valid.all()
+    t = (theta / Q_(rpm, "rpm")).to("s").magnitude
+    A = r.A_P.to("standard_gravity").magnitude               # complex, in g
+    felt = A + 1j                                              # f = A - g, g pointing down, in g
+    t3 = r.theta3.magnitude
+    up = 1j * np.exp(1j * (t3 - t3.mean()))                    # the car's "up", tilting with link 3
+    headward = (felt * np.conj(up)).real                       # along the spine, seat to head
+    forward = (felt * np.conj(up * -1j)).real                  # chest to back (eyeballs in), the rider faces +x
+    return t, r, A, felt, headward, forward
+
+
+t, r, A, felt, head, fore = ride_cycle(12)
+print(f"largest |A_P|:        {np.abs(A).max():.2f} g")
+print(f"felt load |f|:        {np.abs(felt).min():.2f} g to {np.abs(felt).max():.2f} g")
+print(f"along the spine:      {head.min():+.2f} g to {head.max():+.2f} g (1 g = sitting still)")
+print(f"chest-to-back:        {fore.min():+.2f} g to {fore.max():+.2f} g")
+heavy = np.abs(felt) > 1.5
+print(f"felt above 1.5 g for {heavy.mean() * t[-1]:.2f} s of each {t[-1]:.0f} s cycle")
+
+# %% [markdown]
+# The drawing shows the car's path with the felt load at a few instants (the arrow is the push
+# of the seat on the rider, per unit mass), and, over one cycle, the size of $\mathbf{A}_P$ and the
+# two body components of $\mathbf{f}$ with the Table 7-1 levels for comparison.
+
+# %%
+R = r.R_P.to("m").magnitude
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8), gridspec_kw={"width_ratios": [1, 1.4]})
+ax1.plot(R.real, R.imag, color="#555555", lw=1.5)
+for i in range(0, N - 1, 60):
+    z, f = R[i], felt[i]
+    ax1.annotate("", xy=(z.real + f.real, z.imag + f.imag), xytext=(z.real, z.imag),
+                 arrowprops=dict(arrowstyle="-|>", color=COLORS["resultant"], lw=1.8))
+    ax1.plot(z.real, z.imag, "o", color="black", ms=3)
+i = 90
+pins = [0, r.R_A[i].to("m").magnitude, r.R_B[i].to("m").magnitude, 8]
+ax1.plot([z.real for z in pins], [z.imag for z in pins], "-o", color="#9a9a9a", lw=3, ms=5,
+         mfc="white", zorder=0)
+ax1.fill([pins[1].real, pins[2].real, R[i].real], [pins[1].imag, pins[2].imag, R[i].imag],
+         color="#e0e0e0", zorder=0)
+ax1.set_aspect("equal")
+ax1.set_xlabel("x [m]")
+ax1.set_ylabel("y [m]")
+ax1.set_title("Path of the car; arrows: felt load f\n(1 m of arrow = 1 g), linkage at 45°")
+ax2.plot(t, np.abs(A), color="black", lw=2, label=r"$|\mathbf{A}_P|$ (what Table 7-1 lists)")
+ax2.plot(t, head, color=COLORS["normal"], lw=2, label="felt, along the spine")
+ax2.plot(t, fore, color=COLORS["tangential"], lw=2, ls="--", label="felt, chest to back")
+for what in ("gentle acceleration, car", "fast cornering, car", "roller coaster"):
+    ax2.axhline(table[what], color="#999999", lw=0.8, ls=":")
+    ax2.text(t[-1], table[what], " " + what, va="center", fontsize=8, color="#555555")
+ax2.set_xlabel("time [s] (one crank turn)")
+ax2.set_ylabel("[g]")
+ax2.set_title("The ride at 12 rpm")
+ax2.legend(fontsize=9, loc="upper left")
+plt.show()
+
+# %% [markdown]
+# **Is it tolerable?** At 12 rpm the car's acceleration peaks at about 0.8 g, the level of fast
+# cornering in a car; with gravity the rider feels between about half and 1.7 times their weight,
+# mostly along the spine, pressed into the seat at the bottom of the loop and light at the top.
+# Each load lasts about a second per cycle. That is well inside the everyday experience of
+# Table 7-1, far below a roller coaster, so for healthy adults it is plausibly tolerable; whether
+# it is *fun* or *safe for everyone* is another matter, below.
+#
+# **Speed matters quadratically.** At a steady crank speed every acceleration scales with
+# $\omega_2^2$, while each cycle gets shorter. The next cell runs the same ride from 6 to 24 rpm.
+
+# %%
+speeds = np.arange(6, 25, 2)
+rows = []
+for rpm in speeds:
+    t_, _, A_, felt_, head_, _ = ride_cycle(rpm)
+    dt = t_[-1] / (N - 1)
+    rows.append((np.abs(A_).max(), np.abs(felt_).max(), head_.min(), (np.abs(felt_) > 2).sum() * dt))
+rows = np.array(rows)
+fig, ax = plt.subplots(figsize=(8, 4))
+ax.plot(speeds, rows[:, 0], "o-", color="black", label=r"peak $|\mathbf{A}_P|$")
+ax.plot(speeds, rows[:, 1], "s-", color=COLORS["normal"], label="peak felt load")
+ax.plot(speeds, rows[:, 2], "v-", color=COLORS["tangential"], label="least felt load along the spine")
+ax.axhline(3.5, color="#999999", ls=":")
+ax.text(6, 3.55, "roller coaster, Table 7-1", fontsize=8, color="#555555", va="bottom")
+ax.axhline(0, color="#999999", lw=0.8)
+ax.set_xlabel("crank speed [rpm]")
+ax.set_ylabel("[g]")
+ax.set_title("The same ride, faster")
+ax.legend(fontsize=9)
+plt.show()
+for rpm, (peak, fmax, hmin, above) in zip(speeds, rows):
+    if rpm in (12, 16, 20, 24):
+        print(f"{rpm:2d} rpm: peak |A| {peak:.2f} g, felt up to {fmax:.2f} g, spine load down to "
+              f"{hmin:+.2f} g, above 2 g for {above:.2f} s per cycle")
+
+# %% [markdown]
+# Doubling the speed from 12 to 24 rpm multiplies the peak acceleration by four (about 3.2 g,
+# roller-coaster level). Already near 16 rpm the load along the spine falls to zero at the top
+# of the loop, and beyond it turns *negative*: the rider would be lifted out of the seat and must
+# be held by a restraint. That, more than the peak, is what a designer of this ride would watch.
+#
+# ### 3. A seat mechanism: a motorised baby swing
+#
+# A swing seat hangs 600 mm below the pivot of the rocker of a small crank-rocker ($a$ = 30 mm,
+# $b$ = 200 mm, $c$ = 100 mm, $d$ = 200 mm); the seat arm is fixed to the rocker at
+# $\delta_4 = 165°$ so that it hangs straight down mid-swing. The motor turns at 30 rpm: one swing
+# every 2 s, through 36°. `Result.point` gives the seat's acceleration directly.
+
+# %%
+swing = FourBar(a="30 mm", b="200 mm", c="100 mm", d="200 mm")
+s = swing.solve(theta2=theta, omega2="30 rpm", alpha2=0)
+seat = s.point(4, "600 mm", "165 deg")
+print(f"swing arc: {np.degrees(np.ptp(s.theta4.magnitude)):.0f} deg")
+print(f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
+      f"(tangential up to {in_g(seat.A_t).max():.2f} g, normal up to {in_g(seat.A_n).max():.2f} g)")
+
+# %% [markdown]
+# Up to about a quarter of a $g$: between gentle and hard acceleration in a car. By Table 7-1 this
+# is an everyday level for an adult. But the rider is an infant, exactly the population the
+# chapter warns that the tolerance data do not describe. The calculation tells the designer how
+# large the accelerations are and how they scale (halve the speed and they quarter); it cannot
+# say they are acceptable for a baby. That needs the product's own safety standard and medical
+# advice, not Figure 7-10.
+#
+# **What tolerance data can and cannot say.**
+#
+# - *Can*: give orders of magnitude (a mechanism at 0.3 g is in a different world from one at
+#   9 g); show that direction and duration matter as much as size; flag loads near the limits
+#   measured on trained volunteers as certainly unacceptable for the public.
+# - *Cannot*: certify a design. The subjects were young and fit; the loads were mostly sustained
+#   and steady, not the repeated cycles of a ride or the sudden jolts of a mechanism (jerk,
+#   notebook 9); comfort, nausea and fatigue are not in them. Real rides are designed to published
+#   standards (for example ASTM F2291 for amusement rides) that set limits by direction and duration,
+#   and are then measured on the built ride.
+#
+# ## Explore
+#
+# Run the ride faster or slower (10 s of riding, the cycle repeated). Watch the peaks grow with
+# the square of the speed while the cycles come faster, and watch for the moment the spine load
+# crosses zero.
+
+# %%
+def draw(rpm=12):
+    t, _, A, felt, head, fore = ride_cycle(rpm)
+    turns = int(np.ceil(10 / t[-1]))                  # repeat the cycle to fill 10 s
+    T = np.concatenate([t[:-1] + k * t[-1] for k in range(turns)])
+    rep = lambda x: np.tile(x[:-1], turns)            # noqa: E731
+    fig, ax = plt.subplots(figsize=(6.4, 4))
+    ax.plot(T, rep(np.abs(A)), color="black", lw=2, label=r"$|\mathbf{A}_P|$")
+    ax.plot(T, rep(head), color=COLORS["normal"], lw=2, label="felt, along the spine")
+    ax.plot(T, rep(fore), color=COLORS["tangential"], lw=2, ls="--", label="felt, chest to back")
+    ax.axhline(3.5, color="#999999", lw=0.8, ls=":")
+    ax.axhline(0, color="#999999", lw=0.8)
+    ax.set_ylim(-3, 4.5)
+    ax.set_xlim(0, 10)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("[g]")
+    ax.set_title(f"{rpm} rpm: a cycle every {60 / rpm:.1f} s, peak {np.abs(A).max():.2f} g", fontsize=11)
+    ax.legend(fontsize=8, loc="upper right", ncol=3)
+    return fig
+
+
+explore(draw, rpm=(6, 24, 1, 12, "rpm"))
+
+# %% [markdown]
+# ## Check yourself
+#
+# 1. The chapter says a small engine's piston reaches about 2000 g at 6000 rpm. What is that in
+#    m/s² and in in/s²?
+#
+# <details><summary>Answer</summary>
+#
+# About 19 600 m/s² and 772 000 in/s² (`(2000 * G0).to("m/s^2")`).
+#
+# </details>
+#
+# 2. A lift (elevator) accelerates upward at 0.1 g. What does its passenger feel? And a lift whose
+#    cable has snapped?
+#
+# <details><summary>Answer</summary>
+#
+# $\mathbf{f} = \mathbf{A} - \mathbf{g}$: 1.1 g, 10 % heavier than usual. In free fall
+# $\mathbf{A} = \mathbf{g}$, so $\mathbf{f} = 0$: weightless, although the acceleration is 1 g.
+#
+# </details>
+#
+# 3. The ride's crank speed goes from 12 to 18 rpm. By how much do the peak accelerations grow,
+#    and how long is a cycle now?
+#
+# <details><summary>Answer</summary>
+#
+# By $(18/12)^2 = 2.25$ (at steady speed every acceleration is proportional to $\omega_2^2$). A
+# cycle takes 60/18 = 3.3 s instead of 5 s. The felt load does not simply scale, because gravity
+# is added unchanged.
+#
+# </details>
+#
+# 4. Why can Table 7-1 not tell you whether 3 g for 10 s is safe?
+#
+# <details><summary>Answer</summary>
+#
+# It lists typical values of everyday accelerations, not limits, and gives neither duration nor
+# direction. A roller coaster reaches 3.5 g for a moment, not for 10 s. Limits come from
+# tolerance data such as Figure 7-10 (for the population they were measured on) and from design
+# standards.
+#
+# </details>
+#
+# 5. On the ride at 20 rpm, the spine load becomes negative at the top of the loop. What does the
+#    rider experience, and what must the design provide?
+#
+# <details><summary>Answer</summary>
+#
+# The car accelerates downward faster than gravity would, so the seat would have to *pull* the
+# rider down: they lift off the seat. A restraint (lap bar, harness) must hold them.
+#
+# </details>
+#
+# ## Common mistakes
+#
+# - **Writing `Q_(3, "g")`.** That is three grams. Use `standard_gravity`, `g_0` or `coursekit.G0`.
+# - **Forgetting gravity.** The rider feels $\mathbf{A} - \mathbf{g}$, not $\mathbf{A}$; at rest
+#   $\mathbf{A} = 0$ and they still feel 1 g.
+# - **Quoting only the peak.** Tolerance depends on direction (along the spine is worst) and
+#   duration; say both.
+# - **Stretching the data.** Results on trained military volunteers are an upper bound, not a
+#   design limit for children, the elderly or the public.
+# - **Judging a slow mechanism by acceleration alone.** At 0.2 g the question is rarely tolerance;
+#   smoothness (jerk, next notebook) and comfort decide.
+#
+# [Next: 9. Jerk](09_jerk.ipynb)
