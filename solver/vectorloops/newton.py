@@ -189,7 +189,7 @@ class LoopSystem:
         return np.concatenate([self.signs @ (-k * e.imag), self.signs @ (k * e.real)])
 
     # --- Newton-Raphson -----------------------------------------------------
-    def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS):
+    def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS, slopes=True):
         """Newton-Raphson on a stack of M positions at once.
 
         Parameters
@@ -209,7 +209,8 @@ class LoopSystem:
         iterations : (M,) Newton steps taken
         residual : (M,) loop residual norm reached [m]
         reason : (M,) int8, CONVERGED, NOT_CLOSED or SINGULAR_STEP
-        slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged)
+        slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged,
+            and everywhere when ``slopes`` is False)
         """
         q = np.array(q0, dtype=float, copy=True)
         theta2 = np.asarray(theta2, dtype=float)
@@ -228,13 +229,25 @@ class LoopSystem:
             res = np.sqrt(np.einsum("ij,ij->i", F, F))
             residual[active] = res
             done = (size < step_tol) & (res <= tol_res)
-            rhs = np.stack([F, Ft], axis=-1)
-            sol, bad = _solve_stack(J, rhs)
+            if slopes:
+                sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1))
+            elif done.any():  # the converged positions need no more solves
+                if done.all():
+                    q[active] = qa
+                    reason[active] = CONVERGED
+                    break
+                sol = np.full(F.shape[:1] + (self.n_unknowns, 1), np.nan)
+                sol[~done], bad_rest = _solve_stack(J[~done], F[~done, :, None])
+                bad = np.zeros_like(done)
+                bad[~done] = bad_rest
+            else:
+                sol, bad = _solve_stack(J, F[:, :, None])
             if done.any():
                 idx = active[done]
                 q[idx] = qa[done]
                 reason[idx] = CONVERGED
-                slope[idx] = -sol[done, :, 1]
+                if slopes:
+                    slope[idx] = -sol[done, :, 1]
                 keep = ~done & ~bad
             else:
                 keep = ~bad
@@ -349,28 +362,36 @@ def _gauss(A, nu):
     Returns the solution rows [[x_rhs1, x_rhs2], ...] or None when singular.
     """
     n = len(A)
+    width = range(nu + 2)
     for k in range(nu):
-        p = max(range(k, n), key=lambda r: abs(A[r][k]))
-        if A[p][k] == 0.0:
+        p, big = k, abs(A[k][k])
+        for r in range(k + 1, n):
+            v = abs(A[r][k])
+            if v > big:
+                p, big = r, v
+        if big == 0.0:
             return None
         if p != k:
             A[k], A[p] = A[p], A[k]
         rk = A[k]
         inv = 1.0 / rk[k]
+        cols = width[k + 1:]
         for r in range(k + 1, n):
             row = A[r]
             f = row[k] * inv
             if f != 0.0:
-                for j in range(k + 1, nu + 2):
+                for j in cols:
                     row[j] -= f * rk[j]
-    x = [[0.0, 0.0] for _ in range(nu)]
+    x = [None] * nu
     for k in range(nu - 1, -1, -1):
         rk = A[k]
         a, b = rk[nu], rk[nu + 1]
         for j in range(k + 1, nu):
-            a -= rk[j] * x[j][0]
-            b -= rk[j] * x[j][1]
-        x[k][0], x[k][1] = a / rk[k], b / rk[k]
+            xj = x[j]
+            a -= rk[j] * xj[0]
+            b -= rk[j] * xj[1]
+        inv = 1.0 / rk[k]
+        x[k] = (a * inv, b * inv)
     return x
 
 

@@ -7,8 +7,8 @@ another assembly; the step is then subdivided, and a position still reached
 only by a jump is reported ``singular`` rather than returned.
 
 To be fast the sweep does this sequential continuation only on a coarse
-subset of the positions (steps of up to :data:`COARSE_STEP` in theta2, where
-the input array is monotonic), then solves every position in between in one
+subset of the positions (steps in theta2 that adapt to how fast the solution
+bends, where the input array is monotonic), then solves every position in between in one
 batched Newton-Raphson (numpy over positions) from cubic Hermite
 interpolation of the coarse solutions and their slopes dq/dtheta2. Each
 batched position must converge close to its interpolated guess; an interval
@@ -35,13 +35,16 @@ from .newton import CONVERGED, DEFAULT_TOL, no_convergence
 
 JUMP_TOLERANCE = 0.05   # [rad or length scale] beyond the predicted change
 SUBSTEPS = 8
-COARSE_STEP = 0.25      # [rad] largest theta2 step between sequentially solved positions
-MAX_STRIDE = 32         # most positions between two sequentially solved ones
+COARSE_STEP = 0.25      # [rad] first theta2 step between sequentially solved positions
+COARSE_RANGE = (0.02, 0.6)  # [rad] the step adapts within this range
+COARSE_TARGET = 0.005   # [rad or length scale] aimed-at chord/slope mismatch per step
+MAX_STRIDE = 64         # most positions between two sequentially solved ones
 MIN_STRIDE = 4          # below this, walk position by position
 GAP_CHUNK = 16          # positions tried together while the loops do not close
 WALK_STEP = 0.05        # [rad] continuation step when rejoining the assembly after a gap
 MIN_WALK_STEP = 1e-6    # [rad] smallest step of that walk before it gives up
 MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
+HIGHER_ORDER_CAP = 0.1  # [rad or length scale] largest 2nd+3rd order predictor term
 
 
 class _BranchJump(Singular):
@@ -62,9 +65,11 @@ class _Sweep:
         self.errors = {}
         self.guess = np.asarray(q0, dtype=float)
         self.last = None        # index of the last position solved by continuation
+        self.taylor = None      # 2nd and 3rd Taylor coefficients of q(theta2) at last
         self.gap = False        # a position failed since self.last
         self.walk_failed = {}   # (anchor, direction) -> distance a rejoining walk failed at
         self.failures = 0       # consecutive failed positions
+        self.coarse = COARSE_STEP   # current coarse step [rad]
         self.scale = system.scale
 
     # --- bookkeeping --------------------------------------------------------
@@ -72,6 +77,17 @@ class _Sweep:
         self.q[i], self.iterations[i], self.status[i] = q, it, OK
         self.slope[i] = np.nan if slope is None else slope
         self.sequential[i] = True
+        # second and third derivatives of q(theta2) at i from the cubic through the
+        # previous solved position: the predictor becomes a cubic Taylor polynomial
+        self.taylor = None
+        p = self.last
+        if p is not None and not self.gap:
+            h = float(self.theta2[i] - self.theta2[p])
+            s0, s1 = self.slope[p], self.slope[i]
+            if abs(h) > 1e-9 and np.isfinite(s0).all() and np.isfinite(s1).all():
+                dq = self.q[p] - self.q[i]
+                self.taylor = ((3 * dq + h * (s0 + 2 * s1)) / h ** 2,
+                               (2 * dq + h * (s0 + s1)) / h ** 3)
         self.last, self.gap = i, False
         self.failures = 0
 
@@ -91,14 +107,28 @@ class _Sweep:
         return np.max(np.abs(q - pred) / self.scale) > JUMP_TOLERANCE + 0.5 * change
 
     def predict(self, t):
-        """Continuation predictor from the last solved position: (guess, change)."""
+        """Continuation predictor from the last solved position to theta2 = t (a
+        float or an array): (guess, change), ``change`` the largest scaled first-
+        order change (None without a slope). The cubic Taylor terms are used only
+        where they stay small (< HIGHER_ORDER_CAP), so they never carry a guess
+        far from the tangent."""
+        t = np.asarray(t, dtype=float)
+        shape = t.shape + (self.system.n_unknowns,)
         if self.last is None:
-            return self.guess, None
+            return np.broadcast_to(self.guess, shape), None
         q, slope = self.q[self.last], self.slope[self.last]
         if not np.isfinite(slope).all():
-            return q, None
-        dq = slope * (t - self.theta2[self.last])
-        return q + dq, float(np.max(np.abs(dq) / self.scale))
+            return np.broadcast_to(q, shape), None
+        d = (t - self.theta2[self.last])[..., None]
+        lin = slope * d
+        guess = q + lin
+        if self.taylor is not None:
+            c2, c3 = self.taylor
+            hot = d * d * (c2 + c3 * d)
+            small = np.max(np.abs(hot) / self.scale, axis=-1, keepdims=True) <= HIGHER_ORDER_CAP
+            guess = guess + np.where(small, hot, 0.0)
+        change = np.max(np.abs(lin) / self.scale, axis=-1)
+        return guess, (float(change) if change.ndim == 0 else change)
 
     # --- one position by continuation ----------------------------------------
     def step(self, i, result=None):
@@ -221,11 +251,7 @@ class _Sweep:
         positions until one is accepted; returns the next index."""
         idx = np.arange(i, stop)
         t = self.theta2[idx]
-        if self.last is None or not np.isfinite(self.slope[self.last]).all():
-            q0 = np.broadcast_to(self.guess if self.last is None else self.q[self.last],
-                                 (len(idx), self.system.n_unknowns))
-        else:
-            q0 = self.q[self.last] + self.slope[self.last] * (t - self.theta2[self.last])[:, None]
+        q0, _ = self.predict(t)
         q, it, res, reason, slope = self.system.newton(q0, t, self.tol)
         for k, n in enumerate(idx):
             result = (q[k], int(it[k]), float(res[k]), reason[k],
@@ -249,7 +275,7 @@ class _Sweep:
         steps = d * sign
         run = len(steps) if (steps > 0).all() else int(np.argmin(steps > 0))
         dist = (w[1:run + 1] - w[0]) * sign
-        n = int(np.searchsorted(dist, COARSE_STEP, side="right"))
+        n = int(np.searchsorted(dist, self.coarse, side="right"))
         return a + max(n, 1)
 
     def coarse_step(self, a, b):
@@ -258,14 +284,18 @@ class _Sweep:
         t = float(self.theta2[b])
         pred, change = self.predict(t)
         q, it, res, reason, slope = self.system.newton1(pred, t, self.tol)
+        lo, hi = COARSE_RANGE
         if reason != CONVERGED or slope is None:
+            self.coarse = max(lo, 0.5 * self.coarse)
             return False
         q, slope = np.asarray(q), np.asarray(slope)
-        if self.jumped(q, pred, change):
-            return False
         h = t - float(self.theta2[a])
         trapezoid = q - self.q[a] - 0.5 * h * (self.slope[a] + slope)
-        if np.max(np.abs(trapezoid) / self.scale) > JUMP_TOLERANCE:
+        error = float(np.max(np.abs(trapezoid) / self.scale))
+        # the mismatch grows like h**3: aim the next step at COARSE_TARGET
+        grow = 0.9 * (COARSE_TARGET / max(error, 1e-12)) ** (1 / 3)
+        self.coarse = min(hi, max(lo, abs(h) * min(2.0, max(0.5, grow))))
+        if error > JUMP_TOLERANCE or self.jumped(q, pred, change):
             return False
         self.accept(b, q, it, slope)
         return True
@@ -290,7 +320,7 @@ class _Sweep:
                  + (3 * s2 - 2 * s3) * qb + (s3 - s2) * sb)
         rate = ((6 * s2 - 6 * s) * qa + (3 * s2 - 4 * s + 1) * sa
                 + (6 * s - 6 * s2) * qb + (3 * s2 - 2 * s) * sb) / h
-        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol)
+        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol, slopes=False)
         dt = np.abs(th[idx] - th[idx - 1])[:, None]
         change = np.max(np.abs(rate * dt) / self.scale, axis=1)
         off = np.max(np.abs(q - guess) / self.scale, axis=1)
@@ -347,7 +377,7 @@ class _Sweep:
             for a, b in self.batch(intervals):
                 # walk this interval again position by position from a
                 q_b, slope_b, it_b = self.q[b].copy(), self.slope[b].copy(), self.iterations[b]
-                self.last, self.gap, self.failures = a, False, 0
+                self.last, self.gap, self.failures, self.taylor = a, False, 0, None
                 self.walk_dense(a + 1, b + 1)
                 if (self.status[b] == OK and self.last == b
                         and np.max(np.abs(self.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE):
