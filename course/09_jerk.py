@@ -1,0 +1,391 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#       format_version: '1.3'
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # 9. Jerk
+#
+# Force follows acceleration ($F = ma$), so a quickly changing acceleration is a quickly changing
+# force: a jolt. The rate of change of acceleration is called **jerk** (also pulse or shock). This
+# notebook computes it for linkages and shows why a designer cares.
+#
+# **You will be able to**
+#
+# - differentiate the fourbar's acceleration loop once more and solve it for the angular jerks
+#   $\varphi_3$ and $\varphi_4$ (eqs. 7.33-7.39), and get them from the solver (`jerk3`, `jerk4`);
+# - compute the linear jerk of the pins and of any point (eqs. 7.40-7.41);
+# - check a jerk against a numerical derivative of the angular acceleration;
+# - compare the jerks of the slider-crank, the inverted slider-crank and the geared fivebar, and
+#   explain, with a small vibration model, why limiting jerk reduces vibration.
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+
+from coursekit import COLORS, explore, polar, use_style
+from solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
+
+use_style()
+
+# %% [markdown]
+# ## The idea and its equations
+#
+# Angular and linear jerk are the time derivatives of angular and linear acceleration:
+#
+# $$ \varphi = \frac{d\alpha}{dt} \tag{7.33a} $$
+#
+# $$ \mathbf{J} = \frac{d\mathbf{A}}{dt} \tag{7.33b} $$
+#
+# (The chapter's $\varphi_k$ is `jerk_k` in the solver; in notebook 6, $\phi$ was the fivebar's
+# phase, a different thing.) Differentiating a rotating vector $L e^{j\theta}$ three times gives
+# $L(-\omega^3 j - 3\omega\alpha + \varphi j)e^{j\theta}$. Doing that to every term of the fourbar's
+# acceleration loop (eq. 7.7) and collecting:
+#
+# $$ -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2}
+#    - b\omega_3^3 je^{j\theta_3} - 3b\omega_3\alpha_3 e^{j\theta_3} + b\varphi_3 je^{j\theta_3}
+#    + c\omega_4^3 je^{j\theta_4} + 3c\omega_4\alpha_4 e^{j\theta_4} - c\varphi_4 je^{j\theta_4} = 0
+#    \tag{7.34b} $$
+#
+# Everything is known from the position, velocity and acceleration analyses except $\varphi_3$ and
+# $\varphi_4$ (the input's jerk $\varphi_2$ is given; zero at steady speed or constant
+# $\alpha_2$). The real and imaginary parts are two linear equations:
+#
+# $$ a\omega_2^3\sin\theta_2 - 3a\omega_2\alpha_2\cos\theta_2 - a\varphi_2\sin\theta_2
+#    + b\omega_3^3\sin\theta_3 - 3b\omega_3\alpha_3\cos\theta_3 - b\varphi_3\sin\theta_3
+#    - c\omega_4^3\sin\theta_4 + 3c\omega_4\alpha_4\cos\theta_4 + c\varphi_4\sin\theta_4 = 0
+#    \tag{7.35a} $$
+#
+# $$ -a\omega_2^3\cos\theta_2 - 3a\omega_2\alpha_2\sin\theta_2 + a\varphi_2\cos\theta_2
+#    - b\omega_3^3\cos\theta_3 - 3b\omega_3\alpha_3\sin\theta_3 + b\varphi_3\cos\theta_3
+#    + c\omega_4^3\cos\theta_4 + 3c\omega_4\alpha_4\sin\theta_4 - c\varphi_4\cos\theta_4 = 0
+#    \tag{7.35b} $$
+#
+# The chapter names the known terms $A \ldots K$ in eq. 7.35a and $L \ldots U$ in eq. 7.35b
+# (eqs. 7.36a and 7.37a), e.g. $A = a\omega_2^3\sin\theta_2$, $H = c\sin\theta_4$,
+# $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$, and eliminates $\varphi_3$:
+#
+# $$ \varphi_3 = \frac{A - B - C + D - E - F + G + H\varphi_4}{K} \tag{7.36b} $$
+#
+# $$ \varphi_4 = \frac{KN - KL - KM - KP - KQ + AR - BR - CR + DR - ER - FR + GR + KS + KT}{KU - HR}
+#    \tag{7.39} $$
+#
+# The denominator $KU - HR = bc\sin(\theta_4 - \theta_3)$ vanishes at the toggle, as the
+# acceleration's did. The pins' linear jerks follow from the same rotating-vector derivative:
+#
+# $$ \mathbf{J}_A = -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2},
+#    \qquad \mathbf{J}_B = -c\omega_4^3 je^{j\theta_4} - 3c\omega_4\alpha_4 e^{j\theta_4}
+#    + c\varphi_4 je^{j\theta_4} \tag{7.40} $$
+#
+# (the scanned chapter ends the line of $\mathbf{J}_B$ with a stray "= 0"), and any point from a
+# point of the same link, as for acceleration:
+#
+# $$ \mathbf{J}_P = \mathbf{J}_A + \mathbf{J}_{PA} \tag{7.41} $$
+
+# %% [markdown]
+# ## Worked examples
+#
+# ### 1. The fourbar at one position
+#
+# The fourbar of notebooks 3 and 7 ($a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in) at $\theta_2 = 30°$,
+# $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s², and a driving jerk $\varphi_2$ = 20 rad/s³.
+
+# %%
+fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
+r = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="20 rad/s^3",
+                  p="3 in", delta3="40 deg")
+print(f"phi3 = jerk3 = {r.jerk3:.2f~P}, phi4 = jerk4 = {r.jerk4:.2f~P}")
+for name in ("J_A", "J_B", "J_P"):
+    z = getattr(r, name)
+    print(f"{name} = {polar(z, 'in/s^3')} = {polar(z, 'm/s^3')}")
+
+# %% [markdown]
+# The chapter's constants and eqs. 7.36b and 7.39, evaluated by hand and checked against the
+# solver; then eq. 7.40 for $\mathbf{J}_B$ and eq. 7.41 for the coupler point.
+
+# %%
+a, b, c = 2.0, 6.0, 9.0                                        # in
+t2, w2, al2, ph2 = np.radians(30), 10.0, -5.0, 20.0
+t3, t4 = r.theta3.magnitude, r.theta4.magnitude
+w3, w4, al3, al4 = (getattr(r, k).magnitude for k in ("omega3", "omega4", "alpha3", "alpha4"))
+A, B, C = a * w2**3 * np.sin(t2), 3 * a * w2 * al2 * np.cos(t2), a * ph2 * np.sin(t2)   # eq. 7.36a
+D, E, F = b * w3**3 * np.sin(t3), 3 * b * w3 * al3 * np.cos(t3), c * w4**3 * np.sin(t4)
+G, H, K = 3 * c * w4 * al4 * np.cos(t4), c * np.sin(t4), b * np.sin(t3)
+L, M, N = a * w2**3 * np.cos(t2), 3 * a * w2 * al2 * np.sin(t2), a * ph2 * np.cos(t2)   # eq. 7.37a
+P, Q, R = b * w3**3 * np.cos(t3), 3 * b * w3 * al3 * np.sin(t3), b * np.cos(t3)
+S, T, U = c * w4**3 * np.cos(t4), 3 * c * w4 * al4 * np.sin(t4), c * np.cos(t4)
+phi4 = (K * N - K * L - K * M - K * P - K * Q + A * R - B * R - C * R + D * R - E * R - F * R
+        + G * R + K * S + K * T) / (K * U - H * R)                                    # eq. 7.39
+phi3 = (A - B - C + D - E - F + G + H * phi4) / K                                      # eq. 7.36b
+assert np.isclose(phi3, r.jerk3.magnitude, rtol=1e-12)
+assert np.isclose(phi4, r.jerk4.magnitude, rtol=1e-12)
+e4 = np.exp(1j * t4)
+J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4                # eq. 7.40
+assert np.isclose(J_B, r.J_B.to("in/s^3").magnitude, rtol=1e-12)
+J_PA = r.point(3, "3 in", "40 deg").J - r.J_A                                          # eq. 7.41
+assert np.isclose((r.J_A + J_PA - r.J_P).to("in/s^3").magnitude, 0, atol=1e-9)
+print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as the solver says")
+
+# %% [markdown]
+# ### 2. Checking jerk against a numerical derivative
+#
+# A closed form is only as good as its derivation. An independent check: at a steady
+# $\omega_2$ = 10 rad/s, $\theta_2 = \omega_2 t$, so $\varphi_3 = d\alpha_3/dt = \omega_2\,
+# d\alpha_3/d\theta_2$. We take $\alpha_3$ on a grid of crank angles, differentiate it numerically
+# (central differences) and lay the result over the solver's `jerk3`.
+
+# %%
+h = np.radians(0.5)                                              # grid step of theta2
+grid = np.arange(0, 2 * np.pi + h / 2, h)
+cyc = fourbar.solve(theta2=Q_(grid, "rad"), omega2="10 rad/s", alpha2=0)
+alpha3 = cyc.alpha3.magnitude
+numeric = 10.0 * (np.roll(alpha3, -1) - np.roll(alpha3, 1)) / (2 * h)   # periodic central difference
+numeric[[0, -1]] = 10.0 * (alpha3[1] - alpha3[-2]) / (2 * h)            # 0 and 360 deg are one point
+jerk3 = cyc.jerk3.magnitude
+error = np.abs(numeric - jerk3)
+deg = np.degrees(grid)
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
+ax1.plot(deg, jerk3, color="black", lw=2, label=r"$\varphi_3$, solver (eq. 7.39)")
+ax1.plot(deg[::12], numeric[::12], "o", color=COLORS["tangential"], ms=5,
+         label=r"$\omega_2\,\Delta\alpha_3/\Delta\theta_2$ (central differences)")
+ax1.set_ylabel(r"$\varphi_3$ [rad/s$^3$]")
+ax1.set_title("Jerk of the coupler at 10 rad/s")
+ax1.legend(fontsize=9)
+ax2.semilogy(deg, error / np.abs(jerk3).max(), color=COLORS["normal"])
+ax2.set_ylabel("|difference| / largest |jerk3|")
+ax2.set_title("They differ by the finite-difference error, $O(h^2)$")
+for ax in (ax1, ax2):
+    ax.set_xlabel(r"$\theta_2$ [deg]")
+    ax.set_xticks(range(0, 361, 60))
+plt.show()
+print(f"largest difference: {error.max() / np.abs(jerk3).max():.1e} of the largest jerk "
+      f"(step {np.degrees(h)} deg); halving the step divides it by about 4")
+assert error.max() < 1e-3 * np.abs(jerk3).max()
+
+# %% [markdown]
+# The check above is at steady speed, where $\varphi_2 = 0$. The next cell checks one instant of
+# a general motion: the crank at $\theta_2 = 30°$ with $\omega_2$ = 10 rad/s, $\alpha_2$ = -5
+# rad/s² and $\varphi_2$ = 20 rad/s³. A short time $\Delta t$ earlier and later the crank's angle,
+# speed and acceleration follow from a Taylor expansion, so we can solve both instants and take
+# $(\alpha_3(\Delta t) - \alpha_3(-\Delta t))/2\Delta t$.
+
+# %%
+def crank_at(dt):
+    """theta2, omega2, alpha2 at time dt for a motion with constant jerk 20 rad/s^3."""
+    return (np.radians(30) + 10 * dt - 5 * dt**2 / 2 + 20 * dt**3 / 6,
+            10 - 5 * dt + 20 * dt**2 / 2, -5 + 20 * dt)
+
+
+dt = 1e-4
+later, earlier = (fourbar.solve(theta2=Q_(th, "rad"), omega2=Q_(w, "rad/s"),
+                                alpha2=Q_(al, "rad/s^2"), jerk2="20 rad/s^3")
+                  for th, w, al in (crank_at(dt), crank_at(-dt)))
+fd = (later.alpha3 - earlier.alpha3).magnitude / (2 * dt)
+fdJ = (later.A_B - earlier.A_B).to("in/s^2").magnitude / (2 * dt)
+J_B = r.J_B.to("in/s^3").magnitude
+print(f"(alpha3(+dt) - alpha3(-dt)) / 2dt = {fd:.4f} rad/s^3, solver jerk3 = {r.jerk3.magnitude:.4f}")
+print(f"(A_B(+dt) - A_B(-dt)) / 2dt = {fdJ:.2f} in/s^3, solver J_B = {J_B:.2f} in/s^3")
+print(f"relative differences: {abs(fd / r.jerk3.magnitude - 1):.1e} and {abs(fdJ - J_B) / abs(J_B):.1e}")
+assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_B)
+
+# %% [markdown]
+# ### 3. Linear jerk of points, and the other mechanisms
+#
+# Over a cycle at 10 rad/s, the pins' and the coupler point's jerks (eqs. 7.40-7.41), then the
+# other mechanisms of the chapter, each at a steady input speed: the slider-crank's piston
+# ($\dddot d$), the inverted slider-crank's link 4 ($\varphi_4$) and the geared fivebar's coupler
+# ($\varphi_3$). At steady speed every jerk is proportional to $\omega_2^3$: double the speed and
+# the jerk grows eightfold.
+
+# %%
+theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
+deg = np.degrees(theta.magnitude)
+cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="40 deg")
+engine = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="3000 rpm", alpha2=0)
+isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg").solve(
+    theta2=theta, omega2="10 rad/s", alpha2=0)
+fivebar = GearedFiveBar(a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in", lam=-2,
+                        phi="30 deg").solve(theta2=theta, omega2="20 rad/s", alpha2=0)
+fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+ax = axes[0, 0]
+for name, colour in (("J_A", COLORS["normal"]), ("J_B", COLORS["tangential"]), ("J_P", "black")):
+    ax.plot(deg, np.abs(getattr(cyc, name).to("in/s^3").magnitude), color=colour,
+            label=rf"$|\mathbf{{J}}_{name[-1]}|$")
+ax.set_ylabel(r"[in/s$^3$]")
+ax.set_title("Fourbar at 10 rad/s: linear jerk of A, B, P")
+ax.legend(fontsize=9)
+ax = axes[0, 1]
+ax.plot(deg, engine.d_dddot.to("m/s^3").magnitude / 1e6, color="black")
+ax.set_ylabel(r"$\dddot d$ [10$^6$ m/s$^3$]")
+ax.set_title("Slider-crank piston, 40 mm crank, 3000 rpm")
+ax = axes[1, 0]
+ax.plot(deg, isc.jerk4.magnitude, color="black")
+ax.set_ylabel(r"$\varphi_4$ [rad/s$^3$]")
+ax.set_title("Inverted slider-crank (notebook 5), 10 rad/s")
+ax = axes[1, 1]
+ax.plot(deg, fivebar.jerk3.magnitude / 1000, color="black")
+ax.set_ylabel(r"$\varphi_3$ [10$^3$ rad/s$^3$]")
+ax.set_title(r"Geared fivebar (notebook 6), $\lambda$ = -2, 20 rad/s")
+for ax in axes.flat:
+    ax.set_xlabel(r"$\theta_2$ [deg]")
+    ax.set_xticks(range(0, 361, 60))
+plt.show()
+print(f"piston: largest |d'''| = {np.abs(engine.d_dddot.to('m/s^3').magnitude).max():.3g} m/s^3 "
+      f"at 3000 rpm; at 6000 rpm it would be 8 times that")
+
+# %% [markdown]
+# The curves are smooth wherever the linkage is far from a toggle: a linkage driven at steady speed
+# has finite jerk everywhere it can be assembled. The inverted slider-crank's sharp swing near
+# $\theta_2 = 0$ is where the crank pin passes closest to $O_4$ and link 4 swings fastest; its
+# jerk there is large but finite.
+#
+# ### 4. Why jerk matters: vibration
+#
+# Every real part is elastic. Model what a mechanism carries as a mass on a spring, with natural
+# period $T_n$, riding on a base whose acceleration changes from 0 to $A_0$. If the change is
+# instantaneous (infinite jerk), the mass is left oscillating with an amplitude equal to the whole
+# static deflection $A_0/\omega_n^2$. If the change is spread over a time $\tau$ (jerk
+# $A_0/\tau$), the leftover vibration is smaller; for this undamped model its amplitude is
+#
+# $$ \frac{A_0}{\omega_n^2}\left|\frac{\sin(\omega_n\tau/2)}{\omega_n\tau/2}\right| . $$
+#
+# The cell integrates the model numerically (a convolution with its impulse response) and
+# checks the formula.
+
+# %%
+wn = 2 * np.pi                                                    # natural period T_n = 1 s
+dt = 1e-3
+t = np.arange(0, 6, dt)
+impulse = np.sin(wn * t) / wn * dt                                # response to a unit impulse
+
+
+def leftover(tau):
+    """Amplitude of the vibration left after a base acceleration ramps 0 -> 1 in time tau."""
+    A = np.clip(t / tau, 0, 1) if tau > 0 else np.ones_like(t)
+    x = -np.convolve(A, impulse)[: len(t)]                        # x'' + wn^2 x = -A(t)
+    tail = t > tau + 1e-9
+    return x, np.abs(x[tail] + 1 / wn**2).max() * wn**2           # in units of A0/wn^2
+
+
+taus = np.linspace(0, 3, 61)
+simulated = np.array([leftover(tau)[1] for tau in taus])
+formula = np.abs(np.sinc(taus))                                   # sin(pi tau)/(pi tau), T_n = 1 s
+assert np.allclose(simulated, formula, atol=5e-3)
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
+for tau, colour, label in ((0, COLORS["tangential"], "step: infinite jerk"),
+                           (1.5, COLORS["normal"], r"ramp over $\tau$ = 1.5 $T_n$")):
+    x, _ = leftover(tau)
+    ax1.plot(t, -x * wn**2, color=colour, label=label)
+ax1.set_xlabel(r"time [$T_n$]")
+ax1.set_ylabel(r"deflection [$A_0/\omega_n^2$]")
+ax1.set_title("Response of a spring-mass to a change of acceleration")
+ax1.legend(fontsize=9)
+ax2.plot(taus, formula, color="black", label="formula")
+ax2.plot(taus[::3], simulated[::3], "o", color=COLORS["tangential"], ms=4, label="simulated")
+ax2.set_xlabel(r"ramp time $\tau$ [$T_n$]  (jerk = $A_0/\tau$)")
+ax2.set_ylabel(r"leftover vibration [$A_0/\omega_n^2$]")
+ax2.set_title("Less jerk, less vibration (mostly)")
+ax2.legend(fontsize=9)
+plt.show()
+
+# %% [markdown]
+# Spreading the change of acceleration over more than about one natural period (lower jerk) cuts
+# the leftover vibration several times over; a sudden change leaves the most. (At exact multiples
+# of $T_n$ the ramp happens to cancel its own vibration, a trick used in motion control.) This is
+# why jerk matters more for **cams** than for linkages: a cam profile can impose any motion,
+# including one whose acceleration jumps, and the next chapter's cam design rules insist that the
+# follower's acceleration be continuous so that its jerk stays finite. A linkage at steady speed
+# gives finite jerk automatically, as the curves of example 3 show, but the sizes still matter.
+#
+# ## Explore
+#
+# Jerk is the slope of the angular acceleration curve (times $\omega_2$). Move the crank and watch
+# the tangent: steep stretches of $\alpha_3$ are where the jerk is large.
+
+# %%
+steady = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0)
+
+
+def draw(theta2=60):
+    i = int(round(theta2))
+    al = steady.alpha3.magnitude
+    phi3 = steady.jerk3.magnitude[i]
+    slope = phi3 / 10.0 * np.pi / 180                            # d(alpha3)/d(theta2) per degree
+    fig, ax = plt.subplots(figsize=(6.4, 4))
+    ax.plot(deg, al, color="black", lw=2)
+    span = np.array([-25, 25])
+    ax.plot(theta2 + span, al[i] + slope * span, color=COLORS["tangential"], lw=2.5)
+    ax.plot(theta2, al[i], "o", color=COLORS["tangential"])
+    ax.set_xlabel(r"$\theta_2$ [deg]")
+    ax.set_ylabel(r"$\alpha_3$ [rad/s$^2$]")
+    ax.set_xticks(range(0, 361, 60))
+    ax.set_title(rf"$\theta_2$ = {theta2}°: $\varphi_3$ = {phi3:.0f} rad/s$^3$ (the slope)", fontsize=11)
+    return fig
+
+
+explore(draw, theta2=(0, 360, 5, 60, "deg"), values=(30, 100, 200, 300))
+
+# %% [markdown]
+# ## Check yourself
+#
+# 1. A crank turns at a steady speed. Is the jerk of its pin A zero?
+#
+# <details><summary>Answer</summary>
+#
+# No. With $\alpha_2 = \varphi_2 = 0$ eq. 7.40 leaves $\mathbf{J}_A = -a\omega_2^3 je^{j\theta_2}$:
+# the centripetal acceleration keeps its size but turns with the crank, and a turning vector is a
+# changing one. It points opposite to the velocity.
+#
+# </details>
+#
+# 2. The engine above runs twice as fast. What happens to the piston's largest acceleration and
+#    largest jerk?
+#
+# <details><summary>Answer</summary>
+#
+# At steady speed acceleration scales with $\omega_2^2$ (four times) and jerk with $\omega_2^3$
+# (eight times).
+#
+# </details>
+#
+# 3. How can you check a jerk computed by a closed form without deriving it again?
+#
+# <details><summary>Answer</summary>
+#
+# Differentiate the angular (or linear) acceleration numerically in time: solve at a few nearby
+# instants and take central differences, as example 2 does. The two must agree to the
+# finite-difference error, which falls as the step squared.
+#
+# </details>
+#
+# 4. Why does the chapter say jerk control matters more for cams than for linkages?
+#
+# <details><summary>Answer</summary>
+#
+# A linkage driven smoothly has smooth, finite jerk. A cam's profile is designed point by point
+# and can easily give a follower motion whose acceleration jumps (infinite jerk), which excites
+# vibration, as example 4 shows.
+#
+# </details>
+#
+# ## Common mistakes
+#
+# - **Differentiating $\omega^2$ as $2\omega$.** The derivative of $-L\omega^2 e^{j\theta}$ is
+#   $-2L\omega\alpha e^{j\theta} - L\omega^3 je^{j\theta}$; together with the tangential term's
+#   derivative it gives the $3\omega\alpha$ of eq. 7.34b.
+# - **Forgetting $\varphi_2$** when the input's acceleration changes (a motor starting up).
+# - **Copying eq. 7.40 with its stray "= 0"**, or any printed formula, without a check; a
+#   numerical derivative is the cheap independent check.
+# - **Numerical derivatives across a toggle or a branch change**: there the finite difference
+#   measures the jump, not a jerk.
+# - **Confusing $\varphi$ (jerk) with $\phi$ (the fivebar's phase).**
+#
+# [Next: 10. Linkages of N bars](10_nbar_linkages.ipynb)
