@@ -12,3 +12,104 @@ settings.register_profile("default", deadline=None, max_examples=60,
 settings.register_profile("ci", deadline=None, max_examples=60, derandomize=True,
                           suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile("ci" if os.environ.get("CI") else "default")
+
+
+# --------------------------------------------------------------------------
+# Strategies for random well-conditioned linkages (kernel arguments, SI floats).
+# Each builds the geometry from an assembled position, so every draw closes
+# its loop with the transmission angle (or its analogue) far from a toggle:
+# the sine of it stays above about 0.08.
+
+import math  # noqa: E402
+
+from hypothesis import assume, strategies as st  # noqa: E402
+
+lengths = st.floats(0.05, 2.0)
+angles = st.floats(-math.pi, math.pi)
+#: the angle at A between A->O4 and A->B: away from 0 and pi (a toggle)
+open_angles = st.floats(0.35, math.pi - 0.35)
+
+
+@st.composite
+def input_motion(draw):
+    """theta2, omega2 (nonzero), alpha2, jerk2 (nonzero) and the ground angle theta1."""
+    sign = draw(st.sampled_from([-1.0, 1.0]))
+    return {"theta1": draw(angles), "theta2": draw(angles),
+            "omega2": sign * draw(st.floats(0.5, 60.0)),
+            "alpha2": draw(st.floats(-800.0, 800.0)),
+            "jerk2": draw(st.sampled_from([-1.0, 1.0])) * draw(st.floats(1.0, 2e4))}
+
+
+def _third_side(first, second, psi, b):
+    """|B - second| where B = first + b e^{j(arg(second - first) + psi)}."""
+    u = (second - first) / abs(second - first)
+    return abs(first + b * u * complex(math.cos(psi), math.sin(psi)) - second)
+
+
+@st.composite
+def fourbars(draw):
+    """Kernel arguments of a well-conditioned fourbar: a, b, c, d, motion."""
+    m = draw(input_motion())
+    a, d = draw(lengths), draw(lengths)
+    t2 = m["theta2"] - m["theta1"]
+    A = a * complex(math.cos(t2), math.sin(t2))
+    s = abs(d - A)
+    assume(s > 0.1 * (a + d))
+    b = s * draw(st.floats(0.3, 3.0))
+    c = _third_side(A, complex(d, 0.0), draw(open_angles), b)
+    return dict(a=a, b=b, c=c, d=d, **m)
+
+
+@st.composite
+def fivebars(draw):
+    """Kernel arguments of a well-conditioned geared fivebar."""
+    m = draw(input_motion())
+    a, d, f = draw(lengths), draw(lengths), draw(lengths)
+    lam = draw(st.sampled_from([-3.0, -2.0, -1.0, -0.5, 0.5, 1.5, 2.0]))
+    phi = draw(angles)
+    t2 = m["theta2"] - m["theta1"]
+    A = a * complex(math.cos(t2), math.sin(t2))
+    t5 = lam * t2 + phi
+    C = f + d * complex(math.cos(t5), math.sin(t5))
+    s = abs(C - A)
+    assume(s > 0.1 * (a + d + f))
+    b = s * draw(st.floats(0.3, 3.0))
+    c = _third_side(A, C, draw(open_angles), b)
+    return dict(a=a, b=b, c=c, d=d, f=f, lam=lam, phi=phi, **m)
+
+
+@st.composite
+def slidercranks(draw):
+    """Kernel arguments of a well-conditioned offset slider-crank: the rod
+    makes at least 25 deg with the perpendicular to the slide."""
+    m = draw(input_motion())
+    a = draw(lengths)
+    b = a * draw(st.floats(0.3, 5.0))
+    t2 = m["theta2"] - m["theta1"]
+    sin3 = draw(st.floats(-0.9, 0.9))
+    c = a * math.sin(t2) - b * sin3          # offset that puts the rod at sin3
+    return dict(a=a, b=b, c=c, **m)
+
+
+@st.composite
+def invertedslidercranks(draw):
+    """Kernel arguments of a well-conditioned inverted slider-crank (c may be 0)."""
+    m = draw(input_motion())
+    a, d = draw(lengths), draw(lengths)
+    t2 = m["theta2"] - m["theta1"]
+    s = abs(a * complex(math.cos(t2), math.sin(t2)) - d)
+    assume(s > 0.1 * (a + d))
+    c = draw(st.one_of(st.just(0.0), st.floats(0.05, 2.0).map(lambda k: k * s)))
+    # |c sin gamma| <= 0.9 s keeps the slide line well inside A's reach
+    top = min(1.0, 0.9 * s / c) if c > 0 else 1.0
+    sin_g = draw(st.floats(-top, top))
+    gamma = math.asin(sin_g)
+    if draw(st.booleans()):
+        gamma = math.copysign(math.pi, gamma) - gamma
+    return dict(a=a, c=c, d=d, gamma=gamma, **m)
+
+
+@st.composite
+def points_on_links(draw, links):
+    """Extra points: (name, link, distance [m], angle from the link's line [rad])."""
+    return [(f"Q{k}", k, draw(st.floats(0.01, 2.0)), draw(angles)) for k in links]

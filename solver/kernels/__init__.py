@@ -3,10 +3,13 @@
 Nothing in this package imports pint. Each mechanism module has a ``solve``
 that returns a :class:`~solver.kernels.common.Motion` holding the angular
 (and slider) kinematics from position to jerk, a ``status`` code per position
-and a ``condition`` measure; :mod:`solver.kernels.points` turns those into
+a ``condition`` measure and a round-off estimate (``roundoff``) that
+decides which positions are too near a limit to vouch for; :mod:`solver.kernels.points` turns those into
 point positions, velocities, accelerations and jerks only when asked.
 """
 
-from .common import OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, SINGULAR_CONDITION, Motion
+from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, SINGULAR_CONDITION, MAX_ROUNDOFF,
+                     Motion)
 
-__all__ = ["OK", "NOT_ASSEMBLABLE", "SINGULAR", "STATUS_NAMES", "SINGULAR_CONDITION", "Motion"]
+__all__ = ["OK", "NOT_ASSEMBLABLE", "SINGULAR", "STATUS_NAMES", "SINGULAR_CONDITION",
+           "MAX_ROUNDOFF", "Motion"]

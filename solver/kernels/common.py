@@ -25,12 +25,64 @@ OK, NOT_ASSEMBLABLE, SINGULAR = 0, 1, 2
 STATUS_NAMES = {OK: "ok", NOT_ASSEMBLABLE: "not_assemblable", SINGULAR: "singular"}
 
 #: A position whose condition measure (1 best, 0 at a toggle) falls below this
-#: is reported ``singular``. Relative round-off in the derivatives grows like
-#: eps / condition**2 (about 1e-8 here), while the condition measure near a
-#: limit position grows like the square root of the distance to it in theta2,
-#: so only positions within about 1e-8 rad of a limit are refused. The
-#: benchmark's stability study (Chart 2) charts this choice against the data.
+#: is reported ``singular`` by the general vector-loop solver
+#: (:mod:`solver.vectorloops`), whose measure is that of its Jacobian. The
+#: closed-form kernels decide by :data:`MAX_ROUNDOFF` instead (see there).
 SINGULAR_CONDITION = 1e-4
+
+EPS = float(np.finfo(float).eps)
+
+#: The closed-form kernels refuse (report ``singular``) a position where the
+#: estimated relative round-off of their outputs exceeds this. Near a limit
+#: position every output follows from one small "gap" (the distance of
+#: |A - O4| from b + c or |b - c| in the fourbar; of |a sin theta2 - c| from b
+#: in the slider-crank; ...), computed with an absolute error of about
+#: eps * span (span: the sum of the link lengths that enter it). The outputs
+#: grow like gap**(-1/2) (omega) .. gap**(-5/2) (jerk), so their relative
+#: error is about ROUNDOFF_GAIN * eps * span / gap: that is ``Motion.roundoff``.
+#: Measured against 50-digit references (tests/test_limit_positions.py; 600
+#: random geometries with lengths spread over three decades, theta2 from 1e-3
+#: to 1e-11 rad from a limit) the worst output's error was at most 0.9 (fourbar,
+#: fivebar, inverted slider-crank) and 2.5 (slider-crank) times
+#: eps * span / gap, hence the gain 4. Refusing above 1e-6 keeps every answer
+#: at least ten times inside the 1e-5 that near-limit answers must meet, and
+#: answers every position farther than about 1e-7 rad (typical) .. 1e-6 rad
+#: (lengths three decades apart) from a limit. The sine of the transmission
+#: angle (``condition``) alone is not enough: at condition 1.3e-4 a fourbar
+#: with c/a = 1/400 was 1.1e-5 wrong in jerk4.
+MAX_ROUNDOFF = 1e-6
+ROUNDOFF_GAIN = 4.0
+
+
+def classify(gap, span):
+    """Status and estimated relative round-off of positions from their gap.
+
+    Parameters
+    ----------
+    gap : array
+        Distance of the position from its nearest limit, in the kernel's
+        length measure [m]: >= 0 where the loop closes, NaN or < 0 where not.
+    span : float
+        Sum of the lengths that enter the gap [m] (its absolute round-off is
+        about eps * span).
+
+    Returns
+    -------
+    status : int8 array
+        OK; SINGULAR where the round-off estimate exceeds
+        :data:`MAX_ROUNDOFF`, including a gap within round-off of zero on
+        either side (the kernels then take the limit position itself);
+        NOT_ASSEMBLABLE where the gap is clearly negative.
+    roundoff : float array
+        ROUNDOFF_GAIN * eps * span / gap (inf at and past a limit).
+    """
+    tol = 2.0 * EPS * span
+    with np.errstate(divide="ignore", invalid="ignore"):
+        roundoff = np.where(gap > 0, ROUNDOFF_GAIN * EPS * span / gap, np.inf)
+    closes = gap > -tol
+    status = np.where(closes, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR),
+                      NOT_ASSEMBLABLE).astype(np.int8)
+    return status, roundoff
 
 
 class Motion:
@@ -78,16 +130,24 @@ def jerk_term(L, cos, sin, omega, alpha, jerk):
     return re * cos - im * sin, re * sin + im * cos
 
 
-def triangle_angles(s, b, c):
+def triangle_angles(s, b, c, span):
     """Interior angles of a triangle with sides s, b, c, robust near degeneracy.
 
-    Returns ``(cos_psi, sin_psi, cos_chi, sin_chi, area4)`` where psi is the
-    angle between sides s and b, chi between s and c, and ``area4`` is four
-    times the area (NaN where the triangle cannot close: s > b + c or
-    s < |b - c|). The area uses the factored Heron form, which keeps full
-    relative accuracy as the triangle flattens (a toggle position).
+    Returns ``(cos_psi, sin_psi, cos_chi, sin_chi, area4, gap)`` where psi is
+    the angle between sides s and b, chi between s and c, ``area4`` is four
+    times the area, and ``gap`` = min(s + b - c, s - b + c, b + c - s), the
+    distance from the nearest degenerate (collinear) triangle: negative where
+    the triangle cannot close (area4 NaN there). The area uses the factored
+    Heron form, which keeps the relative accuracy of the gap as the triangle
+    flattens (a toggle position). A gap within round-off (2 eps span) below
+    zero is taken as zero: the toggle position itself.
     """
-    prod = (s + b + c) * (s + b - c) * (s - b + c) * (b + c - s)
+    f2 = s + b - c
+    f3 = s - b + c
+    f4 = b + c - s
+    gap = np.minimum(np.minimum(f2, f3), f4)
+    prod = (s + b + c) * f2 * f3 * f4
+    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, prod)
     with np.errstate(invalid="ignore"):
         area4 = np.sqrt(prod)
     ss = s * s
@@ -98,7 +158,7 @@ def triangle_angles(s, b, c):
         sin_psi = area4 / (2.0 * s * b)
         cos_chi = (ss + cc - bb) / (2.0 * s * c)
         sin_chi = area4 / (2.0 * s * c)
-    return cos_psi, sin_psi, cos_chi, sin_chi, area4
+    return cos_psi, sin_psi, cos_chi, sin_chi, area4, gap
 
 
 def as_arrays(*values):

@@ -23,8 +23,7 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, SINGULAR_CONDITION, Motion,
-                     acc_term, jerk_term, triangle_angles)
+from .common import OK, Motion, acc_term, classify, jerk_term, triangle_angles
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -53,7 +52,8 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     -------
     Motion
         theta3, theta4, theta5 [rad]; omega3..5; alpha3..5; jerk3..5;
-        ``status``; ``condition`` = |sin(theta3 - theta4)|.
+        ``status``; ``condition`` = |sin(theta3 - theta4)|; ``roundoff``
+        (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
     theta2 = np.asarray(theta2, dtype=float)
@@ -64,7 +64,8 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     rx = f + d * cos5 - a * cos2   # r = C - A
     ry = d * sin5 - a * sin2
     s = np.hypot(rx, ry)
-    cos_psi, sin_psi, cos_chi, sin_chi, area4 = triangle_angles(s, b, c)
+    span = a + b + c + d + f
+    cos_psi, sin_psi, cos_chi, sin_chi, area4, gap = triangle_angles(s, b, c, span)
     with np.errstate(invalid="ignore", divide="ignore"):
         ux, uy = rx / s, ry / s
     sp = sigma * sin_psi
@@ -74,15 +75,13 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     c4 = -(ux * cos_chi + uy * sc)
     s4 = -(uy * cos_chi - ux * sc)
     S = -sigma * area4 / (2.0 * b * c)
-    assembled = ~np.isnan(area4)
     condition = np.abs(S)
-    status = np.where(assembled, np.where(~(condition >= SINGULAR_CONDITION), SINGULAR, OK),
-                      NOT_ASSEMBLABLE).astype(np.int8)
+    status, roundoff = classify(gap, span)
     with np.errstate(invalid="ignore"):
         theta3 = np.arctan2(s3, c3) + theta1
         theta4 = np.arctan2(s4, c4) + theta1
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
-                 status=status, condition=condition, circuit=circuit)
+                 status=status, condition=condition, roundoff=roundoff, circuit=circuit)
     if order < 1:
         return out
     bad = status != OK

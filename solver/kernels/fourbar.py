@@ -24,8 +24,7 @@ auxiliary constants A..F; the same 2x2 matrix serves every order.
 
 import numpy as np
 
-from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, SINGULAR_CONDITION, Motion,
-                     acc_term, jerk_term, triangle_angles)
+from .common import OK, Motion, acc_term, classify, jerk_term, triangle_angles
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -33,13 +32,15 @@ CIRCUITS = {"open": 1.0, "crossed": -1.0}
 def position(a, b, c, d, cos2, sin2, sigma):
     """Unit vectors of links 3 and 4 in the ground frame.
 
-    Returns ``(c3, s3, c4, s4, S, ok)``: cos/sin of theta3 and theta4 measured
-    from the ground line, S = sin(theta3 - theta4), and the assembly mask.
+    Returns ``(c3, s3, c4, s4, S, gap)``: cos/sin of theta3 and theta4
+    measured from the ground line, S = sin(theta3 - theta4), and the gap of
+    the triangle A-B-O4 (the distance of |A - O4| from b + c or |b - c|,
+    negative where the loop cannot close).
     """
     rx = d - a * cos2            # r = O4 - A
     ry = -a * sin2
     s = np.hypot(rx, ry)
-    cos_psi, sin_psi, cos_chi, sin_chi, area4 = triangle_angles(s, b, c)
+    cos_psi, sin_psi, cos_chi, sin_chi, area4, gap = triangle_angles(s, b, c, a + b + c + d)
     with np.errstate(invalid="ignore", divide="ignore"):
         ub_x, ub_y = rx / s, ry / s  # unit vector A -> O4
     # theta3 = beta + sigma psi ; theta4 = beta + pi - sigma chi
@@ -50,7 +51,7 @@ def position(a, b, c, d, cos2, sin2, sigma):
     c4 = -(ub_x * cos_chi + ub_y * sc)
     s4 = -(ub_y * cos_chi - ub_x * sc)
     S = -sigma * area4 / (2.0 * b * c)
-    return c3, s3, c4, s4, S, ~np.isnan(area4)
+    return c3, s3, c4, s4, S, gap
 
 
 def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
@@ -77,8 +78,11 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     -------
     Motion
         theta3, theta4 [rad]; omega3, omega4 [rad/s]; alpha3, alpha4
-        [rad/s^2]; jerk3, jerk4 [rad/s^3]; ``status`` and ``condition``
-        (|sin(theta3 - theta4)|, the sine of the transmission angle).
+        [rad/s^2]; jerk3, jerk4 [rad/s^3]; ``status``; ``condition``
+        (|sin(theta3 - theta4)|, the sine of the transmission angle) and
+        ``roundoff``, the estimated relative round-off of the derivatives
+        (positions where it exceeds :data:`~solver.kernels.common.MAX_ROUNDOFF`
+        are ``singular``: within about 1e-7 rad of a toggle).
 
     Notes
     -----
@@ -89,15 +93,14 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     theta2 = np.asarray(theta2, dtype=float)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
-    c3, s3, c4, s4, S, assembled = position(a, b, c, d, cos2, sin2, sigma)
+    c3, s3, c4, s4, S, gap = position(a, b, c, d, cos2, sin2, sigma)
     condition = np.abs(S)
-    status = np.where(assembled, np.where(condition < SINGULAR_CONDITION, SINGULAR, OK),
-                      NOT_ASSEMBLABLE).astype(np.int8)
+    status, roundoff = classify(gap, a + b + c + d)
     with np.errstate(invalid="ignore"):
         theta3 = np.arctan2(s3, c3) + theta1
         theta4 = np.arctan2(s4, c4) + theta1
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, status=status,
-                 condition=condition, circuit=circuit)
+                 condition=condition, roundoff=roundoff, circuit=circuit)
     if order < 1:
         return out
     bad = status != OK

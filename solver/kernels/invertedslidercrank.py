@@ -30,8 +30,7 @@ perpendicular from the slide line to O4's circle: a limit position).
 
 import numpy as np
 
-from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, SINGULAR_CONDITION, Motion,
-                     acc_term, jerk_term)
+from .common import EPS, OK, Motion, acc_term, classify, jerk_term
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -60,7 +59,8 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     Motion
         theta3, theta4 [rad] (theta3 = theta4 + gamma); omega3 = omega4;
         alpha3 = alpha4; jerk3 = jerk4; b [m], b_dot, b_ddot, b_dddot;
-        ``status``; ``condition`` = |b + c cos gamma| / |A - O4|.
+        ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
+        (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
     theta2 = np.asarray(theta2, dtype=float)
@@ -71,23 +71,26 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     ry = a * sin2
     s = np.hypot(rx, ry)
     csg = c * sg
+    span = a + c + d
+    # gap = s - c |sin gamma|: how far A is from the nearest reach of the
+    # slide line (0: the line is tangent there); within round-off below 0, 0
+    gap = np.minimum(s - csg, s + csg)
+    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (s - csg) * (s + csg))
     with np.errstate(invalid="ignore", divide="ignore"):
-        root = np.sqrt((s - csg) * (s + csg))
+        root = np.sqrt(prod)
         b = -c * cg + sigma * root
         # e4 = r / (b e^{j gamma} + c) normalised; (px, py) = b e^{j gamma} + c has length s
         px, py = b * cg + c, b * sg
         c4 = (rx * px + ry * py) / (s * s)
         s4 = (ry * px - rx * py) / (s * s)
         condition = root / s
-    assembled = ~np.isnan(root)
-    status = np.where(assembled, np.where(~(condition >= SINGULAR_CONDITION), SINGULAR, OK),
-                      NOT_ASSEMBLABLE).astype(np.int8)
+    status, roundoff = classify(gap, span)
     c3 = c4 * cg - s4 * sg
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
-                 condition=condition, circuit=circuit, gamma=gamma)
+                 condition=condition, roundoff=roundoff, circuit=circuit, gamma=gamma)
     if order < 1:
         return out
     bad = status != OK

@@ -20,8 +20,7 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 
 import numpy as np
 
-from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, SINGULAR_CONDITION, Motion,
-                     acc_term, jerk_term)
+from .common import EPS, OK, Motion, acc_term, classify, jerk_term
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
@@ -50,25 +49,29 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     Motion
         theta3 [rad], omega3, alpha3, jerk3; d [m] (slider position along the
         slide axis from O2), d_dot [m/s], d_ddot [m/s^2], d_dddot [m/s^3];
-        ``status``; ``condition`` = |cos theta3 (relative to the slide)|.
+        ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
+        ``roundoff`` (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
     theta2 = np.asarray(theta2, dtype=float)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     y = a * sin2 - c
+    span = a + b + abs(c)
+    # gap = b - |y|: how far the crank pin is from the rod's reach (0: rod
+    # perpendicular to the slide); within round-off below 0, take it as 0
+    gap = np.minimum(b - y, b + y)
+    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (b - y) * (b + y))
     with np.errstate(invalid="ignore"):
-        c3 = sigma * np.sqrt((b - y) * (b + y)) / b
-    s3 = y / b
-    assembled = ~np.isnan(c3)
+        c3 = sigma * np.sqrt(prod) / b
+    s3 = np.clip(y / b, -1.0, 1.0)
     condition = np.abs(c3)
-    status = np.where(assembled, np.where(condition < SINGULAR_CONDITION, SINGULAR, OK),
-                      NOT_ASSEMBLABLE).astype(np.int8)
-    s3 = np.where(assembled, s3, np.nan)
+    status, roundoff = classify(gap, span)
+    s3 = np.where(np.isnan(c3), np.nan, s3)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
     out = Motion(theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
-                 circuit=circuit)
+                 roundoff=roundoff, circuit=circuit)
     if order < 1:
         return out
     bad = status != OK

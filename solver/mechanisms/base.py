@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
-from ..kernels import OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, SINGULAR_CONDITION
+from ..kernels import OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, MAX_ROUNDOFF
 from ..kernels import points
 from ..units import Q_, quantity, to_si
 
@@ -230,8 +230,8 @@ class Result:
 
     @property
     def condition(self):
-        """Dimensionless condition measure (1 best; below
-        :data:`~solver.kernels.SINGULAR_CONDITION` the position is singular)."""
+        """Dimensionless condition measure (1 best, 0 at a toggle): the sine
+        of the transmission angle, or its analogue for each mechanism."""
         c = self._motion.condition
         return float(c) if self._scalar else c
 
@@ -402,12 +402,17 @@ class Mechanism:
         if motion.status == NOT_ASSEMBLABLE:
             raise NotAssemblable(f"{type(self).__name__} cannot be assembled at {where}: "
                                  f"{self._not_assemblable_reason(motion, inputs)}")
+        roundoff = float(getattr(motion, "roundoff", np.inf))
+        cost = ("exactly there" if not np.isfinite(roundoff) else
+                f"round-off would spoil about {roundoff:.1e} of each output, more than the "
+                f"{MAX_ROUNDOFF:g} the solver vouches for")
         raise Singular(f"{type(self).__name__} is at (or within round-off of) a limit position "
                        f"at {where}: {self._singular_reason()} (condition "
-                       f"{float(motion.condition):.2e} < {SINGULAR_CONDITION:g}), so its "
-                       f"velocity and acceleration equations are singular there. Move theta2 "
-                       f"away from the limit, or pass an array of theta2 to get a validity "
-                       f"mask instead of this error.", condition=float(motion.condition))
+                       f"{float(motion.condition):.2e}), so its velocity and acceleration "
+                       f"equations are singular or nearly so ({cost}). Move theta2 "
+                       f"away from the limit (about 1e-6 rad is enough), or pass an array of "
+                       f"theta2 to get a validity mask instead of this error.",
+                       condition=float(motion.condition))
 
     def _not_assemblable_reason(self, motion, inputs):
         return "the links cannot close the vector loop. Change theta2 or the link lengths."
