@@ -54,34 +54,26 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
         ``q_d``: list of (N, n_unknowns) arrays [q', q'', q''']; ``L``,
         ``theta``, ``e`` (N, n_vectors); ``dL``, ``dth``: lists of
         (N, n_vectors) derivatives of every vector's length and angle;
-        ``J``: the Jacobians (N, 2 n_loops, n_unknowns).
+        ``J``: the Jacobians (N, 2 n_loops, n_unknowns), rows the real and
+        imaginary part of each loop in turn.
     """
     s = system
     N = q.shape[0]
-    nv = len(s.fixed_length)
-    L = np.broadcast_to(s.fixed_length, (N, nv)).copy()
-    L[:, s.vl] = q[:, s.il]
-    base = np.zeros((N, nv))
-    base[:, s.vin] = theta2[:, None]
-    base[:, s.va] = q[:, s.ia]
-    theta = s.ratio * base + s.offset
-    e = np.cos(theta) + 1j * np.sin(theta)
-    # Jacobian stack
-    D = np.zeros((N, nv, s.n_unknowns), dtype=complex)
-    D[:, s.vl, s.il] = e[:, s.vl]
-    D[:, s.va, s.ia] += 1j * s.ratio[s.va] * L[:, s.va] * e[:, s.va]
-    Jc = np.einsum("lv,nvu->nlu", s.signs, D)
-    J = np.concatenate([Jc.real, Jc.imag], axis=1)
-    zeros = np.zeros((N, nv))
-    dL = [zeros.copy() for _ in range(3)]
-    dth = [zeros.copy() for _ in range(3)]
+    nv = s.n_vectors
+    L, theta = s.vectors(q, theta2)
+    L = np.array(L)                       # (N, nv), writable
+    c, sn = np.cos(theta), np.sin(theta)
+    e = c + 1j * sn
+    J = s.evaluate_lt(L, c, sn)[1]        # rows: (real, imaginary) of each loop
+    dL = [np.zeros((N, nv)) for _ in range(3)]
+    dth = [np.zeros((N, nv)) for _ in range(3)]
     q_d = []
+    signs_T = s.signs.T.astype(complex)
     for n in range(1, order + 1):
         # the input's share of theta_v^(n); unknowns' n-th derivatives still zero
         dth[n - 1][:, s.vin] = s.ratio[s.vin] * inputs[n - 1][:, None]
-        known = vector_derivative(n, L, dL, dth, e)
-        K = np.einsum("lv,nv->nl", s.signs, known)
-        rhs = -np.concatenate([K.real, K.imag], axis=1)
+        K = vector_derivative(n, L, dL, dth, e) @ signs_T       # (N, n_loops) complex
+        rhs = -K.view(np.float64)                               # interleaved re, im
         x = np.linalg.solve(J, rhs[..., None])[..., 0]
         q_d.append(x)
         dL[n - 1][:, s.vl] = x[:, s.il]

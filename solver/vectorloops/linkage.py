@@ -5,6 +5,7 @@ import numpy as np
 from ..errors import InvalidInput, NotAssemblable, Singular
 from ..kernels import NOT_ASSEMBLABLE, OK, STATUS_NAMES
 from ..units import quantity, to_si
+from .newton import DEFAULT_TOL
 from .solve import solve, system_from_case
 
 
@@ -44,10 +45,30 @@ class VectorLoopLinkage:
     def from_case(cls, case):
         return cls(case.get("vectors"), case.get("loops"), case.get("points"))
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, order=3):
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, order=3, tol=DEFAULT_TOL):
         """Solve at one input angle or along an array of them (one assembly).
 
-        Parameters are Quantities or strings as for :meth:`FourBar.solve`.
+        Parameters
+        ----------
+        theta2 : Quantity or str, scalar or 1-D array
+            Input angle(s) [angle]. An array is a sweep: it follows the
+            assembly the guesses pick, position after position.
+        omega2, alpha2, jerk2 : Quantity or str
+            Input angular velocity [rad/s], acceleration [rad/s^2] and jerk
+            [rad/s^3] (scalars, or arrays shaped like theta2).
+        order : int
+            Highest derivative solved: 1 velocity, 2 acceleration, 3 jerk.
+        tol : float
+            Newton-Raphson's convergence tolerance, dimensionless (default
+            1e-13, which converges to round-off). Newton stops at a position
+            when the loop residual is at most ``tol`` times the longest link
+            and its last full step moved no unknown by more than
+            ``1e-8 * sqrt(tol / 1e-13)`` (radians, or lengths over the longest
+            link); it always takes at least one step. A looser ``tol`` (up to
+            1e-2) stops sooner; the positions are then accurate to about
+            ``tol`` divided by the condition measure, and velocity to jerk,
+            solved exactly at the positions found, inherit that error.
+
         A scalar theta2 that cannot be assembled or is singular raises
         NotAssemblable / Singular (a NoConvergence carries the residual);
         an array gives NaN and a ``valid`` mask there.
@@ -59,7 +80,7 @@ class VectorLoopLinkage:
         if order != 3:
             if order not in (1, 2):
                 raise InvalidInput("order must be 1, 2 or 3", "order")
-        motion = solve(self.system, t2, w2, a2, j2, order)
+        motion = solve(self.system, t2, w2, a2, j2, order, tol=tol)
         scalar = np.ndim(t2) == 0
         if scalar and motion.status[0] != OK:
             err = motion.message
