@@ -9,8 +9,9 @@ plain relative error where x is of its usual size or larger (near a toggle
 the derivatives grow without bound, and are judged against their own size),
 and an error relative to the output's typical size where x passes through
 zero (where a pointwise relative error means nothing). Angle differences are
-taken modulo 2 pi. A position where a method returned NaN (it refused) has
-no error; :func:`summary` counts it as flagged.
+taken modulo 2 pi. A position where a method returned NaN for any output
+(it refused, or refused the derivatives, as a kernel does at a ``singular``
+position) has no error; :func:`summary` counts it as flagged.
 """
 
 import numpy as np
@@ -47,12 +48,11 @@ def relative_errors(values, reference, scale, names=None):
 
 
 def worst(errors):
-    """Per-position worst error over the outputs (NaN where every output is NaN)."""
+    """Per-position worst error over the outputs; NaN where any output is NaN
+    (the method refused that position, or part of it: a kernel that reports
+    ``singular`` still gives the position but no derivatives)."""
     stack = np.vstack([np.asarray(e, dtype=float) for e in errors.values()])
-    with np.errstate(invalid="ignore"):
-        bad = np.all(np.isnan(stack), axis=0)
-        w = np.nanmax(np.where(np.isnan(stack), -np.inf, stack), axis=0)
-    return np.where(bad, np.nan, w)
+    return np.max(stack, axis=0)  # NaN propagates
 
 
 def summary(errors):

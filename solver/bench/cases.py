@@ -277,16 +277,16 @@ def description(case, guess=None):
     vectors = {}
     for name, v in case.vectors.items():
         out = {}
-        out["length"] = "unknown" if v["length"] == "unknown" else f"{v['length']!r} m"
+        out["length"] = "unknown" if v["length"] == "unknown" else f"{float(v['length'])!r} m"
         angle = v["angle"]
         if isinstance(angle, dict):
             out["angle"] = {"follow": angle["follow"], "ratio": angle.get("ratio", 1.0),
-                            "offset": f"{angle.get('offset', 0.0)!r} rad"}
+                            "offset": f"{float(angle.get('offset', 0.0))!r} rad"}
         elif angle in ("input", "unknown"):
             out["angle"] = angle
         else:
-            out["angle"] = f"{angle!r} rad"
+            out["angle"] = f"{float(angle)!r} rad"
         if name in guess:
-            out["guess"] = f"{guess[name]!r} {'m' if v['length'] == 'unknown' else 'rad'}"
+            out["guess"] = f"{float(guess[name])!r} {'m' if v['length'] == 'unknown' else 'rad'}"
         vectors[name] = out
     return {"vectors": vectors, "loops": list(case.loops), "points": {}}

@@ -157,21 +157,27 @@ class LoopReference:
     def _newton(self, q0, theta2, strict):
         """Close the loops from ``q0`` (list of mpf).
 
-        ``strict`` iterates until a step is below the working precision;
+        ``strict`` iterates until a step is below the working precision, or
+        stops shrinking once below its square root (round-off reached: near
+        a toggle the Jacobian's conditioning limits how small a step gets);
         otherwise it stops once a step is below 10^(-dps/2 + 1): quadratic
         convergence then leaves an error near 10^-dps times the curvature,
         far below float64 on a well-conditioned cycle.
         """
         q0 = list(q0)
-        stop = mp.mpf(10) ** (-(mp.mp.dps - 6) if strict else -(mp.mp.dps // 2 - 1))
+        half = mp.mpf(10) ** (-(mp.mp.dps // 2 - 1))
+        stop = mp.mpf(10) ** (-(mp.mp.dps - 6)) if strict else half
+        last = None
         for _ in range(80):
             state = self._state([q0], [theta2])
             F = self._loops(state, 0)
             J = self._jacobian(state)
             dq = mp.lu_solve(J, mp.matrix([-f for f in F]))
             q0 = [q0[k] + dq[k] for k in range(len(q0))]
-            if max(abs(x) for x in dq) < stop:
+            size = max(abs(x) for x in dq)
+            if size < stop or (last is not None and size < half and size > last / 4):
                 return q0
+            last = size
         raise ArithmeticError(f"{self.case.name}: reference Newton did not converge at "
                               f"theta2 = {float(theta2)!r}")
 

@@ -1,0 +1,136 @@
+"""How cost grows with the work, and what units cost.
+
+* :func:`positions` -- time per position against the number of positions
+  (1 .. 10^6) for the fourbar, position to jerk (position to acceleration
+  for the peers, which stop there), per method;
+* :func:`loops` -- time per position of the general solver against the
+  number of loops (fourbar 1, sixbar 2, eightbar 3);
+* :func:`units` -- the unit-aware API against the unit-free layer at 1, 360
+  and 10^5 positions.
+
+All on the case ``fourbar-open`` of :mod:`.cases` unless said otherwise.
+"""
+
+import numpy as np
+
+from .cases import all_cases, from_example
+from .methods import NotApplicable, methods, unit_inputs, unit_mechanism
+from .timing import measure
+
+#: largest N each method is timed at (the slow ones stop early), full and quick
+MAX_N = {"kernels": 10 ** 6, "kernels-o2": 10 ** 6, "units": 10 ** 6, "scalar": 10 ** 4,
+         "loops": 10 ** 4, "pylinkage": 10 ** 6, "mechanism": 10 ** 3}
+QUICK_MAX_N = {"kernels": 10 ** 5, "kernels-o2": 10 ** 5, "units": 10 ** 5, "scalar": 100,
+               "loops": 1000, "pylinkage": 10 ** 5, "mechanism": 10}
+TINY_MAX_N = 100
+
+
+def _sizes(max_n):
+    return [n for n in (1, 10, 100, 1000, 10 ** 4, 10 ** 5, 10 ** 6) if n <= max_n]
+
+
+def positions(repeats=5, case_name="fourbar-open", quick=False, peers=True, tiny=False):
+    """Time per position [us] against the number of positions, per method.
+
+    Returns dict method key -> {"label", "order", "points": [{"N", "us"}]}.
+    """
+    case = all_cases()[case_name]
+    table = {m.key: m for m in methods(include_peers=peers)}
+    chosen = ["kernels", "units", "scalar"] + [k for k in table if k.startswith("loops")][:1] \
+        + [k for k in ("pylinkage", "mechanism") if k in table]
+    out = {}
+    for key in chosen + ["kernels-o2"]:
+        m = table.get(key)
+        label = m.label if m else "closed forms, unit-free, to acceleration"
+        order = m.order if m else 2
+        pts = []
+        family = key.split("-")[0] if key.startswith("loops") else key
+        limit = (QUICK_MAX_N if quick else MAX_N)[family]
+        if tiny:
+            limit = min(limit, TINY_MAX_N)
+        for n in _sizes(limit):
+            t2 = case.theta2(max(n, 1))
+            try:
+                if key == "kernels-o2":
+                    arr = t2 if n > 1 else float(t2[0])
+
+                    def run(arr=arr):
+                        return case.kernel(arr, order=2)
+                else:
+                    run, _ = m.prepare(case, t2 if n > 1 else t2[:1])
+                    if key == "kernels" and n == 1:
+                        x = float(t2[0])
+
+                        def run(x=x):
+                            return case.kernel(x)
+                    if key == "units" and n == 1:
+                        run = _unit_scalar(case, float(t2[0]))
+            except NotApplicable:
+                break
+            r = measure(run, repeats=repeats if n < 10 ** 5 else max(3, repeats // 2),
+                        min_time=0.02 if n < 10 ** 5 else 0.0)
+            pts.append({"N": n, "us": r["median"] / n * 1e6})
+        out[key] = {"label": label, "order": order, "points": pts}
+    return out
+
+
+def _unit_scalar(case, theta2):
+    mech = unit_mechanism(case)
+    inputs = unit_inputs(theta2)
+    names = [k for k in case.outputs]
+
+    def run():
+        r = mech.solve(**inputs, circuit=case.circuit)
+        return {k: getattr(r, k) for k in names}
+    return run
+
+
+def units(sizes=(1, 360, 10 ** 5), repeats=7, case_name="fourbar-open"):
+    """Unit-aware against unit-free time [us per call] at each size.
+
+    The unit-aware work: ``FourBar.solve`` with Quantity inputs (built
+    beforehand) and every output read as a Quantity; the unit-free work:
+    ``solver.kernels.fourbar.solve`` on floats. Also a single solve with
+    string inputs (``theta2="30 deg"``), parsed by pint each time.
+    """
+    case = all_cases()[case_name]
+    rows = []
+    for n in sizes:
+        t2 = case.theta2(n) if n > 1 else float(case.theta2(2)[1])
+        free = measure(lambda: case.kernel(t2), repeats=repeats)["median"]
+        aware = measure(_unit_scalar(case, t2), repeats=repeats)["median"]
+        rows.append({"N": n, "unit_free_us": free * 1e6, "unit_aware_us": aware * 1e6,
+                     "ratio": aware / free})
+    mech = unit_mechanism(case)
+    names = list(case.outputs)
+
+    def strings():
+        r = mech.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2",
+                       jerk2="20 rad/s^3", circuit=case.circuit)
+        return {k: getattr(r, k) for k in names}
+    single_str = measure(strings, repeats=repeats)["median"]
+    return {"rows": rows, "single_string_inputs_us": single_str * 1e6}
+
+
+def loops(n=360, repeats=5):
+    """Time per position [us] of the general solver against the number of
+    loops, position to jerk, over ``n`` positions of a full crank turn."""
+    from .cases import description
+    from .. import VectorLoopLinkage
+    from ..units import Q_
+    from ..vectorloops.examples import fourbar as fourbar_example
+    cases = all_cases()
+    chain = [from_example("fourbar-loops", "fourbar (1 loop)", fourbar_example()),
+             cases["sixbar-watt2"], cases["sixbar-slider"], cases["eightbar"]]
+    rows = []
+    for case in chain:
+        linkage = VectorLoopLinkage(**description(case))
+        inputs = unit_inputs(case.theta2(n))
+        inputs["theta2"] = Q_(case.theta2(n), "rad")
+        r = measure(lambda: linkage.solve(**inputs), repeats=repeats, min_time=0.0)
+        res = r["result"]
+        rows.append({"case": case.name, "title": case.title, "loops": len(case.loops),
+                     "unknowns": 2 * len(case.loops), "us": r["median"] / n * 1e6,
+                     "valid": int(np.sum(res.valid)),
+                     "mean_iterations": float(np.mean(res.iterations))})
+    return rows
