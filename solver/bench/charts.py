@@ -121,8 +121,10 @@ _OFFSETS = {"kernels": (-8, -14, "right"), "units": (6, 9, "left"), "scalar": (6
 
 def _short(r):
     key = r["method"]
+    if key == "loops":
+        return "vector loops (default)"
     if key.startswith("loops"):
-        return "vector loops" + (f" tol {r['setting']:.0e}" if r.get("setting") else "")
+        return f"tol {r['setting']:.0e}"
     return {"kernels": "closed forms (unit-free)", "units": "unit-aware API",
             "scalar": "scalar loop", "graphical": "graphical"}.get(key, key)
 

@@ -30,6 +30,7 @@ peers (:mod:`.peers`) when installed.
 
 import importlib
 import inspect
+import math
 
 import numpy as np
 
@@ -38,7 +39,7 @@ from .cases import MOTION
 #: finite-difference steps in theta2 [rad]
 FD_STEPS = (1e-2, 1e-3, 1e-4, 1e-5, 1e-6)
 #: tolerances tried on the general solver, when it takes one
-LOOP_TOLERANCES = (1e-4, 1e-8, 1e-12)
+LOOP_TOLERANCES = (1e-4, 1e-6, 1e-8, 1e-10)
 
 _UNIT_CLASSES = {"fourbar": "FourBar", "slidercrank": "SliderCrank",
                  "invertedslidercrank": "InvertedSliderCrank", "fivebar": "GearedFiveBar"}
@@ -175,6 +176,16 @@ def loop_tolerance_parameter():
     return None
 
 
+def loop_default_tolerance():
+    """The default of that argument (None if there is none)."""
+    from .. import VectorLoopLinkage
+    name = loop_tolerance_parameter()
+    if name is None:
+        return None
+    default = inspect.signature(VectorLoopLinkage.solve).parameters[name].default
+    return float(default) if isinstance(default, (int, float)) else None
+
+
 def loop_linkage(case):
     from .. import VectorLoopLinkage
     from .cases import description
@@ -282,13 +293,15 @@ def methods(include_peers=True):
            Method("units", "closed forms, unit-aware API", "units", 3, _units),
            Method("scalar", "closed forms, scalar Python loop", "scalar", 3, _scalar,
                   vectorised=False)]
+    default = loop_default_tolerance()
+    out.append(Method("loops", "vector loops" + (f" (default tol {default:.0e})" if default
+                                                 else " (default tolerance)"),
+                      "loops", 3, _loops_with(None), setting=default, vectorised=False))
     if loop_tolerance_parameter():
         for tol in LOOP_TOLERANCES:
-            out.append(Method(f"loops-tol{tol:.0e}", f"vector loops, tol {tol:.0e}", "loops", 3,
-                              _loops_with(tol), setting=tol, vectorised=False))
-    else:
-        out.append(Method("loops", "vector loops (default tolerance)", "loops", 3,
-                          _loops_with(None), vectorised=False))
+            if default is None or not math.isclose(tol, default):
+                out.append(Method(f"loops-tol{tol:.0e}", f"vector loops, tol {tol:.0e}", "loops",
+                                  3, _loops_with(tol), setting=tol, vectorised=False))
     for h in FD_STEPS:
         out.append(Method(f"fd-h{h:.0e}", f"finite differences, h = {h:.0e} rad", "fd", 3,
                           _fd_with(h), setting=h))

@@ -161,16 +161,22 @@ def goals(data):
             float(f"{worst:.3g}"), worst <= GOALS["accuracy"] and refused == 0,
             f"worst in {where['case']}; cycles stop {math.degrees(CYCLE_MARGIN):g} deg from "
             f"toggles; {refused} positions refused")
-    six = [r for r in res if r["case"].startswith("sixbar") and r["method"].startswith("loops")]
+    six = [r for r in res if r["case"].startswith("sixbar") and r["method"] == "loops"]
     for r in six:
+        loose = [x for x in res if x["case"] == r["case"] and x["method"].startswith("loops-")]
+        note = f"{r['positions']} positions of a full turn, default tolerance"
+        if loose:
+            best = min(loose, key=lambda x: x["us_per_position"])
+            note += (f"; fastest setting {best['method']}: {best['us_per_position']:.1f} us, "
+                     f"worst error {_fmt(best['worst']).strip()}")
         add(f"general solver, {r['case']}, position to jerk [us/position]",
             f"<= {GOALS['loops_speed']}", round(r["us_per_position"], 1),
-            r["us_per_position"] <= GOALS["loops_speed"],
-            f"{r['positions']} positions of a full turn, {r['method']}")
+            r["us_per_position"] <= GOALS["loops_speed"], note)
     return out
 
 
-def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=print):
+def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=print,
+                  formats=("png", "svg")):
     """Run everything and write ``out/bench.json`` and the charts.
 
     Parameters
@@ -185,6 +191,8 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
         Where the charts go (default: ``out``).
     peers : bool
         Measure the peer packages if installed.
+    charts, formats
+        Draw the charts, in these formats.
     """
     cfg = MODES[mode]
     t_start = time.perf_counter()
@@ -247,7 +255,7 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
     log(f"wrote {path}")
     if charts:
         from .charts import draw_all
-        for p in draw_all(data, figures or out):
+        for p in draw_all(data, figures or out, formats):
             log(f"wrote {p}")
     for g in data["goals"]:
         log(f"  [{'met ' if g['met'] else 'MISS'}] {g['goal']}: {g['measured']} "
