@@ -310,7 +310,20 @@ class _Sweep:
         counts = Bn - A - 1
         owner = np.repeat(np.arange(len(intervals)), counts)
         idx = np.concatenate([np.arange(a + 1, b) for a, b in intervals])
-        a, b = A[owner], Bn[owner]
+        th = self.theta2
+        guess, rate = self.hermite(idx, A[owner], Bn[owner])
+        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol, slopes=False)
+        dt = np.abs(th[idx] - th[idx - 1])[:, None]
+        change = np.max(np.abs(rate * dt) / self.scale, axis=1)
+        off = np.max(np.abs(q - guess) / self.scale, axis=1)
+        good = (reason == CONVERGED) & (off <= JUMP_TOLERANCE + 0.5 * change)
+        self.q[idx], self.iterations[idx] = q, it
+        bad = np.unique(owner[~good])
+        return [intervals[k] for k in bad]
+
+    def hermite(self, idx, a, b):
+        """Cubic Hermite interpolation of q and dq/dtheta2 at positions idx between
+        solved positions a and b (arrays alike): (guess, rate)."""
         th = self.theta2
         h = (th[b] - th[a])[:, None]
         s = ((th[idx] - th[a]) / (th[b] - th[a]))[:, None]
@@ -320,14 +333,7 @@ class _Sweep:
                  + (3 * s2 - 2 * s3) * qb + (s3 - s2) * sb)
         rate = ((6 * s2 - 6 * s) * qa + (3 * s2 - 4 * s + 1) * sa
                 + (6 * s - 6 * s2) * qb + (3 * s2 - 2 * s) * sb) / h
-        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol, slopes=False)
-        dt = np.abs(th[idx] - th[idx - 1])[:, None]
-        change = np.max(np.abs(rate * dt) / self.scale, axis=1)
-        off = np.max(np.abs(q - guess) / self.scale, axis=1)
-        good = (reason == CONVERGED) & (off <= JUMP_TOLERANCE + 0.5 * change)
-        self.q[idx], self.iterations[idx] = q, it
-        bad = np.unique(owner[~good])
-        return [intervals[k] for k in bad]
+        return guess, rate
 
     def reset_after(self, b):
         """Forget everything solved after position b (the chain is restarted there)."""
