@@ -233,6 +233,35 @@ def slotted_link(theta, omega, alpha, jerk, p, p_dot, p_ddot, p_dddot, dps=DPS):
         return out
 
 
+def batch_branch(mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
+                 circuit="open", dps=DPS):
+    """The reference as the batch solver reports it: SI floats, vectors as
+    [x, y], named as in CONVENTIONS (with a coupler point P: A_P, J_P ...; for
+    the inverted slider-crank also A_coriolis, A_slip, V_slip and A_A4, the
+    acceleration of the point of link 4 under A). None if not assemblable."""
+    args = (mechanism, geometry, theta2, omega2, alpha2, jerk2, theta1, circuit)
+    want = solve(*args, dps=dps)
+    if want is None:
+        return None
+    if mechanism == "invertedslidercrank":
+        with mp.workdps(dps):
+            rel = (want["R_A"] - want["R_O4"]) * _expj(-want["theta4"])
+            want = solve(*args, extra_points=[("A4", 4, "O4", abs(rel), mp.arg(rel))], dps=dps)
+            e3 = _expj(want["theta3"])
+            want["A_slip"] = want["b_ddot"] * e3
+            want["V_slip"] = want["b_dot"] * e3
+            want["A_coriolis"] = want["A_A"] - want["A_A4"] - want["A_slip"]
+    if "R_P" in want:
+        want["A_PA"] = want["A_P"] - want["A_A"]
+    out = {}
+    for k, v in want.items():
+        if k.endswith("O4") or k.endswith("O5") or k[-1:] == "2" and k[:-1] in ANGLE_NAMES:
+            continue
+        out[k] = [float(v.real), float(v.imag)] if isinstance(v, mpc) else float(v)
+    out["circuit"] = circuit
+    return out
+
+
 # ---------------------------------------------------------------- limit angles
 
 def fourbar_limits(a, b, c, d, dps=DPS):
@@ -251,20 +280,19 @@ def fourbar_limits(a, b, c, d, dps=DPS):
 
 
 def fourbar_rocker_limits(a, b, c, d, dps=DPS):
-    """Crank angles where links 2 and 3 are collinear (the rocker's extreme
-    positions, omega4 = 0): |B - O2| = a + b ('extended') or |b - a|
-    ('folded'), B above the ground line, for each circuit where B is the
-    open/crossed intersection. Returns {kind: t2}."""
+    """Crank angles (from the ground line) where links 2 and 3 are collinear:
+    the rocker's extreme positions, where omega4 = 0 and nothing is singular.
+    B then lies on the crank's line at the signed distance r = a + b
+    ('extended') or a - b ('folded') from O2, and |B - O4| = c. Returns
+    {kind: [t2, -t2]}."""
     out = {}
     with mp.workdps(dps):
         a, b, c, d = (mpf(v) for v in (a, b, c, d))
-        for kind, r, flip in (("extended", a + b, 0), ("folded", abs(b - a), 1)):
+        for kind, r in (("extended", a + b), ("folded", a - b)):
             cos_t = (r * r + d * d - c * c) / (2 * r * d)
             if -1 < cos_t < 1:
                 t = mp.acos(cos_t)
-                if flip and b > a:
-                    t = t + mp.pi    # A points away from B
-                out[kind] = t
+                out[kind] = [t, -t]
     return out
 
 
@@ -299,8 +327,19 @@ def invertedslidercrank_limit(a, c, d, gamma, dps=DPS):
 
 def fivebar_limits(g, lo, hi, dps=DPS):
     """Input angles t2 in [lo, hi] where the couplers b, c are collinear
-    (|C - A| = b + c or |b - c|), found by bracketing on a grid and refining
-    by bisection-safe root finding at high precision. Returns [(t2, kind)]."""
+    (|C - A| = b + c or |b - c|): bracketed on a grid in floats, then
+    refined at high precision. Returns [(t2, kind)]."""
+    fl = {k: float(v) for k, v in g.items()}
+
+    def span(t):
+        return abs(fl["f"] + fl["d"] * complex(math.cos(fl["lam"] * t + fl["phi"]),
+                                               math.sin(fl["lam"] * t + fl["phi"]))
+                   - fl["a"] * complex(math.cos(t), math.sin(t)))
+
+    n = 4000
+    grid = [lo + (hi - lo) * i / n for i in range(n + 1)]
+    dist = [span(t) for t in grid]
+    out = []
     with mp.workdps(dps):
         g = {k: mpf(v) for k, v in g.items()}
 
@@ -309,17 +348,21 @@ def fivebar_limits(g, lo, hi, dps=DPS):
             C = g["f"] + g["d"] * _expj(g["lam"] * t + g["phi"])
             return abs(C - A) - s
 
-        out = []
-        n = 2000
-        grid = [mpf(lo) + (mpf(hi) - mpf(lo)) * i / n for i in range(n + 1)]
         for kind, s in (("outer", g["b"] + g["c"]), ("inner", abs(g["b"] - g["c"]))):
-            vals = [gap(t, s) for t in grid]
+            sf = float(s)
             for i in range(n):
-                if vals[i] == 0 or vals[i] * vals[i + 1] < 0:
-                    root = mp.findroot(lambda t: gap(t, s), (grid[i], grid[i + 1]),
+                if (dist[i] - sf) * (dist[i + 1] - sf) < 0:
+                    root = mp.findroot(lambda t: gap(t, s), (mpf(grid[i]), mpf(grid[i + 1])),
                                        solver="anderson")
                     out.append((root, kind))
-        return out
+    return out
+
+
+def assembles(mechanism, geometry, t2, circuit="open", dps=DPS):
+    """Whether the loop closes at t2 (ground frame), by the position alone."""
+    with mp.workdps(dps):
+        g = {k: mpf(v) for k, v in geometry.items()}
+        return POSITIONS[mechanism](g, mpf(t2), CIRCUIT_SIGN[circuit]) is not None
 
 
 # ---------------------------------------------------------------- comparison
