@@ -282,6 +282,8 @@ class LoopSystem:
         as lists (slope None where not converged).
         """
         q = [float(x) for x in q0]
+        if not math.isfinite(theta2):
+            return q, 0, math.nan, NOT_CLOSED, None
         nu = len(q)
         n = 2 * self.n_loops
         vectors, terms = self._py_vectors, self._py_terms
@@ -414,6 +416,9 @@ def _solve_stack(J, rhs):
 def no_convergence(theta2, residual, iterations, reason):
     """The NoConvergence error for one position that Newton-Raphson did not close."""
     residual, iterations = float(residual), int(iterations)
+    if not math.isfinite(theta2):
+        return NoConvergence(f"theta2 = {theta2} is not a finite angle: no position to solve",
+                             residual=residual, iterations=iterations)
     if reason == SINGULAR_STEP:
         return NoConvergence(
             f"Newton-Raphson hit a singular Jacobian at theta2 = {np.degrees(theta2):.6g} deg "

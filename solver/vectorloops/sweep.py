@@ -19,10 +19,11 @@ the same as the position-by-position walk to round-off (``batch=False``
 gives that walk).
 
 After a stretch that cannot be assembled, the first position that closes
-again is accepted only if a continuation walk from the nearest solved
-position (nearest in theta2, modulo a turn of the crank when the input
-drives only whole gear ratios) reaches it on the followed assembly;
-otherwise it is reported ``not_assemblable`` on this assembly, with a message.
+again is accepted only if a continuation walk from a solved position (the
+nearest below it and the nearest above it in theta2, modulo a turn of the
+crank when the input drives only whole gear ratios) reaches it on the
+followed assembly; otherwise it is reported ``not_assemblable`` on this
+assembly, with a message.
 """
 
 import math
@@ -43,6 +44,7 @@ MIN_STRIDE = 4          # below this, walk position by position
 GAP_CHUNK = 16          # positions tried together while the loops do not close
 WALK_STEP = 0.05        # [rad] continuation step when rejoining the assembly after a gap
 MIN_WALK_STEP = 1e-6    # [rad] smallest step of that walk before it gives up
+WALK_ITERATIONS = 8     # Newton steps a walk step may take before it is halved
 MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
 HIGHER_ORDER_CAP = 0.1  # [rad or length scale] largest 2nd+3rd order predictor term
 
@@ -142,15 +144,15 @@ class _Sweep:
         if reason != CONVERGED:
             self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res, it, reason))
             return False
-        if change is not None and self.jumped(np.asarray(q), pred, change):
+        if self.gap:  # across a gap the prediction means little: walk to check instead
+            ok, q, slope = self.rejoin(i, np.asarray(q), slope)
+            if not ok:
+                return False
+        elif change is not None and self.jumped(np.asarray(q), pred, change):
             try:
                 q, it, slope = self.subdivide(t)
             except _BranchJump as exc:
                 self.fail(i, SINGULAR, exc)
-                return False
-        if self.gap:
-            ok, q, slope = self.rejoin(i, np.asarray(q), slope)
-            if not ok:
                 return False
         self.accept(i, q, it, slope)
         return True
@@ -182,67 +184,73 @@ class _Sweep:
     def rejoin(self, i, q_try, slope_try):
         """Is the solution found at i, after a gap, on the followed assembly?
 
-        Walk by continuation from the nearest solved position to theta2[i]; the
-        walk defines the assembly. Returns ``(ok, q, slope)``.
+        Walk by continuation to theta2[i] from the nearest solved position
+        below it and from the nearest above it (modulo the input's period, if
+        it has one), nearer first; a walk that arrives defines the assembly.
+        Returns ``(ok, q, slope)``.
         """
         t = float(self.theta2[i])
         anchors = np.flatnonzero(self.sequential[:i] & (self.status[:i] == OK))
         d = t - self.theta2[anchors]
         period = self.system.period
-        if period:
-            d = np.remainder(d + period / 2, period) - period / 2
-        j = int(np.argmin(np.abs(d)))
-        a, dist = int(anchors[j]), float(d[j])
-        key = (a, dist > 0)
-        if key in self.walk_failed and abs(dist) >= self.walk_failed[key]:
-            reached = None
-        else:
+        walks = []
+        for forward in (True, False):
+            if period:
+                dist = np.remainder(d, period) if forward else np.remainder(d, period) - period
+            else:
+                dist = np.where(d >= 0 if forward else d <= 0, d, np.nan)
+            if np.isfinite(dist).any():
+                j = int(np.nanargmin(np.abs(dist)))
+                walks.append((abs(float(dist[j])), int(anchors[j]), float(dist[j])))
+        for _, a, dist in sorted(walks):
+            key = (a, dist > 0)
+            if key in self.walk_failed and abs(dist) > self.walk_failed[key]:
+                continue            # an earlier walk from a stopped short of this
             reached = self.walk(a, dist)
-            if reached is None:
-                self.walk_failed[key] = abs(dist)
-        if reached is None:
-            self.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
-                f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range "
-                f"where they cannot, but not on the assembly this sweep follows: no continuous "
-                f"path from the solved position at theta2 = "
-                f"{np.degrees(self.theta2[a]):.6g} deg reaches it. Solve this range on its "
-                f"own, with guesses for the assembly you want."))
-            return False, None, None
-        q_w, slope_w = reached
-        if period and dist != t - self.theta2[a]:   # same configuration, one turn away
-            q_w, _, _, reason, slope_w = self.system.newton1(q_w, t, self.tol)
-            if reason != CONVERGED:
-                self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, 0.0, 0, reason))
-                return False, None, None
-            q_w = np.asarray(q_w)
-        if np.max(np.abs(q_w - q_try) / self.scale) <= MATCH_TOLERANCE:
-            return True, q_try, slope_try
-        return True, q_w, slope_w
+            if isinstance(reached, float):
+                self.walk_failed[key] = reached
+                continue
+            q_w, slope_w = reached
+            if dist != t - self.theta2[a]:   # the same configuration, whole turns away
+                q_w, _, _, reason, slope_w = self.system.newton1(q_w, t, self.tol)
+                if reason != CONVERGED or slope_w is None:
+                    continue
+                q_w = np.asarray(q_w)
+            if np.max(np.abs(q_w - q_try) / self.scale) <= MATCH_TOLERANCE:
+                return True, q_try, slope_try
+            return True, q_w, slope_w
+        self.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
+            f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range where "
+            f"they cannot, but not on the assembly this sweep follows: no continuous path "
+            f"from the positions solved before reaches it. Solve this range on its own, with "
+            f"guesses for the assembly you want."))
+        return False, None, None
 
     def walk(self, a, dist):
         """Continuation from solved position a over ``dist`` [rad] of theta2, in
-        steps of at most WALK_STEP, halved where a step jumps or fails.
-        Returns (q, slope) at theta2[a] + dist, or None."""
+        steps of at most WALK_STEP, halved where a step jumps or does not close
+        within WALK_ITERATIONS. Returns (q, slope) at theta2[a] + dist, or the
+        distance [rad] it reached before it had to give up."""
         q = self.q[a]
         slope = self.slope[a]
-        t = float(self.theta2[a])
+        t0 = t = float(self.theta2[a])
         target = t + dist
         h = math.copysign(min(WALK_STEP, abs(dist)), dist)
         while abs(target - t) > 0.0:
             if not np.isfinite(slope).all():
-                return None
+                return abs(t - t0)
             h = math.copysign(min(abs(h), abs(target - t)), dist)
             pred = q + slope * h
             change = float(np.max(np.abs(slope * h) / self.scale))
-            qk, _, _, reason, sk = self.system.newton1(pred, t + h, self.tol)
+            qk, _, _, reason, sk = self.system.newton1(pred, t + h, self.tol, WALK_ITERATIONS)
             if reason == CONVERGED and sk is not None and not self.jumped(np.asarray(qk), pred,
                                                                           change):
                 q, slope, t = np.asarray(qk), np.asarray(sk), t + h
-                h *= 2.0
+                h = math.copysign(min(2.0 * abs(h), WALK_STEP), dist)
                 continue
             h /= 2.0
             if abs(h) < MIN_WALK_STEP:
-                return None
+                return abs(t - t0)
         return q, slope
 
     def scan_gap(self, i, stop):
