@@ -63,20 +63,31 @@ def speed_accuracy(data, outdir, formats=("png", "svg"), case="fourbar-open"):
     floor = 1e-16
     pts = []
     fd = []
+    notes = []  # (x, y, text, family) of the labelled points
+    seen = set()
     for r in rows:
         colour, marker = _style(r["method"])
         x, y = r["us_per_position"], max(r["worst"], floor)
         pts.append((x, y))
         filled = r["order"] >= 3
+        family = r["method"].split("-")[0]
+        label = r["label"]
+        if family == "loops":
+            label = "vector loops (general solver), at each tolerance"
+        if family == "fd" or label in seen:
+            label = None
+        seen.add(label)
         ax.scatter([x], [y], s=90 if marker != "*" else 160, marker=marker,
                    facecolors=colour if filled else "white", edgecolors=colour, linewidths=1.8,
-                   zorder=3, label=r["label"] if not r["method"].startswith("fd") else None)
-        if r["method"].startswith("fd"):
+                   zorder=3, label=label)
+        if family == "fd":
             fd.append((r["setting"], x, y))
         else:
-            dx, dy, ha = _OFFSETS.get(r["method"].split("-")[0], (8, 6, "left"))
-            ax.annotate(_short(r), (x, y), textcoords="offset points", xytext=(dx, dy),
-                        fontsize=8, color="#222222", ha=ha)
+            notes.append((x, y, _short(r), family))
+    for x, y, text, family in _merge(notes):
+        dx, dy, ha = _OFFSETS.get(family, (8, 6, "left"))
+        ax.annotate(text, (x, y), textcoords="offset points", xytext=(dx, dy), fontsize=8,
+                    color="#222222", ha=ha)
     if fd:
         fd.sort()
         colour, marker = _style("fd")
@@ -92,8 +103,8 @@ def speed_accuracy(data, outdir, formats=("png", "svg"), case="fourbar-open"):
         ax.step(fx + [fx[-1] * 30], fy + [fy[-1]], where="post", color="#444444", lw=1.2,
                 ls="--", zorder=1, label="Pareto front (nothing is both faster and more accurate)")
     ax.axhline(GOAL_ERROR, color="#009E73", lw=1, ls=":", zorder=0)
-    ax.text(min(p[0] for p in pts) * 0.8, GOAL_ERROR * 1.4, "accuracy goal 1e-13",
-            fontsize=8, color="#009E73")
+    ax.text(0.99, GOAL_ERROR * 1.4, "accuracy goal 1e-13", fontsize=8, color="#009E73",
+            ha="right", transform=ax.get_yaxis_transform())
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(f"time per position [µs]  (median of {data['config']['repeats']} repeats, "
@@ -113,16 +124,38 @@ def speed_accuracy(data, outdir, formats=("png", "svg"), case="fourbar-open"):
     return paths
 
 
+def _merge(notes, close=0.12):
+    """Join the labels of points closer than ``close`` decades in both axes."""
+    groups = []
+    for x, y, text, family in notes:
+        for g in groups:
+            if (abs(math.log10(g[0] / x)) < close and abs(math.log10(g[1] / y)) < close
+                    and g[3] == family):
+                g[2].append(text)
+                break
+        else:
+            groups.append((x, y, [text], family))
+    out = []
+    for x, y, texts, family in groups:
+        if family == "loops" and len(texts) > 1:
+            tols = [t.replace("tol ", "") for t in texts]
+            text = "tol " + ", ".join(tols)
+        else:
+            text = ", ".join(texts)
+        out.append((x, y, text, family))
+    return out
+
+
 #: where each family's label sits relative to its point (points, points, alignment)
-_OFFSETS = {"kernels": (-8, -14, "right"), "units": (6, 9, "left"), "scalar": (6, 9, "left"),
+_OFFSETS = {"kernels": (6, -15, "left"), "units": (6, 9, "left"), "scalar": (6, 9, "left"),
             "graphical": (-6, -14, "right"), "loops": (6, 9, "left"),
-            "pylinkage": (0, 10, "center"), "mechanism": (8, 6, "left")}
+            "pylinkage": (0, 11, "center"), "mechanism": (8, 6, "left")}
 
 
 def _short(r):
     key = r["method"]
     if key == "loops":
-        return "vector loops (default)"
+        return "tol default" + (f" {r['setting']:.0e}" if r.get("setting") else "")
     if key.startswith("loops"):
         return f"tol {r['setting']:.0e}"
     return {"kernels": "closed forms (unit-free)", "units": "unit-aware API",
@@ -250,8 +283,10 @@ def scaling(data, outdir, formats=("png", "svg")):
                    facecolors="white", edgecolors=colour, linewidths=1.8,
                    label="sixbar driving a slider")
     for x, r in zip(xs, rows):
+        slider = "slider" in r["case"]
         bx.annotate(f"{r['us']:.0f} µs", (x, r["us"]), textcoords="offset points",
-                    xytext=(8, -4), fontsize=8)
+                    xytext=(9, 2) if slider else (-9, -12), ha="left" if slider else "right",
+                    fontsize=8)
     bx.axhline(50, color="#009E73", lw=1, ls=":")
     bx.text(3.45, 50, "goal: 50 µs/position\n(sixbar)", fontsize=8, color="#009E73", ha="right",
             va="bottom")

@@ -86,21 +86,26 @@ def _unit_scalar(case, theta2):
 
 
 def units(sizes=(1, 360, 10 ** 5), repeats=7, case_name="fourbar-open"):
-    """Unit-aware against unit-free time [us per call] at each size.
+    """Unit-aware against unit-free time [us per call] at each size, timed
+    in turn within each repeat (:func:`.timing.measure_interleaved`); the
+    ratio is the median of the per-repeat ratios.
 
     The unit-aware work: ``FourBar.solve`` with Quantity inputs (built
     beforehand) and every output read as a Quantity; the unit-free work:
     ``solver.kernels.fourbar.solve`` on floats. Also a single solve with
     string inputs (``theta2="30 deg"``), parsed by pint each time.
     """
+    from .timing import measure_interleaved
     case = all_cases()[case_name]
     rows = []
     for n in sizes:
         t2 = case.theta2(n) if n > 1 else float(case.theta2(2)[1])
-        free = measure(lambda: case.kernel(t2), repeats=repeats)["median"]
-        aware = measure(_unit_scalar(case, t2), repeats=repeats)["median"]
-        rows.append({"N": n, "unit_free_us": free * 1e6, "unit_aware_us": aware * 1e6,
-                     "ratio": aware / free})
+        free, aware = measure_interleaved([lambda: case.kernel(t2), _unit_scalar(case, t2)],
+                                          repeats=repeats)
+        rows.append({"N": n, "unit_free_us": free["median"] * 1e6,
+                     "unit_aware_us": aware["median"] * 1e6, "ratio": aware["ratio"],
+                     "unit_free_min_us": free["min"] * 1e6,
+                     "unit_aware_min_us": aware["min"] * 1e6})
     mech = unit_mechanism(case)
     names = list(case.outputs)
 

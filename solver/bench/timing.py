@@ -51,6 +51,39 @@ def measure(fn, repeats=7, min_time=0.02, max_number=10000):
             "repeats": repeats, "number": number, "result": result}
 
 
+def measure_interleaved(fns, repeats=9, min_time=0.02, max_number=10000):
+    """Median times of several callables timed in turn within each repeat.
+
+    On a machine whose load changes (other jobs on a shared 2-core box),
+    interleaving gives each callable the same conditions, so their ratios
+    stay meaningful even when the absolute times move. Returns a list of
+    dicts like :func:`measure` (without ``result``), plus ``ratios``: the
+    median over repeats of each callable's time over the first's.
+    """
+    numbers = []
+    for fn in fns:
+        fn()  # warm-up
+        t0 = time.perf_counter()
+        fn()
+        once = max(time.perf_counter() - t0, 1e-7)
+        numbers.append(int(min(max_number, max(1, min_time / once))))
+    times = [[] for _ in fns]
+    for _ in range(repeats):
+        for k, fn in enumerate(fns):
+            n = numbers[k]
+            t0 = time.perf_counter()
+            for _ in range(n):
+                fn()
+            times[k].append((time.perf_counter() - t0) / n)
+    out = []
+    for k in range(len(fns)):
+        ratios = [a / b for a, b in zip(times[k], times[0])]
+        out.append({"median": statistics.median(times[k]), "min": min(times[k]),
+                    "max": max(times[k]), "repeats": repeats, "number": numbers[k],
+                    "ratio": statistics.median(ratios)})
+    return out
+
+
 def machine():
     """What the numbers were measured on: CPU, cores, Python and package versions."""
     import numpy

@@ -6,6 +6,7 @@ EPILOG = """examples:
   accelab bench --out build/bench                      # the full run (what make bench runs)
   accelab bench --quick --out /tmp/bench               # under a minute
   accelab bench --out build/bench --figures figures    # also refresh the README's charts
+  accelab bench --out build/bench --redraw             # redraw the charts from bench.json
 
 It writes OUT/bench.json (every case by every method: time per position,
 worst relative error per output, positions refused; the stability study near
@@ -30,12 +31,35 @@ def register(sub):
     mode.add_argument("--tiny", action="store_true", help=argparse.SUPPRESS)
     p.add_argument("--no-peers", action="store_true", help="skip the peer packages")
     p.add_argument("--no-charts", action="store_true", help="write the JSON only")
+    p.add_argument("--redraw", action="store_true",
+                   help="measure nothing: redraw the charts from OUT/bench.json")
+    p.add_argument("--report", action="store_true",
+                   help="measure nothing: print OUT/bench.json's tables as Markdown")
     p.set_defaults(func=run)
 
 
 def run(args):
     import warnings
     from ..bench.run import run_benchmark
+    if args.redraw or args.report:
+        import json
+        import os
+        import sys
+        path = os.path.join(args.out, "bench.json")
+        if not os.path.exists(path):
+            print(f"accelab bench: no {path} to read; run 'accelab bench --out "
+                  f"{args.out}' first", file=sys.stderr)
+            return 2
+        with open(path) as f:
+            data = json.load(f)
+        if args.report:
+            from ..bench.report import markdown
+            print(markdown(data))
+        if args.redraw:
+            from ..bench.charts import draw_all
+            for p in draw_all(data, args.figures or args.out):
+                print(f"wrote {p}")
+        return 0
     mode = "tiny" if args.tiny else "quick" if args.quick else "full"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # peers warn about their own convergence
