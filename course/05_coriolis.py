@@ -226,8 +226,8 @@ plt.show()
 # %% [markdown]
 # At the rim the floor must supply both parts; near the centre only the Coriolis part is left,
 # and it is as large there as anywhere. About 0.15 g sideways is well below the 0.5 g of hard
-# braking in a car (Table 7-1, notebook 8), but it arrives *sideways* and unexpectedly, which is
-# why children stumble.
+# acceleration in a car (Table 7-1, notebook 8), but it arrives *sideways* and unexpectedly, which
+# is why children stumble.
 #
 # ### 3. The inverted slider-crank (eqs. 7.20-7.27)
 #
