@@ -434,10 +434,23 @@ def no_convergence(theta2, residual, iterations, reason):
 
 def condition(J, model):
     """Dimensionless conditioning of the Jacobian(s): the ratio of the smallest
-    to the largest singular value after scaling each column to unit length
-    (1 best, 0 singular). Works on one matrix or a stack."""
-    norms = np.linalg.norm(J, axis=-2, keepdims=True)
-    norms = np.where(norms == 0, 1.0, norms)
-    sv = np.linalg.svd(J / norms, compute_uv=False)
+    to the largest singular value after scaling each column to unit length,
+    doubled (0 singular; 2 for orthogonal columns). Works on one matrix or a
+    stack.
+
+    The singular values come from the eigenvalues of the (small) Gram matrix,
+    which is about twice as fast as an SVD per matrix and as accurate while
+    the ratio is above 1e-3; below that the SVD is taken.
+    """
+    J = np.asarray(J, dtype=float)
+    norms = np.sqrt(np.einsum("...ij,...ij->...j", J, J))[..., None, :]
+    Jn = J / np.where(norms == 0, 1.0, norms)
+    lam = np.linalg.eigvalsh(np.swapaxes(Jn, -1, -2) @ Jn)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return 2.0 * sv[..., -1] / sv[..., 0]
+        cond = 2.0 * np.sqrt(np.maximum(lam[..., 0], 0.0) / lam[..., -1])
+        low = ~(cond >= 1e-3)
+        if np.any(low):
+            sv = np.linalg.svd(Jn[low], compute_uv=False)
+            cond = np.array(cond)
+            cond[low] = 2.0 * sv[..., -1] / sv[..., 0]
+    return cond
