@@ -5,6 +5,12 @@ A linkage is a set of named vectors and the loops they close (CONVENTIONS,
 analytic Jacobian; velocity, acceleration and jerk from linear solves with
 the same Jacobian. :class:`VectorLoopLinkage` is the unit-aware class;
 :func:`solve_case` is the batch contract's ``loops`` mechanism.
+
+A sweep over an array of theta2 follows one assembly by continuation on a
+coarse subset of the positions and solves the positions in between in one
+batched Newton-Raphson (:mod:`.sweep`); ``tol=`` on
+:meth:`VectorLoopLinkage.solve` sets Newton-Raphson's convergence tolerance
+(default 1e-13, round-off).
 """
 
 from .batch import solve_case
