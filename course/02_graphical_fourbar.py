@@ -35,7 +35,6 @@
 import math
 
 import matplotlib.pyplot as plt
-import numpy as np
 
 from coursekit import cartesian, explore, polar, use_style, vector
 from solver import Q_, NotAssemblable, Singular

@@ -10,7 +10,6 @@ The fast tests check each notebook's shape against the course conventions
 (title cell, section order, folded answers, numbered equations, next link).
 """
 
-import os
 import re
 import sys
 import time
@@ -19,72 +18,20 @@ from pathlib import Path
 
 import pytest
 
+
 ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:  # the course package lives at the top of the repository
+    sys.path.insert(0, str(ROOT))
+
+from course.build_site import NotebookFailed, execute, sources  # noqa: E402
+
 COURSE = ROOT / "course"
 BUILD = ROOT / "build" / "course"
-CELL_TIMEOUT = 300      # s per cell: catches a notebook that hangs
 BUDGET = 12.0           # s per notebook: the course's execution budget (a warning)
 
-NOTEBOOKS = sorted(COURSE.glob("[0-9][0-9]_*.py"))
+NOTEBOOKS = sources(COURSE)
 
 _executed = {}   # stem -> (path of the executed notebook, seconds) or the exception
-
-
-def kernel_env():
-    """The kernel's environment: headless figures, inline backend, our package."""
-    env = dict(os.environ)
-    env["ACCELAB_STATIC"] = "1"
-    env["MPLBACKEND"] = "module://matplotlib_inline.backend_inline"
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT), str(COURSE)]
-                                        + [p for p in [env.get("PYTHONPATH")] if p])
-    env.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
-    return env
-
-
-class NotebookFailed(AssertionError):
-    pass
-
-
-def _problems(nb):
-    """Error outputs and stderr text of an executed notebook, one line each."""
-    out = []
-    for i, cell in enumerate(nb.cells):
-        if cell.cell_type != "code":
-            continue
-        for o in cell.get("outputs", []):
-            if o.output_type == "error":
-                out.append(f"cell {i}: {o.ename}: {o.evalue}")
-            elif o.output_type == "stream" and o.name == "stderr":
-                out.append(f"cell {i}: stderr: {o.text.strip()[:500]}")
-    return out
-
-
-def execute(source, outdir=BUILD):
-    """Convert ``source`` (a jupytext .py) and execute it; write and return the
-    executed ``.ipynb`` in ``outdir``. Raises NotebookFailed on any cell error."""
-    import jupytext
-    import nbformat
-    from nbclient import NotebookClient
-    from nbclient.exceptions import CellExecutionError
-
-    nb = jupytext.read(source)
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}
-    client = NotebookClient(nb, timeout=CELL_TIMEOUT, kernel_name="python3",
-                            startup_timeout=120, allow_errors=False,
-                            resources={"metadata": {"path": str(COURSE)}})
-    outdir.mkdir(parents=True, exist_ok=True)
-    target = outdir / (source.stem + ".ipynb")
-    try:
-        client.execute(env=kernel_env())
-    except CellExecutionError as exc:
-        nbformat.write(nb, target)
-        raise NotebookFailed(f"{source.name} failed:\n{exc}") from None
-    nbformat.write(nb, target)
-    problems = _problems(nb)
-    if problems:
-        raise NotebookFailed(f"{source.name} wrote to stderr or failed:\n" + "\n".join(problems))
-    return target
 
 
 def executed(source):
@@ -94,9 +41,9 @@ def executed(source):
     if key not in _executed:
         t0 = time.perf_counter()
         try:
-            path = execute(Path(source))
+            path = execute(Path(source), BUILD)
             _executed[key] = (path, time.perf_counter() - t0)
-        except Exception as exc:  # remembered so the site test does not re-run it
+        except NotebookFailed as exc:  # remembered so the site test does not re-run it
             _executed[key] = exc
     value = _executed[key]
     if isinstance(value, Exception):
@@ -111,7 +58,7 @@ def execute_all():
     for source in NOTEBOOKS:
         try:
             ok[source.stem] = executed(source)[0]
-        except Exception as exc:
+        except NotebookFailed as exc:
             failed[source.stem] = str(exc)
     return ok, failed
 
