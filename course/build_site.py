@@ -16,7 +16,8 @@ executed notebook becomes one page of ``build/site/``:
 
 Options: ``--reuse`` keeps executed notebooks newer than their sources (the
 test session's, for example); ``--executed DIR`` and ``--out DIR`` move the
-two build folders. The exit status is 1 if a notebook failed to execute (its
+two build folders; ``--readme-figures figures`` also refreshes the course
+figures the README shows (``figures/course-*.png``). The exit status is 1 if a notebook failed to execute (its
 page is still built, showing the error), 0 otherwise.
 """
 
@@ -39,6 +40,8 @@ EXECUTED = ROOT / "build" / "course"
 SITE = ROOT / "build" / "site"
 CELL_TIMEOUT = 300          # s per cell
 FOLD_CODE_LINES = 14        # longer code cells are folded on the page
+#: figures the README shows: file name -> (notebook, n-th figure of its executed outputs)
+README_FIGURES = {"course-piston-acceleration.png": ("04_slider_crank_engine", 2)}
 
 __all__ = ["sources", "execute", "executed_notebooks", "build", "main", "NotebookFailed"]
 
@@ -436,6 +439,23 @@ def _index(out, stems, nbs, titles, md, page_tpl, manifest):
                                        "prev": None, "next": None}
 
 
+def readme_figures(notebooks, outdir):
+    """Copy the course figures the README shows (:data:`README_FIGURES`) from
+    the executed notebooks into ``outdir``; returns the paths written."""
+    import nbformat
+    written = []
+    for name, (stem, k) in README_FIGURES.items():
+        if stem not in notebooks:
+            continue
+        nb = nbformat.read(notebooks[stem], as_version=4)
+        pngs = [o["data"]["image/png"] for c in nb.cells if c.cell_type == "code"
+                for o in c.get("outputs", []) if "image/png" in o.get("data", {})]
+        target = Path(outdir) / name
+        target.write_bytes(base64.b64decode(pngs[k - 1]))
+        written.append(target)
+    return written
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m course.build_site",
                                      description="Build the course's self-study site.")
@@ -444,10 +464,16 @@ def main(argv=None):
                         help="executed notebooks (build/course)")
     parser.add_argument("--reuse", action="store_true",
                         help="keep executed notebooks newer than their sources")
+    parser.add_argument("--readme-figures", type=Path, metavar="DIR",
+                        help="also write the course figures the README shows into DIR "
+                             "(figures/)")
     args = parser.parse_args(argv)
     os.environ.setdefault("MPLBACKEND", "Agg")
     paths, failed = executed_notebooks(args.executed, reuse=args.reuse)
     manifest = build(paths, args.out)
+    if args.readme_figures:
+        for path in readme_figures(paths, args.readme_figures):
+            print(f"wrote {path}")
     pages = len(manifest["pages"])
     figs = sum(len(p["figures"]) for p in manifest["pages"].values())
     eqs = sum(p["equations"] for p in manifest["pages"].values())
