@@ -270,7 +270,9 @@ plt.show()
 # (The scanned chapter prints $\sin(\theta_4 + \theta_2)$ in eq. 7.26b; the sum is a misprint, the
 # cell below shows that only the difference agrees with the solver.) The denominator vanishes
 # where $b + c\cos\gamma = 0$: the slide is then perpendicular to $O_4A$ and the equations are
-# singular, a limit position.
+# singular, a limit position. Putting $\alpha_4$ and $\ddot b$ back into eqs. 7.21 gives the
+# pins' accelerations (the chapter's eqs. 7.27); the solver reports them as `A_A`, `A_B`, `A_BA`,
+# and the Coriolis term alone as `A_coriolis`.
 #
 # Our linkage: crank $a$ = 4 in, $O_4B$ = $c$ = 3 in, ground $d$ = 8 in, slide at $\gamma$ = 90°
 # to $O_4B$. The crank turns clockwise and is being slowed down, as in the chapter's Figure 7-8.
