@@ -109,27 +109,26 @@ class LoopSystem:
         self._tables()
 
     def _tables(self):
-        """Plain-Python tables for :meth:`newton1` (one position, no numpy)."""
-        m, nu = self.model, self.n_unknowns
-        self._py_vectors = []
+        """Plain-Python tables for :meth:`newton1` (one position, no numpy): per
+        vector its base index, ratio, offset, length (or unknown index) and the
+        rows and columns it adds to (F, J, dF/dtheta2)."""
+        m = self.model
+        rows = []
         for v in range(self.n_vectors):
-            b = int(self.base_index[v])
-            li = int(m.length_unknown[v])
-            self._py_vectors.append((b, float(self.ratio[v]), float(self.offset[v]), li,
-                                     float(self.fixed_length[v])))
-        terms, angle, length, driven = [], [], [], []
-        for l, row in enumerate(m.signs):
-            for v in np.flatnonzero(row):
-                sg = float(row[v])
-                terms.append((2 * l, v, sg))
+            fterms, aterms, lterms, dterms = [], [], [], []
+            for l in np.flatnonzero(m.signs[:, v]):
+                sg, r = float(m.signs[l, v]), 2 * int(l)
+                fterms.append((r, sg))
                 if m.angle_unknown[v] >= 0:
-                    angle.append((2 * l, v, int(m.angle_unknown[v]), sg * self.ratio[v]))
+                    aterms.append((r, int(m.angle_unknown[v]), sg * float(self.ratio[v])))
                 if m.length_unknown[v] >= 0:
-                    length.append((2 * l, v, int(m.length_unknown[v]), sg))
+                    lterms.append((r, int(m.length_unknown[v]), sg))
                 if m.angle_input[v]:
-                    driven.append((2 * l, v, sg * self.ratio[v]))
-        self._py_terms, self._py_angle = terms, angle
-        self._py_length, self._py_driven = length, driven
+                    dterms.append((r, sg * float(self.ratio[v])))
+            rows.append((int(self.base_index[v]), float(self.ratio[v]), float(self.offset[v]),
+                         int(m.length_unknown[v]), float(self.fixed_length[v]),
+                         tuple(fterms), tuple(aterms), tuple(lterms), tuple(dterms)))
+        self._py_vectors = tuple(rows)
         self._py_scale = [float(x) for x in self.scale]
         self._py_limit = [float(x) for x in self.step_limit]
 
@@ -285,59 +284,55 @@ class LoopSystem:
         if not math.isfinite(theta2):
             return q, 0, math.nan, NOT_CLOSED, None
         nu = len(q)
+        f, d = nu, nu + 1                       # columns of -F and -dF/dtheta2
         n = 2 * self.n_loops
-        vectors, terms = self._py_vectors, self._py_terms
-        angle, length, driven = self._py_angle, self._py_length, self._py_driven
+        vectors = self._py_vectors
         scale, limit = self._py_scale, self._py_limit
         tol_res = tol * self.model.length_scale
         step_tol = step_tolerance(tol)
-        cos, sin, sqrt = math.cos, math.sin, math.sqrt
+        cos, sin, hypot = math.cos, math.sin, math.hypot
         size = math.inf
-        res = math.inf
         steps = 0
         while True:
             X = q + [theta2, 0.0]
-            c, s, Lc, Ls = [], [], [], []
-            for b, k, o, li, Lf in vectors:
+            A = [[0.0] * (nu + 2) for _ in range(n)]   # [J | -F | -dF/dtheta2]
+            for b, k, o, li, Lf, fterms, aterms, lterms, dterms in vectors:
                 th = k * X[b] + o
                 cv, sv = cos(th), sin(th)
                 L = q[li] if li >= 0 else Lf
-                c.append(cv)
-                s.append(sv)
-                Lc.append(L * cv)
-                Ls.append(L * sv)
-            F = [0.0] * n
-            for r, v, sg in terms:
-                F[r] += sg * Lc[v]
-                F[r + 1] += sg * Ls[v]
-            res = sqrt(sum(f * f for f in F))
-            # augmented matrix [J | -F | -dF/dtheta2]
-            A = [[0.0] * (nu + 2) for _ in range(n)]
-            for r, v, u, cf in angle:
-                A[r][u] -= cf * Ls[v]
-                A[r + 1][u] += cf * Lc[v]
-            for r, v, u, sg in length:
-                A[r][u] += sg * c[v]
-                A[r + 1][u] += sg * s[v]
-            for r, v, cf in driven:
-                A[r][nu + 1] += cf * Ls[v]
-                A[r + 1][nu + 1] -= cf * Lc[v]
-            for r in range(n):
-                A[r][nu] = -F[r]
+                lc, ls = L * cv, L * sv
+                for r, sg in fterms:
+                    A[r][f] -= sg * lc
+                    A[r + 1][f] -= sg * ls
+                for r, u, cf in aterms:
+                    A[r][u] -= cf * ls
+                    A[r + 1][u] += cf * lc
+                for r, u, sg in lterms:
+                    A[r][u] += sg * cv
+                    A[r + 1][u] += sg * sv
+                for r, cf in dterms:
+                    A[r][d] += cf * ls
+                    A[r + 1][d] -= cf * lc
+            res = hypot(*[row[f] for row in A])
             x = _gauss(A, nu)
             if size < step_tol and res <= tol_res:
-                return q, steps, res, CONVERGED, (None if x is None else [row[1] for row in x])
+                return q, steps, res, CONVERGED, (None if x is None else [xk[1] for xk in x])
             if x is None or res != res:
                 return q, steps, res, SINGULAR_STEP, None
             if steps == max_iterations:
                 return q, steps, res, NOT_CLOSED, None
-            dq = [row[0] for row in x]
-            ratio = max(abs(d) / lim for d, lim in zip(dq, limit))
-            size = max(abs(d) / sc for d, sc in zip(dq, scale))
+            ratio = size = 0.0
+            for xk, lim, sc in zip(x, limit, scale):
+                a = abs(xk[0])
+                if a > ratio * lim:
+                    ratio = a / lim
+                if a > size * sc:
+                    size = a / sc
             if ratio > 1.0:  # never leap to another assembly in one step
-                dq = [d / ratio for d in dq]
+                q = [qk + xk[0] / ratio for qk, xk in zip(q, x)]
                 size = math.inf
-            q = [a + d for a, d in zip(q, dq)]
+            else:
+                q = [qk + xk[0] for qk, xk in zip(q, x)]
             steps += 1
 
     def solve_position(self, q0, theta2, tol=DEFAULT_TOL):

@@ -73,25 +73,43 @@ class _Sweep:
         self.failures = 0       # consecutive failed positions
         self.coarse = COARSE_STEP   # current coarse step [rad]
         self.scale = system.scale
+        self.scale_list = [float(x) for x in system.scale]
+        # the continuation state in plain floats: (theta2, q, slope or None) of
+        # self.last; the per-position bookkeeping of a 4-unknown linkage is
+        # cheaper in Python than in numpy calls
+        self.state = None
 
     # --- bookkeeping --------------------------------------------------------
     def accept(self, i, q, it, slope):
+        q = [float(x) for x in q]
+        slope = None if slope is None else [float(x) for x in slope]
+        if slope is not None and not all(math.isfinite(x) for x in slope):
+            slope = None
         self.q[i], self.iterations[i], self.status[i] = q, it, OK
         self.slope[i] = np.nan if slope is None else slope
         self.sequential[i] = True
         # second and third derivatives of q(theta2) at i from the cubic through the
         # previous solved position: the predictor becomes a cubic Taylor polynomial
+        t = float(self.theta2[i])
         self.taylor = None
-        p = self.last
-        if p is not None and not self.gap:
-            h = float(self.theta2[i] - self.theta2[p])
-            s0, s1 = self.slope[p], self.slope[i]
-            if abs(h) > 1e-9 and np.isfinite(s0).all() and np.isfinite(s1).all():
-                dq = self.q[p] - self.q[i]
-                self.taylor = ((3 * dq + h * (s0 + 2 * s1)) / h ** 2,
-                               (2 * dq + h * (s0 + s1)) / h ** 3)
+        if self.state is not None and not self.gap and slope is not None:
+            t0, q0, s0 = self.state
+            h = t - t0
+            if s0 is not None and abs(h) > 1e-9:
+                dq = [a - b for a, b in zip(q0, q)]
+                h2, h3 = h * h, h * h * h
+                self.taylor = ([(3 * d + h * (a + 2 * b)) / h2 for d, a, b in zip(dq, s0, slope)],
+                               [(2 * d + h * (a + b)) / h3 for d, a, b in zip(dq, s0, slope)])
+        self.state = (t, q, slope)
         self.last, self.gap = i, False
         self.failures = 0
+
+    def restore(self, a):
+        """Continue from solved position a (to walk an interval again)."""
+        slope = self.slope[a]
+        self.state = (float(self.theta2[a]), [float(x) for x in self.q[a]],
+                      [float(x) for x in slope] if np.isfinite(slope).all() else None)
+        self.last, self.gap, self.failures, self.taylor = a, False, 0, None
 
     def fail(self, i, status, exc):
         self.status[i] = status
@@ -106,31 +124,51 @@ class _Sweep:
         return self.errors[min(bad)] if bad else None
 
     def jumped(self, q, pred, change):
-        return np.max(np.abs(q - pred) / self.scale) > JUMP_TOLERANCE + 0.5 * change
+        """Did Newton-Raphson land further from the prediction than the step explains?"""
+        limit = JUMP_TOLERANCE + 0.5 * change
+        return any(abs(a - b) > limit * sc for a, b, sc in zip(q, pred, self.scale_list))
 
     def predict(self, t):
-        """Continuation predictor from the last solved position to theta2 = t (a
-        float or an array): (guess, change), ``change`` the largest scaled first-
-        order change (None without a slope). The cubic Taylor terms are used only
-        where they stay small (< HIGHER_ORDER_CAP), so they never carry a guess
-        far from the tangent."""
-        t = np.asarray(t, dtype=float)
-        shape = t.shape + (self.system.n_unknowns,)
-        if self.last is None:
-            return np.broadcast_to(self.guess, shape), None
-        q, slope = self.q[self.last], self.slope[self.last]
-        if not np.isfinite(slope).all():
-            return np.broadcast_to(q, shape), None
-        d = (t - self.theta2[self.last])[..., None]
-        lin = slope * d
-        guess = q + lin
+        """Continuation predictor from the last solved position to theta2 = t:
+        ``(guess, change)``, ``change`` the largest scaled first-order change
+        (None without a slope). The cubic Taylor terms are used only where they
+        stay small (< HIGHER_ORDER_CAP), so they never carry a guess far from
+        the tangent. ``t`` a float gives lists, an array gives arrays."""
+        if np.ndim(t):
+            return self._predict_many(np.asarray(t, dtype=float))
+        if self.state is None:
+            return [float(x) for x in self.guess], None
+        t0, q, slope = self.state
+        if slope is None:
+            return list(q), None
+        d = t - t0
+        sc = self.scale_list
+        lin = [x * d for x in slope]
+        change = max(abs(x) / c for x, c in zip(lin, sc))
+        guess = [a + b for a, b in zip(q, lin)]
         if self.taylor is not None:
             c2, c3 = self.taylor
+            hot = [d * d * (a + b * d) for a, b in zip(c2, c3)]
+            if max(abs(x) / c for x, c in zip(hot, sc)) <= HIGHER_ORDER_CAP:
+                guess = [a + b for a, b in zip(guess, hot)]
+        return guess, change
+
+    def _predict_many(self, t):
+        shape = t.shape + (self.system.n_unknowns,)
+        if self.state is None:
+            return np.broadcast_to(self.guess, shape), None
+        t0, q, slope = self.state
+        if slope is None:
+            return np.broadcast_to(np.array(q), shape), None
+        d = (t - t0)[..., None]
+        lin = np.array(slope) * d
+        guess = np.array(q) + lin
+        if self.taylor is not None:
+            c2, c3 = np.array(self.taylor[0]), np.array(self.taylor[1])
             hot = d * d * (c2 + c3 * d)
             small = np.max(np.abs(hot) / self.scale, axis=-1, keepdims=True) <= HIGHER_ORDER_CAP
             guess = guess + np.where(small, hot, 0.0)
-        change = np.max(np.abs(lin) / self.scale, axis=-1)
-        return guess, (float(change) if change.ndim == 0 else change)
+        return guess, np.max(np.abs(lin) / self.scale, axis=-1)
 
     # --- one position by continuation ----------------------------------------
     def step(self, i, result=None):
@@ -148,7 +186,7 @@ class _Sweep:
             ok, q, slope = self.rejoin(i, np.asarray(q), slope)
             if not ok:
                 return False
-        elif change is not None and self.jumped(np.asarray(q), pred, change):
+        elif change is not None and self.jumped(q, pred, change):
             try:
                 q, it, slope = self.subdivide(t)
             except _BranchJump as exc:
@@ -296,10 +334,10 @@ class _Sweep:
         if reason != CONVERGED or slope is None:
             self.coarse = max(lo, 0.5 * self.coarse)
             return False
-        q, slope = np.asarray(q), np.asarray(slope)
-        h = t - float(self.theta2[a])
-        trapezoid = q - self.q[a] - 0.5 * h * (self.slope[a] + slope)
-        error = float(np.max(np.abs(trapezoid) / self.scale))
+        ta, qa, sa = self.state
+        h = t - ta
+        error = max(abs(q1 - q0 - 0.5 * h * (s0 + s1)) / sc
+                    for q0, q1, s0, s1, sc in zip(qa, q, sa, slope, self.scale_list))
         # the mismatch grows like h**3: aim the next step at COARSE_TARGET
         grow = 0.9 * (COARSE_TARGET / max(error, 1e-12)) ** (1 / 3)
         self.coarse = min(hi, max(lo, abs(h) * min(2.0, max(0.5, grow))))
@@ -378,7 +416,7 @@ class _Sweep:
             dense_until = -1
             while i < N:
                 if (batch and i > dense_until and self.last == i - 1 and not self.gap
-                        and np.isfinite(self.slope[i - 1]).all()):
+                        and self.state[2] is not None):
                     b = self.coarse_end(i - 1)
                     if b - (i - 1) >= MIN_STRIDE:
                         if self.coarse_step(i - 1, b):
@@ -391,7 +429,7 @@ class _Sweep:
             for a, b in self.batch(intervals):
                 # walk this interval again position by position from a
                 q_b, slope_b, it_b = self.q[b].copy(), self.slope[b].copy(), self.iterations[b]
-                self.last, self.gap, self.failures, self.taylor = a, False, 0, None
+                self.restore(a)
                 self.walk_dense(a + 1, b + 1)
                 if (self.status[b] == OK and self.last == b
                         and np.max(np.abs(self.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE):
