@@ -131,7 +131,8 @@ def goals(data):
     if big:
         us = big[0]["us"]
         add("fourbar position to jerk, unit-free, 10^5 positions [us/position]",
-            f"<= {GOALS['kernel_speed']}", round(us, 4), us <= GOALS["kernel_speed"])
+            f"<= {GOALS['kernel_speed']}", round(us, 4), us <= GOALS["kernel_speed"],
+            f"fastest repeat {big[0].get('us_min', us):.3g}")
     peers = data.get("peer_comparison") or []
     if peers:
         verdicts = []
@@ -149,13 +150,18 @@ def goals(data):
                 "faster", "; ".join(verdicts), met)
     units = {r["N"]: r for r in data["units"]["rows"]}
     if 360 in units:
+        u = units[360]
         add("unit-aware / unit-free time, 360 positions", f"<= {GOALS['units_ratio']}",
-            round(units[360]["ratio"], 3), units[360]["ratio"] <= GOALS["units_ratio"])
+            round(u["ratio"], 3), u["ratio"] <= GOALS["units_ratio"],
+            f"{u['unit_aware_us']:.0f} against {u['unit_free_us']:.0f} us per call; fastest "
+            f"repeats {u.get('unit_aware_min_us', 0):.0f} against "
+            f"{u.get('unit_free_min_us', 0):.0f} us")
     if 1 in units:
         us = units[1]["unit_aware_us"]
         add("one unit-aware solve, position to jerk [us]", f"<= {GOALS['units_single']}",
             round(us, 1), us <= GOALS["units_single"],
-            f"unit-free kernel alone: {units[1]['unit_free_us']:.1f} us; with string inputs "
+            f"fastest repeat {units[1].get('unit_aware_min_us', us):.0f} us; unit-free kernel "
+            f"alone: {units[1]['unit_free_us']:.1f} us; with string inputs "
             f"{data['units']['single_string_inputs_us']:.1f} us")
     closed = [r for r in res if r["method"] in ("kernels", "units")]
     if closed:
@@ -170,7 +176,8 @@ def goals(data):
     six = [r for r in res if r["case"].startswith("sixbar") and r["method"] == "loops"]
     for r in six:
         loose = [x for x in res if x["case"] == r["case"] and x["method"].startswith("loops-")]
-        note = f"{r['positions']} positions of a full turn, default tolerance"
+        note = (f"{r['positions']} positions of a full turn, default tolerance, fastest repeat "
+                f"{r['time_s']['min'] / r['positions'] * 1e6:.1f} us")
         if loose:
             best = min(loose, key=lambda x: x["us_per_position"])
             note += (f"; fastest setting {best['method']}: {best['us_per_position']:.1f} us, "

@@ -69,7 +69,7 @@ def positions(repeats=5, case_name="fourbar-open", quick=False, peers=True, tiny
                 break
             r = measure(run, repeats=repeats if n < 10 ** 5 else max(3, repeats // 2),
                         min_time=0.02 if n < 10 ** 5 else 0.0)
-            pts.append({"N": n, "us": r["median"] / n * 1e6})
+            pts.append({"N": n, "us": r["median"] / n * 1e6, "us_min": r["min"] / n * 1e6})
         out[key] = {"label": label, "order": order, "points": pts}
     return out
 
@@ -136,6 +136,7 @@ def loops(n=360, repeats=5):
         res = r["result"]
         rows.append({"case": case.name, "title": case.title, "loops": len(case.loops),
                      "unknowns": 2 * len(case.loops), "us": r["median"] / n * 1e6,
+                     "us_min": r["min"] / n * 1e6,
                      "valid": int(np.sum(res.valid)),
                      "mean_iterations": float(np.mean(res.iterations))})
     return rows
