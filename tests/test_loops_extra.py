@@ -361,6 +361,14 @@ def test_no_convergence_carries_the_residual():
     assert m.message.residual > 1e-4 and f"{m.message.residual:.3e}" in str(m.message)
 
 
+def test_non_finite_input_angles_are_masked_with_a_reason():
+    t2 = np.radians(np.linspace(0.0, 100.0, 101))
+    t2[[0, 50]] = np.inf, np.nan
+    m = solve(system_of(EXAMPLES["sixbar_slider"]()), t2, 1.0)
+    assert list(np.flatnonzero(m.status)) == [0, 50]
+    assert "not a finite angle" in str(m.message)
+
+
 def test_singular_carries_the_condition_number():
     # a parallelogram at its change point: every link on the x axis at theta2 = 0
     desc = fourbar_desc(1.0, 3.0, 1.0, 3.0, 0.05, 0.09)

@@ -8,9 +8,9 @@ only by a jump is reported ``singular`` rather than returned.
 
 To be fast the sweep does this sequential continuation only on a coarse
 subset of the positions (steps in theta2 that adapt to how fast the solution
-bends, where the input array is monotonic), then solves every position in between in one
-batched Newton-Raphson (numpy over positions) from cubic Hermite
-interpolation of the coarse solutions and their slopes dq/dtheta2. Each
+bends, where the input array is monotonic), then solves every position in
+between in one batched Newton-Raphson (numpy over positions) from cubic
+Hermite interpolation of the coarse solutions and their slopes dq/dtheta2. Each
 batched position must converge close to its interpolated guess; an interval
 where one does not (a toggle nearby, a non-assemblable stretch, another
 assembly within reach) is walked again position by position, and if that walk
