@@ -151,3 +151,42 @@ def test_coursekit_static_figure(monkeypatch):
     assert coursekit.polar(z) == "5 m/s² at 53.13 deg"
     assert coursekit.cartesian(z) == "(3 + j4) m/s²"
     assert coursekit.in_g(coursekit.Q_(9.80665, "m/s**2")) == pytest.approx(1.0)
+
+
+@pytest.mark.slow
+def test_explore_shows_sliders_in_a_live_kernel(tmp_path):
+    """Without ACCELAB_STATIC, inside a kernel, explore() builds ipywidgets sliders
+    (one per keyword, with their ranges) and draws through them."""
+    import nbformat
+    from nbclient import NotebookClient
+    from course.build_site import kernel_env
+
+    code = '''
+import matplotlib.pyplot as plt
+from coursekit import explore
+import coursekit, ipywidgets
+shown = []
+def draw(theta2, omega2):
+    shown.append((theta2, omega2))
+    fig, ax = plt.subplots()
+    ax.plot([0, 1], [0, theta2 * omega2])
+    return fig
+made = []
+real = ipywidgets.interactive
+ipywidgets.interactive = lambda f, **kw: made.append(kw) or real(f, **kw)
+explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(0.5, 20, 0.5, 10))
+ipywidgets.interactive = real
+s = made[0]
+print(coursekit.is_static(), type(s["theta2"]).__name__, s["theta2"].max, s["theta2"].value,
+      type(s["omega2"]).__name__, s["omega2"].step, shown)
+'''
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
+    env = kernel_env()
+    env["ACCELAB_STATIC"] = "0"
+    NotebookClient(nb, timeout=120, kernel_name="python3",
+                   resources={"metadata": {"path": str(COURSE)}}).execute(env=env)
+    outputs = nb.cells[0].outputs
+    text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
+    assert text.split() == ["False", "IntSlider", "360", "30", "FloatSlider", "0.5",
+                            "[(30,", "10.0)]"], text
+    assert any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs)
