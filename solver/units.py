@@ -86,6 +86,18 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
     InvalidInput
         With a message naming ``name``, what it needs and an example.
     """
+    if type(value) is str:  # the same text recurs (defaults, batch files, loops)
+        return _text_to_si(value, name, kind, positive, nonzero)
+    return _to_si(value, name, kind, positive, nonzero)
+
+
+@lru_cache(maxsize=4096)
+def _text_to_si(value, name, kind, positive, nonzero):
+    """:func:`to_si` of a string, remembered (a float; errors are not cached)."""
+    return _to_si(value, name, kind, positive, nonzero)
+
+
+def _to_si(value, name, kind, positive, nonzero):
     dim, si, example, words = KINDS[kind]
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
@@ -141,6 +153,22 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
     return float(arr) if arr.ndim == 0 else arr
 
 
+_SI_CONTAINERS = {kind: unit._units for kind, unit in SI_UNITS.items()}
+_PLAIN = (float, complex, np.ndarray, np.floating, np.complexfloating)
+
+
 def quantity(si_value, kind):
-    """Wrap an SI float or array (real or complex) as one Quantity."""
+    """Wrap an SI float or array (real or complex) as one Quantity.
+
+    For the magnitudes the solver produces (floats, complex, ndarrays) the
+    Quantity is assembled directly, as pint's own constructor would leave it
+    (the registry's Quantity class, the magnitude untouched, the SI unit's
+    container): a microsecond instead of twenty, which a sweep reading a
+    dozen outputs notices. Anything else goes through ``Q_``.
+    """
+    if isinstance(si_value, _PLAIN):
+        q = object.__new__(Q_)
+        q._magnitude = si_value
+        q._units = _SI_CONTAINERS[kind]
+        return q
     return Q_(si_value, SI_UNITS[kind])

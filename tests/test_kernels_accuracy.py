@@ -431,3 +431,16 @@ def test_batch_matches_reference_cases():
         why = ref.compare_to_branches(case["input"]["mechanism"], res, expect["ok"], 1e-8,
                                       case["input"].get("circuit"))
         assert not why, f"{case['id']}: {why}"
+
+
+def test_fast_quantities_behave_as_pint_built_ones():
+    """solver.units.quantity assembles Quantities without pint's constructor;
+    they must be indistinguishable from Q_(value, unit)."""
+    from solver.units import Q_, SI_UNITS, quantity
+    for value in (2.5, -1.5 + 0.5j, np.array([1.0, 2.0]), np.array([1j, 2.0])):
+        fast, slow = quantity(value, "acceleration"), Q_(value, SI_UNITS["acceleration"])
+        assert type(fast) is type(slow) and fast.units == slow.units
+        assert str(fast) == str(slow) and repr(fast) == repr(slow)
+        assert np.array_equal(fast.to("ft/s^2").m, slow.to("ft/s^2").m)
+        assert np.array_equal((fast * Q_(2.0, "s")).to("m/s").m, (slow * Q_(2.0, "s")).m)
+        assert f"{fast:.3g~P}" == f"{slow:.3g~P}"

@@ -19,6 +19,9 @@ and for a vector whose length b(t) also varies (a slider, eq. 7.19):
 Each helper returns the (x, y) components of such a term.
 """
 
+import functools
+import math
+
 import numpy as np
 
 OK, NOT_ASSEMBLABLE, SINGULAR = 0, 1, 2
@@ -59,7 +62,7 @@ def classify(gap, span):
 
     Parameters
     ----------
-    gap : array
+    gap : float or array
         Distance of the position from its nearest limit, in the kernel's
         length measure [m]: >= 0 where the loop closes, NaN or < 0 where not.
     span : float
@@ -68,21 +71,59 @@ def classify(gap, span):
 
     Returns
     -------
-    status : int8 array
+    status : int8 (array)
         OK; SINGULAR where the round-off estimate exceeds
         :data:`MAX_ROUNDOFF`, including a gap within round-off of zero on
         either side (the kernels then take the limit position itself);
         NOT_ASSEMBLABLE where the gap is clearly negative.
-    roundoff : float array
+    roundoff : float (array)
         ROUNDOFF_GAIN * eps * span / gap (inf at and past a limit).
     """
     tol = 2.0 * EPS * span
+    if np.ndim(gap) == 0:  # one position: plain floats are ten times faster
+        gap = float(gap)
+        roundoff = ROUNDOFF_GAIN * EPS * span / gap if gap > 0 else math.inf
+        status = (NOT_ASSEMBLABLE if not gap > -tol else
+                  OK if roundoff <= MAX_ROUNDOFF else SINGULAR)
+        return np.int8(status), roundoff
     with np.errstate(divide="ignore", invalid="ignore"):
         roundoff = np.where(gap > 0, ROUNDOFF_GAIN * EPS * span / gap, np.inf)
-    closes = gap > -tol
-    status = np.where(closes, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR),
+    status = np.where(gap > -tol, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR),
                       NOT_ASSEMBLABLE).astype(np.int8)
     return status, roundoff
+
+
+def as_input(x):
+    """A float for a scalar, else a float ndarray (the kernels keep a single
+    position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""
+    if type(x) is float:
+        return x
+    x = np.asarray(x, dtype=float)
+    return float(x) if x.ndim == 0 else x
+
+
+def where(cond, a, b):
+    """np.where that stays a scalar for a scalar condition."""
+    if np.ndim(cond) == 0:
+        return a if cond else b
+    return np.where(cond, a, b)
+
+
+def masked(bad, x):
+    """``x`` with NaN where ``bad`` (positions whose derivatives are refused)."""
+    if np.ndim(bad) == 0:
+        return math.nan if bad else x
+    return np.where(bad, np.nan, x) if bad.any() else x
+
+
+def quiet(func):
+    """Run a kernel with numpy's invalid/divide warnings off: NaN marks the
+    positions that do not assemble, and the status says so."""
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return func(*args, **kwargs)
+    return wrapper
 
 
 class Motion:
@@ -140,24 +181,22 @@ def triangle_angles(s, b, c, span):
     the triangle cannot close (area4 NaN there). The area uses the factored
     Heron form, which keeps the relative accuracy of the gap as the triangle
     flattens (a toggle position). A gap within round-off (2 eps span) below
-    zero is taken as zero: the toggle position itself.
+    zero is taken as zero: the toggle position itself. Call it with numpy's
+    invalid/divide warnings off (see :func:`quiet`).
     """
     f2 = s + b - c
     f3 = s - b + c
     f4 = b + c - s
     gap = np.minimum(np.minimum(f2, f3), f4)
-    prod = (s + b + c) * f2 * f3 * f4
-    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, prod)
-    with np.errstate(invalid="ignore"):
-        area4 = np.sqrt(prod)
+    prod = where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (s + b + c) * f2 * f3 * f4)
+    area4 = np.sqrt(prod)
     ss = s * s
     bb = b * b
     cc = c * c
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cos_psi = (ss + bb - cc) / (2.0 * s * b)
-        sin_psi = area4 / (2.0 * s * b)
-        cos_chi = (ss + cc - bb) / (2.0 * s * c)
-        sin_chi = area4 / (2.0 * s * c)
+    cos_psi = (ss + bb - cc) / (2.0 * s * b)
+    sin_psi = area4 / (2.0 * s * b)
+    cos_chi = (ss + cc - bb) / (2.0 * s * c)
+    sin_chi = area4 / (2.0 * s * c)
     return cos_psi, sin_psi, cos_chi, sin_chi, area4, gap
 
 

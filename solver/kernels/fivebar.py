@@ -23,11 +23,13 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import OK, Motion, acc_term, classify, jerk_term, triangle_angles
+from .common import (OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet,
+                     triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
+@quiet
 def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Geared fivebar kinematics from position to jerk.
@@ -56,7 +58,7 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
         (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
-    theta2 = np.asarray(theta2, dtype=float)
+    theta2 = as_input(theta2)
     t2 = theta2 - theta1
     t5 = lam * t2 + phi
     cos2, sin2 = np.cos(t2), np.sin(t2)
@@ -66,8 +68,7 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     s = np.hypot(rx, ry)
     span = a + b + c + d + f
     cos_psi, sin_psi, cos_chi, sin_chi, area4, gap = triangle_angles(s, b, c, span)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ux, uy = rx / s, ry / s
+    ux, uy = rx / s, ry / s
     sp = sigma * sin_psi
     c3 = ux * cos_psi - uy * sp
     s3 = uy * cos_psi + ux * sp
@@ -77,16 +78,15 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     S = -sigma * area4 / (2.0 * b * c)
     condition = np.abs(S)
     status, roundoff = classify(gap, span)
-    with np.errstate(invalid="ignore"):
-        theta3 = np.arctan2(s3, c3) + theta1
-        theta4 = np.arctan2(s4, c4) + theta1
+    theta3 = np.arctan2(s3, c3) + theta1
+    theta4 = np.arctan2(s4, c4) + theta1
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
                  status=status, condition=condition, roundoff=roundoff, circuit=circuit)
+    # cos and sin of each link in the ground frame, for the points of the links
+    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
     if order < 1:
         return out
-    bad = status != OK
-    if np.any(bad):
-        S = np.where(bad, np.nan, S)
+    S = masked(status != OK, S)
     bS, cS = b * S, c * S
     omega5 = lam * omega2
     # order 1: K = j a w2 e2 - j d w5 e5

@@ -24,7 +24,8 @@ auxiliary constants A..F; the same 2x2 matrix serves every order.
 
 import numpy as np
 
-from .common import OK, Motion, acc_term, classify, jerk_term, triangle_angles
+from .common import (OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet,
+                     triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -41,8 +42,7 @@ def position(a, b, c, d, cos2, sin2, sigma):
     ry = -a * sin2
     s = np.hypot(rx, ry)
     cos_psi, sin_psi, cos_chi, sin_chi, area4, gap = triangle_angles(s, b, c, a + b + c + d)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ub_x, ub_y = rx / s, ry / s  # unit vector A -> O4
+    ub_x, ub_y = rx / s, ry / s  # unit vector A -> O4
     # theta3 = beta + sigma psi ; theta4 = beta + pi - sigma chi
     sp = sigma * sin_psi
     c3 = ub_x * cos_psi - ub_y * sp
@@ -54,6 +54,7 @@ def position(a, b, c, d, cos2, sin2, sigma):
     return c3, s3, c4, s4, S, gap
 
 
+@quiet
 def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Fourbar kinematics from position to jerk.
@@ -90,22 +91,21 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     here as described in the module docstring.
     """
     sigma = CIRCUITS[circuit]
-    theta2 = np.asarray(theta2, dtype=float)
+    theta2 = as_input(theta2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     c3, s3, c4, s4, S, gap = position(a, b, c, d, cos2, sin2, sigma)
     condition = np.abs(S)
     status, roundoff = classify(gap, a + b + c + d)
-    with np.errstate(invalid="ignore"):
-        theta3 = np.arctan2(s3, c3) + theta1
-        theta4 = np.arctan2(s4, c4) + theta1
+    theta3 = np.arctan2(s3, c3) + theta1
+    theta4 = np.arctan2(s4, c4) + theta1
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit)
+    # cos and sin of each link in the ground frame, for the points of the links
+    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
-    bad = status != OK
-    if np.any(bad):
-        S = np.where(bad, np.nan, S)
+    S = masked(status != OK, S)
     bS = b * S
     cS = c * S
     # order 1: K = j a omega2 e2

@@ -30,11 +30,12 @@ perpendicular from the slide line to O4's circle: a limit position).
 
 import numpy as np
 
-from .common import EPS, OK, Motion, acc_term, classify, jerk_term
+from .common import EPS, OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet, where
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
+@quiet
 def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Inverted slider-crank kinematics from position to jerk.
@@ -63,7 +64,7 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
-    theta2 = np.asarray(theta2, dtype=float)
+    theta2 = as_input(theta2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     cg, sg = np.cos(gamma), np.sin(gamma)
@@ -75,15 +76,14 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     # gap = s - c |sin gamma|: how far A is from the nearest reach of the
     # slide line (0: the line is tangent there); within round-off below 0, 0
     gap = np.minimum(s - csg, s + csg)
-    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (s - csg) * (s + csg))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        root = np.sqrt(prod)
-        b = -c * cg + sigma * root
-        # e4 = r / (b e^{j gamma} + c) normalised; (px, py) = b e^{j gamma} + c has length s
-        px, py = b * cg + c, b * sg
-        c4 = (rx * px + ry * py) / (s * s)
-        s4 = (ry * px - rx * py) / (s * s)
-        condition = root / s
+    prod = where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (s - csg) * (s + csg))
+    root = np.sqrt(prod)
+    b = -c * cg + sigma * root
+    # e4 = r / (b e^{j gamma} + c) normalised; (px, py) = b e^{j gamma} + c has length s
+    px, py = b * cg + c, b * sg
+    c4 = (rx * px + ry * py) / (s * s)
+    s4 = (ry * px - rx * py) / (s * s)
+    condition = root / s
     status, roundoff = classify(gap, span)
     c3 = c4 * cg - s4 * sg
     s3 = s4 * cg + c4 * sg
@@ -91,12 +91,11 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     theta3 = theta4 + gamma
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit, gamma=gamma)
+    # cos and sin of each link in the ground frame, for the points of the links
+    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
-    bad = status != OK
-    den = sigma * root  # = b + c cos gamma
-    if np.any(bad):
-        den = np.where(bad, np.nan, den)
+    den = masked(status != OK, sigma * root)  # = b + c cos gamma
 
     def project(kx, ky):
         x = (ky * c3 - kx * s3) / den

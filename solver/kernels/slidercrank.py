@@ -20,11 +20,12 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 
 import numpy as np
 
-from .common import EPS, OK, Motion, acc_term, classify, jerk_term
+from .common import EPS, OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet, where
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
 
+@quiet
 def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Slider-crank kinematics from position to jerk.
@@ -53,7 +54,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``roundoff`` (see :func:`solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
-    theta2 = np.asarray(theta2, dtype=float)
+    theta2 = as_input(theta2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     y = a * sin2 - c
@@ -61,21 +62,20 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     # gap = b - |y|: how far the crank pin is from the rod's reach (0: rod
     # perpendicular to the slide); within round-off below 0, take it as 0
     gap = np.minimum(b - y, b + y)
-    prod = np.where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (b - y) * (b + y))
-    with np.errstate(invalid="ignore"):
-        c3 = sigma * np.sqrt(prod) / b
-    s3 = np.clip(y / b, -1.0, 1.0)
+    prod = where((gap <= 0) & (gap > -2.0 * EPS * span), 0.0, (b - y) * (b + y))
+    c3 = sigma * np.sqrt(prod) / b
+    s3 = masked(np.isnan(c3), np.minimum(np.maximum(y / b, -1.0), 1.0))
     condition = np.abs(c3)
     status, roundoff = classify(gap, span)
-    s3 = np.where(np.isnan(c3), np.nan, s3)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
     out = Motion(theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
                  roundoff=roundoff, circuit=circuit)
+    # cos and sin of each link in the ground frame, for the points of the links
+    out._unit = {"2": (cos2, sin2), "3": (c3, s3)}
     if order < 1:
         return out
-    bad = status != OK
-    bc3 = b * np.where(bad, np.nan, c3) if np.any(bad) else b * c3
+    bc3 = b * masked(status != OK, c3)
     # order 1: K = j a omega2 e2
     k = a * omega2
     kx, ky = -k * sin2, k * cos2

@@ -1,6 +1,7 @@
 """What every unit-aware mechanism shares: argument conversion, the lazy
 result object, and the errors raised for scalar inputs."""
 
+import functools
 import math
 
 import numpy as np
@@ -25,6 +26,7 @@ _EXACT = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk", "p":
           "lam": "dimensionless", "condition": "dimensionless"}
 
 
+@functools.lru_cache(maxsize=1024)
 def kind_of(name):
     """The kind of quantity a result attribute holds, from its name."""
     if name in _EXACT:
@@ -126,18 +128,38 @@ class Result:
         self._cache[key] = value
         return value
 
+    def _unit(self, theta_key, offset):
+        """(e, j e) with e = e^{j(theta_k + offset)}, computed once per link and
+        offset; from the kernel's own cos and sin of the link where it has them."""
+        key = ("e", theta_key, offset)
+        pair = self._cache.get(key)
+        if pair is None:
+            m = self._motion.__dict__
+            known = m.get("_unit", {}).get(theta_key[len("theta"):])
+            if known is not None and offset == 0.0:
+                e = points.from_components(*known)
+                theta1 = getattr(self._mech, "_theta1", 0.0)
+                if theta1:
+                    e = e * complex(math.cos(theta1), math.sin(theta1))
+            else:
+                e = points.unit(m[theta_key], offset)
+            pair = self._cache[key] = (e, 1j * e)
+        return pair
+
     def _relative(self, length, theta_key, offset, order):
         n = theta_key[len("theta"):]
         m = self._motion.__dict__
         theta = m[theta_key]
+        e, je = self._unit(theta_key, offset)
         if order == 0:
-            return points.relative_position(length, theta, offset)
+            return points.relative_position(length, theta, offset, e)
         if order == 1:
-            return points.relative_velocity(length, theta, m["omega" + n], offset)
+            return points.relative_velocity(length, theta, m["omega" + n], offset, e, je)
         if order == 2:
-            return points.relative_acceleration(length, theta, m["omega" + n], m["alpha" + n], offset)
+            return points.relative_acceleration(length, theta, m["omega" + n], m["alpha" + n],
+                                                offset, e, je)
         return points.relative_jerk(length, theta, m["omega" + n], m["alpha" + n], m["jerk" + n],
-                                    offset)
+                                    offset, e, je)
 
     def _component(self, x, y, comp):
         rel = self._mech._relative.get(x + y)
@@ -152,7 +174,8 @@ class Result:
         n = theta_key[len("theta"):]
         m = self._motion.__dict__
         t, nn = points.relative_acceleration_parts(length, m[theta_key], m["omega" + n],
-                                                  m["alpha" + n], offset)
+                                                  m["alpha" + n], offset,
+                                                  *self._unit(theta_key, offset))
         return t if comp == "t" else nn
 
     def point(self, link, p, delta=0, base=None):
@@ -373,6 +396,9 @@ class Mechanism:
             "alpha2": to_si(alpha2, "alpha2", "angular_acceleration"),
             "jerk2": to_si(jerk2, "jerk2", "angular_jerk"),
         }
+        arrays = {k: v.shape for k, v in inputs.items() if type(v) is not float}
+        if not arrays or len(arrays) == 1 and "theta2" in arrays:  # the common cases
+            return inputs
         shapes = {k: np.shape(v) for k, v in inputs.items()}
         try:
             shape = np.broadcast_shapes(*shapes.values())
