@@ -43,16 +43,18 @@ EPS = float(np.finfo(float).eps)
 #: eps * span (span: the sum of the link lengths that enter it). The outputs
 #: grow like gap**(-1/2) (omega) .. gap**(-5/2) (jerk), so their relative
 #: error is about ROUNDOFF_GAIN * eps * span / gap: that is ``Motion.roundoff``.
-#: Measured against 50-digit references (tests/test_limit_positions.py; 600
-#: random geometries with lengths spread over three decades, theta2 from 1e-3
-#: to 1e-11 rad from a limit) the worst output's error was at most 0.9 (fourbar,
-#: fivebar, inverted slider-crank) and 2.5 (slider-crank) times
-#: eps * span / gap, hence the gain 4. Refusing above 1e-6 keeps every answer
-#: at least ten times inside the 1e-5 that near-limit answers must meet, and
-#: answers every position farther than about 1e-7 rad (typical) .. 1e-6 rad
-#: (lengths three decades apart) from a limit. The sine of the transmission
-#: angle (``condition``) alone is not enough: at condition 1.3e-4 a fourbar
-#: with c/a = 1/400 was 1.1e-5 wrong in jerk4.
+#: Measured against the 50-digit reference of the tests (tests/_mp_reference.py:
+#: about 850 random geometries, lengths spread over three decades, theta2 from
+#: 1e-3 to 1e-11 rad from a limit, all four mechanisms) the worst output's
+#: error was at most 1.1 (fourbar, fivebar, inverted slider-crank) and 2.5
+#: (slider-crank) times eps * span / gap, hence the gain 4. Refusing above
+#: 1e-6 keeps every answer at least ten times inside the 1e-5 that near-limit
+#: answers must meet (the worst seen was 5e-7), and answers every position
+#: farther than about 1e-8 rad (typical) .. 1e-6 rad (lengths three decades
+#: apart) from a limit; none was refused farther than 1e-6 rad. The sine of
+#: the transmission angle (``condition``) alone would not do: at condition
+#: 1.3e-4 a fourbar with c/a = 1/400 was 1.1e-5 wrong in jerk4, and a
+#: slider-crank with b/a = 1/400 was 8.9e-6 wrong at condition 1.6e-4.
 MAX_ROUNDOFF = 1e-6
 ROUNDOFF_GAIN = 4.0
 

@@ -259,6 +259,14 @@ class Result:
         return float(c) if self._scalar else c
 
     @property
+    def roundoff(self):
+        """Estimated relative round-off of the derivative outputs (float or
+        array); above :data:`~solver.kernels.MAX_ROUNDOFF` a position is
+        ``singular``. Zero for mechanisms without limit positions."""
+        r = getattr(self._motion, "roundoff", 0.0)
+        return float(r) if self._scalar else np.broadcast_to(r, np.shape(self._motion.status))
+
+    @property
     def circuit(self):
         return self._motion.circuit
 
