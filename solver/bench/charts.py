@@ -22,7 +22,8 @@ STYLE = {"kernels": ("#0072B2", "o"), "kernels-o2": ("#0072B2", "o"),
          "units": ("#56B4E9", "s"), "scalar": ("#009E73", "D"),
          "loops": ("#E69F00", "^"), "fd": ("#CC79A7", "v"), "graphical": ("#D55E00", "P"),
          "peer-pylinkage": ("#000000", "X"), "pylinkage": ("#000000", "X"),
-         "peer-mechanism": ("#7F7F7F", "*"), "mechanism": ("#7F7F7F", "*")}
+         "peer-mechanism": ("#7F7F7F", "*"), "mechanism": ("#7F7F7F", "*"),
+         "peer-kimech": ("#882255", "h"), "kimech": ("#882255", "h")}
 GOAL_ERROR = 1e-13
 
 
@@ -149,7 +150,8 @@ def _merge(notes, close=0.12):
 #: where each family's label sits relative to its point (points, points, alignment)
 _OFFSETS = {"kernels": (6, -15, "left"), "units": (6, 9, "left"), "scalar": (6, 9, "left"),
             "graphical": (-6, -14, "right"), "loops": (6, 9, "left"),
-            "pylinkage": (0, 11, "center"), "mechanism": (8, 6, "left")}
+            "pylinkage": (0, 11, "center"), "mechanism": (8, 6, "left"),
+            "kimech": (8, -12, "left")}
 
 
 def _short(r):
@@ -176,15 +178,16 @@ def stability(data, outdir, formats=("png", "svg")):
         colour, marker = _style(key)
         err = np.array([np.nan if e is None else max(e, 1e-17) for e in m["errors"]])
         ax.plot(d, err, marker=marker, color=colour, ms=6, lw=1.3, label=m["label"],
-                markerfacecolor=colour if key != "mechanism" else "white")
+                markerfacecolor=colour if key not in ("mechanism", "kimech") else "white")
         ref = np.asarray(m["refused"], dtype=bool)
         if ref.any():
             ax.scatter(d[ref], np.full(ref.sum(), row_y[key]), marker=marker, s=22,
-                       color=colour, facecolors=colour if key != "mechanism" else "white")
+                       color=colour,
+                       facecolors=colour if key not in ("mechanism", "kimech") else "white")
     top = row_y[names[-1]] * 4 if names else 100.0
     ax.axhspan(4.0, top, color="#eeeeee", zorder=0)
-    ax.text(d.max() * 1.5, row_y[names[-1]] if names else 10.0,
-            "refused here (NaN: singular or\nnot assemblable), one row per method ",
+    ax.text(d.max() * 1.5, row_y[names[0]] if names else 10.0,
+            "refused here (NaN or an error: singular,\nnot assemblable), one row per method ",
             ha="right", va="center", fontsize=8, color="#444444")
     ax.axhline(GOAL_ERROR, color="#009E73", lw=1, ls=":")
     ax.text(1e-6, GOAL_ERROR * 1.5, "accuracy goal 1e-13", ha="center", fontsize=8,

@@ -16,14 +16,21 @@ What they can compute, and so what they are compared on:
     solved by ``scipy.optimize.fsolve`` at every position (default tolerance
     1.49e-8), one position at a time: no jerk.
 
-Neither reports singular positions: both return numbers at toggles.
+``kimech``
+    bodies with local points, joints and a driven joint, solved in body
+    coordinates (x, y, angle per link) with scipy, position to acceleration,
+    with its own continuation and diagnostics: no jerk. Measured on the
+    fourbars.
+
+pylinkage and mechanism never report a singular position: they return
+numbers at toggles.
 """
 
 import math
 
 import numpy as np
 
-PEERS = ("pylinkage", "mechanism")
+PEERS = ("pylinkage", "mechanism", "kimech")
 
 
 SLIDER_NOTE = ("pylinkage 1.3.0's slider-crank: step_fast_with_kinematics leaves the slider "
@@ -174,6 +181,49 @@ def _mechanism(NotApplicable):
     return prepare
 
 
+# --- kimech -------------------------------------------------------------------------
+def _kimech(NotApplicable):
+    def prepare(case, theta2):
+        import kimech as km
+        from .cases import MOTION
+        if case.mechanism != "fourbar":
+            raise NotApplicable("measured here on the fourbars only")
+        p = case.params
+        N = theta2.size
+        w = np.full(N, MOTION["omega2"])
+        al = np.full(N, MOTION["alpha2"])
+
+        def run():
+            m = km.Mechanism("fourbar")
+            g = m.ground
+            g.add_point("O2", (0.0, 0.0))
+            g.add_point("O4", (p["d"], 0.0))
+            crank, coupler, rocker = (m.add_link(n) for n in ("crank", "coupler", "rocker"))
+            crank.add_point("O", (0.0, 0.0))
+            crank.add_point("A", (p["a"], 0.0))
+            coupler.add_point("A", (0.0, 0.0))
+            coupler.add_point("B", (p["b"], 0.0))
+            rocker.add_point("O", (0.0, 0.0))
+            rocker.add_point("B", (p["c"], 0.0))
+            drive = m.revolute(g["O2"], crank["O"])
+            m.revolute(crank["A"], coupler["A"])
+            m.revolute(coupler["B"], rocker["B"])
+            m.revolute(rocker["O"], g["O4"])
+            A = p["a"] * complex(math.cos(theta2[0]), math.sin(theta2[0]))
+            guess = {crank: (0.0, 0.0, float(theta2[0])),
+                     coupler: (A.real, A.imag, case.kernel_guess(theta2[0])["R3"]),
+                     rocker: (p["d"], 0.0, case.kernel_guess(theta2[0])["R4"])}
+            driver = km.KinematicDriver(drive, position=theta2, velocity=w, acceleration=al)
+            return km.solve(m, drivers=driver, initial_guess=guess)
+
+        def extract(sol):
+            q, v, a = sol.coordinates, sol.coordinate_velocities, sol.coordinate_accelerations
+            return {"theta3": np.angle(np.exp(1j * q[:, 5])), "omega3": v[:, 5], "alpha3": a[:, 5],
+                    "theta4": np.angle(np.exp(1j * q[:, 8])), "omega4": v[:, 8], "alpha4": a[:, 8]}
+        return run, extract
+    return prepare
+
+
 def peer_methods(Method, NotApplicable):
     """Methods for the installed peers (none when none is installed)."""
     have = installed()
@@ -189,4 +239,7 @@ def peer_methods(Method, NotApplicable):
     if "mechanism" in have:
         out.append(Method("mechanism", f"mechanism {have['mechanism']} (fsolve)",
                           "peer-mechanism", 2, _mechanism(NotApplicable), vectorised=False))
+    if "kimech" in have:
+        out.append(Method("kimech", f"kimech {have['kimech']} (scipy, body coordinates)",
+                          "peer-kimech", 2, _kimech(NotApplicable), vectorised=False))
     return out

@@ -25,7 +25,7 @@ def goals_table(data):
 
 
 def cases_table(data, methods=("kernels", "units", "scalar", "loops", "fd-h1e-03", "graphical",
-                               "pylinkage", "mechanism")):
+                               "pylinkage", "mechanism", "kimech")):
     """Per case: time per position [us] / worst relative error, per method."""
     rows = {(r["case"], r["method"]): r for r in data["results"]}
     present = [m for m in methods if any(k[1] == m for k in rows)]
@@ -68,7 +68,8 @@ def machine_line(data):
     return (f"{m.get('cpu') or m.get('machine')}, {m.get('cores')} cores{load}; Python "
             f"{m['python']}, numpy {m['numpy']}, pint {m['pint']}, mpmath {m.get('mpmath')}; "
             f"peers: pylinkage {m.get('pylinkage')} (numba {m.get('numba')}), mechanism "
-            f"{m.get('mechanism')} (scipy {m.get('scipy')}); {data['mode']} run, "
+            f"{m.get('mechanism')}, kimech {m.get('kimech')} (scipy {m.get('scipy')}); "
+            f"{data['mode']} run, "
             f"{data['elapsed_s']:.0f} s, {data['date']}")
 
 

@@ -19,9 +19,9 @@ from .timing import measure
 
 #: largest N each method is timed at (the slow ones stop early), full and quick
 MAX_N = {"kernels": 10 ** 6, "kernels-o2": 10 ** 6, "units": 10 ** 6, "scalar": 10 ** 4,
-         "loops": 10 ** 4, "pylinkage": 10 ** 6, "mechanism": 10 ** 3}
+         "loops": 10 ** 4, "pylinkage": 10 ** 6, "mechanism": 10 ** 3, "kimech": 100}
 QUICK_MAX_N = {"kernels": 10 ** 5, "kernels-o2": 10 ** 5, "units": 10 ** 5, "scalar": 100,
-               "loops": 1000, "pylinkage": 10 ** 5, "mechanism": 10}
+               "loops": 1000, "pylinkage": 10 ** 5, "mechanism": 10, "kimech": 10}
 TINY_MAX_N = 100
 
 
@@ -37,7 +37,7 @@ def positions(repeats=5, case_name="fourbar-open", quick=False, peers=True, tiny
     case = all_cases()[case_name]
     table = {m.key: m for m in methods(include_peers=peers)}
     chosen = ["kernels", "units", "scalar"] + [k for k in table if k.startswith("loops")][:1] \
-        + [k for k in ("pylinkage", "mechanism") if k in table]
+        + [k for k in ("pylinkage", "mechanism", "kimech") if k in table]
     out = {}
     for key in chosen + ["kernels-o2"]:
         m = table.get(key)

@@ -92,7 +92,8 @@ def near_toggle(n=29, methods=("kernels", "loops", "fd", "graphical", "mechanism
 
 _LABELS = {"kernels": "closed forms (unit-free and unit-aware alike)",
            "loops": "vector loops (sweep)", "fd": "finite differences",
-           "graphical": "graphical construction", "mechanism": "mechanism (peer, fsolve)"}
+           "graphical": "graphical construction", "mechanism": "mechanism (peer, fsolve)",
+           "kimech": "kimech (peer)"}
 
 
 def _values(key, case, theta2, h):
@@ -107,15 +108,34 @@ def _values(key, case, theta2, h):
         m = table[key]
     else:
         return None
-    if key == "mechanism":
-        # it continues from the guesses of the first (farthest) point
-        pass
+    if key == "kimech":  # one solve per point: its sweep gives up whole at one failure
+        return _one_by_one(m, case, theta2)
     try:
         run, extract = m.prepare(case, theta2)
         with np.errstate(all="ignore"):
             return extract(run())
     except NotApplicable:
         return None
+    except Exception as exc:  # a peer that gives up on the whole sweep answers nothing
+        if key in ("mechanism", "kimech"):
+            names = [k for k, (_, _, n) in case.outputs.items() if n <= m.order]
+            return {"_error": str(exc), **{k: np.full(len(theta2), np.nan) for k in names}}
+        raise
+
+
+def _one_by_one(m, case, theta2):
+    names = [k for k, (_, _, n) in case.outputs.items() if n <= m.order]
+    out = {k: np.full(len(theta2), np.nan) for k in names}
+    for i, t in enumerate(theta2):
+        try:
+            run, extract = m.prepare(case, np.array([t]))
+            with np.errstate(all="ignore"):
+                values = extract(run())
+        except Exception:  # raised: reported, so counted as refused
+            continue
+        for k, v in values.items():
+            out[k][i] = v[0]
+    return out
 
 
 def newton_guesses(offsets=None, trials=24, seed=7, points=None):

@@ -13,6 +13,11 @@ import sys
 import time
 
 
+#: a call slower than this [s] is repeated at most SLOW_REPEATS times
+SLOW_CALL = 0.5
+SLOW_REPEATS = 3
+
+
 def measure(fn, repeats=7, min_time=0.02, max_number=10000):
     """Median wall time of one call of ``fn`` [s].
 
@@ -22,7 +27,8 @@ def measure(fn, repeats=7, min_time=0.02, max_number=10000):
         Called with no arguments. Called once first as a warm-up (caches,
         JIT compilation, lazy imports), and that call's result returned.
     repeats : int
-        Number of timed repeats whose median is reported.
+        Number of timed repeats whose median is reported (at most
+        ``SLOW_REPEATS`` for a call slower than ``SLOW_CALL``).
     min_time : float
         Minimum duration of one repeat [s]; short calls are looped.
 
@@ -36,6 +42,8 @@ def measure(fn, repeats=7, min_time=0.02, max_number=10000):
     result = fn()
     first = time.perf_counter() - t0
     number = 1
+    if first > SLOW_CALL:
+        repeats = min(repeats, SLOW_REPEATS)
     if first < min_time:  # a second, warm, estimate decides the loop count
         t0 = time.perf_counter()
         fn()
@@ -99,7 +107,7 @@ def machine():
         info["mpmath"] = mpmath.__version__
     except ImportError:  # pragma: no cover
         pass
-    for name in ("pylinkage", "mechanism", "numba", "scipy"):
+    for name in ("pylinkage", "mechanism", "kimech", "numba", "scipy"):
         info[name] = _version(name)
     try:
         from threadpoolctl import threadpool_info
