@@ -32,46 +32,57 @@ def _sizes(max_n):
 def positions(repeats=5, case_name="fourbar-open", quick=False, peers=True, tiny=False):
     """Time per position [us] against the number of positions, per method.
 
-    Returns dict method key -> {"label", "order", "points": [{"N", "us"}]}.
+    At each number of positions the methods are timed in turn within each
+    repeat (:func:`.timing.measure_interleaved`), so that other jobs on the
+    machine do not tilt the comparison.
+
+    Returns dict method key -> {"label", "order", "points": [{"N", "us", "us_min"}]}.
     """
+    from .timing import measure_interleaved
     case = all_cases()[case_name]
     table = {m.key: m for m in methods(include_peers=peers)}
     chosen = ["kernels", "units", "scalar"] + [k for k in table if k.startswith("loops")][:1] \
-        + [k for k in ("pylinkage", "mechanism", "kimech") if k in table]
-    out = {}
-    for key in chosen + ["kernels-o2"]:
+        + [k for k in ("pylinkage", "mechanism", "kimech") if k in table] + ["kernels-o2"]
+    out, limits = {}, {}
+    for key in chosen:
         m = table.get(key)
-        label = m.label if m else "closed forms, unit-free, to acceleration"
-        order = m.order if m else 2
-        pts = []
+        out[key] = {"label": m.label if m else "closed forms, unit-free, to acceleration",
+                    "order": m.order if m else 2, "points": []}
         family = key.split("-")[0] if key.startswith("loops") else key
-        limit = (QUICK_MAX_N if quick else MAX_N)[family]
-        if tiny:
-            limit = min(limit, TINY_MAX_N)
-        for n in _sizes(limit):
-            t2 = case.theta2(max(n, 1))
+        limits[key] = min((QUICK_MAX_N if quick else MAX_N)[family],
+                          TINY_MAX_N if tiny else 10 ** 6)
+    for n in _sizes(max(limits.values())):
+        t2 = case.theta2(n)
+        keys, fns = [], []
+        for key in chosen:
+            if n > limits[key]:
+                continue
             try:
-                if key == "kernels-o2":
-                    arr = t2 if n > 1 else float(t2[0])
-
-                    def run(arr=arr):
-                        return case.kernel(arr, order=2)
-                else:
-                    run, _ = m.prepare(case, t2 if n > 1 else t2[:1])
-                    if key == "kernels" and n == 1:
-                        x = float(t2[0])
-
-                        def run(x=x):
-                            return case.kernel(x)
-                    if key == "units" and n == 1:
-                        run = _unit_scalar(case, float(t2[0]))
+                fns.append(_runner(key, table.get(key), case, t2))
+                keys.append(key)
             except NotApplicable:
-                break
-            r = measure(run, repeats=repeats if n < 10 ** 5 else max(3, repeats // 2),
-                        min_time=0.02 if n < 10 ** 5 else 0.0)
-            pts.append({"N": n, "us": r["median"] / n * 1e6, "us_min": r["min"] / n * 1e6})
-        out[key] = {"label": label, "order": order, "points": pts}
+                limits[key] = 0
+        res = measure_interleaved(fns, repeats=repeats, min_time=0.02 if n < 10 ** 5 else 0.0)
+        for key, r in zip(keys, res):
+            out[key]["points"].append({"N": n, "us": r["median"] / n * 1e6,
+                                       "us_min": r["min"] / n * 1e6})
     return out
+
+
+def _runner(key, m, case, t2):
+    """The timed work of ``key`` at the crank angles ``t2`` (one angle: scalar input)."""
+    if len(t2) == 1:
+        x = float(t2[0])
+        if key == "kernels":
+            return lambda: case.kernel(x)
+        if key == "kernels-o2":
+            return lambda: case.kernel(x, order=2)
+        if key == "units":
+            return _unit_scalar(case, x)
+    if key == "kernels-o2":
+        return lambda: case.kernel(t2, order=2)
+    run, _ = m.prepare(case, t2)
+    return run
 
 
 def _unit_scalar(case, theta2):
@@ -127,16 +138,19 @@ def loops(n=360, repeats=5):
     cases = all_cases()
     chain = [from_example("fourbar-loops", "fourbar (1 loop)", fourbar_example()),
              cases["sixbar-watt2"], cases["sixbar-slider"], cases["eightbar"]]
-    rows = []
+    from .timing import measure_interleaved
+    runs = []
     for case in chain:
         linkage = VectorLoopLinkage(**description(case))
         inputs = unit_inputs(case.theta2(n))
         inputs["theta2"] = Q_(case.theta2(n), "rad")
-        r = measure(lambda: linkage.solve(**inputs), repeats=repeats, min_time=0.0)
-        res = r["result"]
+        runs.append(lambda linkage=linkage, inputs=inputs: linkage.solve(**inputs))
+    times = measure_interleaved(runs, repeats=repeats, min_time=0.0)
+    rows = []
+    for case, run, r in zip(chain, runs, times):
+        res = run()
         rows.append({"case": case.name, "title": case.title, "loops": len(case.loops),
                      "unknowns": 2 * len(case.loops), "us": r["median"] / n * 1e6,
-                     "us_min": r["min"] / n * 1e6,
-                     "valid": int(np.sum(res.valid)),
+                     "us_min": r["min"] / n * 1e6, "valid": int(np.sum(res.valid)),
                      "mean_iterations": float(np.mean(res.iterations))})
     return rows
