@@ -247,6 +247,12 @@ def stability(data, outdir, formats=("png", "svg")):
     return paths
 
 
+_SCALING_LABELS = {"kernels": "closed forms, unit-free", "kernels-o2": "closed forms, unit-free",
+                   "units": "closed forms, unit-aware", "scalar": "closed forms, scalar loop",
+                   "loops": "vector loops", "pylinkage": "pylinkage", "mechanism": "mechanism",
+                   "kimech": "kimech"}
+
+
 def scaling(data, outdir, formats=("png", "svg")):
     """Chart 3: cost against the number of positions and of loops."""
     import matplotlib.pyplot as plt
@@ -261,9 +267,9 @@ def scaling(data, outdir, formats=("png", "svg")):
         us = [p["us"] for p in m["points"]]
         ls = "--" if m["order"] < 3 else "-"
         face = colour if m["order"] >= 3 else "white"
+        short = _SCALING_LABELS.get(key.split("-tol")[0], m["label"])
         ax.plot(n, us, color=colour, marker=marker, ls=ls, lw=1.5, markerfacecolor=face,
-                label=m["label"] + ("" if m["order"] >= 3 or "acceleration" in m["label"]
-                                    else " (to acceleration)"))
+                label=short + ("" if m["order"] >= 3 else ", to acceleration"))
     ax.axhline(0.2, color="#009E73", lw=1, ls=":")
     ax.text(1.2, 0.2 * 1.15, "goal: 0.2 µs/position at 10^5 (closed forms, to jerk)", fontsize=8,
             color="#009E73")
@@ -273,7 +279,7 @@ def scaling(data, outdir, formats=("png", "svg")):
     ax.set_ylabel("time per position [µs] (median)")
     ax.set_title("(a) Fourbar: cost per position against the work", fontsize=11)
     ax.grid(True, color="#dddddd", lw=0.6)
-    ax.legend(fontsize=8, loc="upper right")
+    ax.legend(fontsize=8, loc="upper right", title="to jerk unless said", title_fontsize=8)
     rows = sc["loops"]
     colour, marker = _style("loops")
     xs = [r["loops"] + (0.08 if "slider" in r["case"] else 0) for r in rows]
