@@ -128,11 +128,21 @@ def solve_case(case):
         out.update(result.to_dict())
         out["condition"] = result.condition
         return out
-    except AccelabError as exc:
+    except Exception as exc:  # noqa: BLE001 - one bad case never stops the batch
+        return error_object(exc)
+
+
+def error_object(exc):
+    """The batch contract's error object for an exception raised by one case.
+
+    Errors of the :class:`AccelabError` family give their own kind and message;
+    anything else is a bug, reported as ``internal_error`` in the case so that
+    the rest of the batch goes on.
+    """
+    if isinstance(exc, AccelabError):
         return {"ok": False, "error": exc.kind, "message": str(exc)}
-    except Exception as exc:  # a bug: report it in the case, keep the batch going
-        return {"ok": False, "error": "internal_error",
-                "message": f"{type(exc).__name__}: {exc} (please report this case)"}
+    return {"ok": False, "error": "internal_error",
+            "message": f"{type(exc).__name__}: {exc} (please report this case)"}
 
 
 def solve_cases(cases):

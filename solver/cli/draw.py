@@ -49,7 +49,7 @@ def register(sub):
 
 def draw_case(case, outdir, stem, formats=("png", "svg"), step=None):
     """Construct, draw and read one case; never raises (errors become error objects)."""
-    from ..errors import AccelabError
+    from ..batch import error_object
     try:
         from ..graphical import construct_case
         from ..graphical.draw import save
@@ -64,11 +64,8 @@ def draw_case(case, outdir, stem, formats=("png", "svg"), step=None):
         out.update(con.to_dict())
         out["figures"] = save(con, outdir, f"{stem}-{con.mechanism}", formats, step)
         return out
-    except AccelabError as exc:
-        return {"ok": False, "error": exc.kind, "message": str(exc)}
-    except Exception as exc:  # a bug: report it in the case, keep the batch going
-        return {"ok": False, "error": "internal_error",
-                "message": f"{type(exc).__name__}: {exc} (please report this case)"}
+    except Exception as exc:  # noqa: BLE001 - one bad case never stops the batch
+        return error_object(exc)
 
 
 def run(args):
