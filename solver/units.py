@@ -108,7 +108,8 @@ def _to_si(value, name, kind, positive, nonzero):
         units = q._units
         factor = _factor(units, kind)
         if factor is None:
-            given = "no units" if q.dimensionless else f"{q.units:~}"
+            given = ("no units" if q.dimensionless
+                     else f"the dimension {q.dimensionality} of {q.units:~}")
             raise InvalidInput(
                 f"{name} must be {words} (got {value!s}, which has {given}). "
                 f"Example: {name}={example}", name)
