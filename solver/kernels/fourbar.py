@@ -6,6 +6,11 @@ Vector loop (Chapter 7, eq. 7.6; CONVENTIONS):
 Position. With A = a e^{j theta2} and O4 = d e^{j theta1}, the triangle
 A-B-O4 has sides b, c and s = |O4 - A|; B lies on the side of line A->O4
 given by the circuit. ``open`` is the chapter's eq. 4.10b with the minus sign.
+With r = O4 - A, the law of cosines and Heron's area (4 x area = H) give the
+links' unit vectors without any angle (sigma = +1 open, -1 crossed):
+
+    e3 = (r (s^2 + b^2 - c^2) + sigma j r H) / (2 b s^2)
+    e4 = -(r (s^2 - b^2 + c^2) - sigma j r H) / (2 c s^2)
 
 Derivatives. Differentiating the loop n times gives, at every order,
 
@@ -19,39 +24,90 @@ with e^{j theta4} and e^{j theta3} eliminates one unknown each:
     x4 = (K_n . e3) / (c sin(theta3 - theta4))
 
 This is eq. 7.12 (and 6.18 for velocity) written without the chapter's
-auxiliary constants A..F; the same 2x2 matrix serves every order.
+auxiliary constants A..F; the same 2x2 matrix serves every order. Every term
+of K_n is (R + j I) e^{j theta_k}, whose dot product with e^{j theta_m} is
+R cos(theta_k - theta_m) - I sin(theta_k - theta_m), so the kernel needs only
+the cosines and sines of theta2 - theta3, theta2 - theta4 and theta3 - theta4:
+
+    omega3 = -a omega2 sin(t2 - t4) / (b S)        S = sin(t3 - t4)
+    alpha3 = (-a omega2^2 cos(t2 - t4) - a alpha2 sin(t2 - t4)
+              - b omega3^2 cos(t3 - t4) + c omega4^2) / (b S)
+    jerk3  = (R2 cos(t2 - t4) - I2 sin(t2 - t4) + R3 cos(t3 - t4) - R4) / (b S)
+             + omega3^3
+
+with R2 + j I2 = a (-3 omega2 alpha2 + j (jerk2 - omega2^3)) and
+Rk = -3 Lk omega_k alpha_k (the imaginary parts -Lk omega_k^3 of links 3 and 4
+dot to -b omega3^3 S and 0: the first gives the + omega3^3); omega4, alpha4,
+jerk4 alike with the cosines and sines of t2 - t3 and c S.
+
+Arrays are solved in blocks of :data:`BLOCK` positions with every operation
+writing into a few preallocated work arrays, so that they stay in the cache;
+a single position is solved by the same formulas in the same order, so a
+sweep gives, position by position, exactly the scalar answers.
 """
+
+import math
 
 import numpy as np
 
-from .common import (OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet,
-                     triangle_angles)
+from .common import (EPS, MAX_ROUNDOFF, OK, ROUNDOFF_GAIN, SINGULAR, Motion, as_input,
+                     classify, masked, quiet)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
+#: positions per block of the array path: the block's 26 work arrays (8 bytes a
+#: position) then fit the 512 kB second-level cache of one core
+BLOCK = 16384
+
 
 def position(a, b, c, d, cos2, sin2, sigma):
-    """Unit vectors of links 3 and 4 in the ground frame.
+    """Unit vectors of links 3 and 4 in the ground frame (floats or arrays).
 
-    Returns ``(c3, s3, c4, s4, S, gap)``: cos/sin of theta3 and theta4
-    measured from the ground line, S = sin(theta3 - theta4), and the gap of
-    the triangle A-B-O4 (the distance of |A - O4| from b + c or |b - c|,
-    negative where the loop cannot close).
+    Returns ``(c3, s3, c4, s4, area4, gap)``: cos/sin of theta3 and theta4
+    measured from the ground line, four times the area of the triangle
+    A-B-O4 (Heron, factored; NaN where it cannot close), and its gap (the
+    distance of |A - O4| from b + c or |b - c|, negative where the loop
+    cannot close). A gap within round-off below zero is taken as zero: the
+    toggle position itself.
     """
+    scalar = np.ndim(cos2) == 0
     rx = d - a * cos2            # r = O4 - A
     ry = -a * sin2
-    s = np.hypot(rx, ry)
-    cos_psi, sin_psi, cos_chi, sin_chi, area4, gap = triangle_angles(s, b, c, a + b + c + d)
-    ub_x, ub_y = rx / s, ry / s  # unit vector A -> O4
-    # theta3 = beta + sigma psi ; theta4 = beta + pi - sigma chi
-    sp = sigma * sin_psi
-    c3 = ub_x * cos_psi - ub_y * sp
-    s3 = ub_y * cos_psi + ub_x * sp
-    sc = sigma * sin_chi
-    c4 = -(ub_x * cos_chi + ub_y * sc)
-    s4 = -(ub_y * cos_chi - ub_x * sc)
-    S = -sigma * area4 / (2.0 * b * c)
-    return c3, s3, c4, s4, S, gap
+    ss = rx * rx + ry * ry
+    s = np.sqrt(ss)
+    bmc, bpc = b - c, b + c
+    f2, f3, f4 = s + bmc, s - bmc, bpc - s
+    f23 = s - abs(bmc)           # = min(f2, f3)
+    prod = (s + bpc) * f2 * f3 * f4
+    tol = 2.0 * EPS * (a + b + c + d)
+    if scalar:
+        gap = f23 if f23 <= f4 else f4
+        if -tol < gap <= 0.0:
+            prod = 0.0
+    else:
+        gap = np.minimum(f23, f4)
+        prod = np.where((gap <= 0.0) & (gap > -tol), 0.0, prod)
+    area4 = np.sqrt(prod)
+    k = b * b - c * c
+    inv3 = (0.5 / b) / ss
+    inv4 = (-0.5 / c) / ss
+    rxh = rx * area4
+    ryh = ry * area4
+    P = ss + k
+    Q = ss - k
+    c3 = (rx * P - sigma * ryh) * inv3
+    s3 = (ry * P + sigma * rxh) * inv3
+    c4 = (rx * Q + sigma * ryh) * inv4
+    s4 = (ry * Q - sigma * rxh) * inv4
+    return c3, s3, c4, s4, area4, gap
+
+
+def _coefficients(a, omega2, alpha2, jerk2):
+    """The crank's terms of K_1..K_3 (floats, or arrays for array inputs):
+    -a omega2, -a omega2^2, -a alpha2, -3 a omega2 alpha2, a (jerk2 - omega2^3)."""
+    mk = -a * omega2
+    return (mk, mk * omega2, -a * alpha2, -3.0 * a * omega2 * alpha2,
+            a * (jerk2 - omega2 * omega2 * omega2))
 
 
 @quiet
@@ -92,48 +148,256 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
-    t2 = theta2 - theta1
+    if type(theta2) is not float and _blockable(theta2, (omega2, alpha2, jerk2),
+                                                (a, b, c, d, theta1)):
+        return _solve_blocks(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,
+                             jerk2, float(theta1), sigma, circuit, order)
+    turned = np.ndim(theta1) > 0 or theta1 != 0.0
+    t2 = theta2 - theta1 if turned else theta2
     cos2, sin2 = np.cos(t2), np.sin(t2)
-    c3, s3, c4, s4, S, gap = position(a, b, c, d, cos2, sin2, sigma)
-    condition = np.abs(S)
+    c3, s3, c4, s4, area4, gap = position(a, b, c, d, cos2, sin2, sigma)
+    condition = area4 / (2.0 * b * c)
     status, roundoff = classify(gap, a + b + c + d)
-    theta3 = np.arctan2(s3, c3) + theta1
-    theta4 = np.arctan2(s4, c4) + theta1
+    theta3 = np.arctan2(s3, c3)
+    theta4 = np.arctan2(s4, c4)
+    if turned:
+        theta3, theta4 = theta3 + theta1, theta4 + theta1
     out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
     out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
-    S = masked(status != OK, S)
-    bS = b * S
-    cS = c * S
-    # order 1: K = j a omega2 e2
-    k = a * omega2
-    kx, ky = -k * sin2, k * cos2
-    omega3 = (kx * c4 + ky * s4) / bS
-    omega4 = (kx * c3 + ky * s3) / cS
+    cond = masked(status != OK, condition)
+    bS = cond * (-sigma * b)     # b sin(theta3 - theta4)
+    cS = cond * (-sigma * c)
+    c23 = cos2 * c3 + sin2 * s3  # cos and sin of theta2 - theta3, theta2 - theta4
+    s23 = sin2 * c3 - cos2 * s3
+    c24 = cos2 * c4 + sin2 * s4
+    s24 = sin2 * c4 - cos2 * s4
+    mk, A2, B2, R2, I2 = _coefficients(a, omega2, alpha2, jerk2)
+    omega3 = mk * s24 / bS
+    omega4 = mk * s23 / cS
     out.omega2, out.omega3, out.omega4 = omega2, omega3, omega4
     if order < 2:
         return out
-    # order 2: K = a(j alpha2 - omega2^2) e2 - b omega3^2 e3 + c omega4^2 e4
-    kx, ky = acc_term(a, cos2, sin2, omega2, alpha2)
-    n3 = b * omega3 * omega3
-    n4 = c * omega4 * omega4
-    kx = kx - n3 * c3 + n4 * c4
-    ky = ky - n3 * s3 + n4 * s4
-    alpha3 = (kx * c4 + ky * s4) / bS
-    alpha4 = (kx * c3 + ky * s3) / cS
+    c34 = c3 * c4 + s3 * s4      # cos(theta3 - theta4)
+    p3 = omega3 * omega3
+    p4 = omega4 * omega4
+    n3 = p3 * b
+    n4 = p4 * c
+    alpha3 = (A2 * c24 + B2 * s24 - n3 * c34 + n4) / bS
+    alpha4 = (A2 * c23 + B2 * s23 - n3 + n4 * c34) / cS
     out.alpha2, out.alpha3, out.alpha4 = alpha2, alpha3, alpha4
     if order < 3:
         return out
-    # order 3: K = a(...)e2 + b(-3 w3 a3 - j w3^3) e3 - c(-3 w4 a4 - j w4^3) e4
-    kx, ky = jerk_term(a, cos2, sin2, omega2, alpha2, jerk2)
-    j3x, j3y = jerk_term(b, c3, s3, omega3, alpha3, 0.0)
-    j4x, j4y = jerk_term(c, c4, s4, omega4, alpha4, 0.0)
-    kx = kx + j3x - j4x
-    ky = ky + j3y - j4y
+    R3 = omega3 * alpha3 * (-3.0 * b)
+    R4 = omega4 * alpha4 * (-3.0 * c)
     out.jerk2 = jerk2
-    out.jerk3 = (kx * c4 + ky * s4) / bS
-    out.jerk4 = (kx * c3 + ky * s3) / cS
+    out.jerk3 = (R2 * c24 - I2 * s24 + R3 * c34 - R4) / bS + p3 * omega3
+    out.jerk4 = (R2 * c23 - I2 * s23 + R3 - R4 * c34) / cS + p4 * omega4
+    return out
+
+
+def _blockable(theta2, motion, lengths):
+    """Whether the block path takes these inputs: theta2 an array, each of
+    omega2, alpha2, jerk2 a scalar or an array of theta2's shape, the
+    lengths and theta1 scalars (anything else broadcasts in :func:`solve`)."""
+    shape = theta2.shape
+    return (all(np.ndim(x) == 0 or np.shape(x) == shape for x in motion)
+            and all(np.ndim(x) == 0 for x in lengths))
+
+
+def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circuit, order):
+    """:func:`solve` over an array of positions, block by block, in place.
+
+    The same operations as :func:`solve` and :func:`position` in the same
+    order (so the same bits), each writing into a work array of the block.
+    """
+    shape = theta2.shape
+    t2all = theta2.reshape(-1)
+    n = t2all.size
+    motion = [np.ravel(x) if np.ndim(x) else x for x in (omega2, alpha2, jerk2)]
+    varying = any(np.ndim(x) for x in motion)
+    if not varying:
+        coef = _coefficients(a, *motion)
+    names = ["theta3", "theta4", "cos2", "sin2", "c3", "s3", "c4", "s4", "condition",
+             "roundoff"] + ["omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4"][:2 * order]
+    res = {k: np.empty(n) for k in names}
+    status = np.empty(n, dtype=np.int8)
+    span = a + b + c + d
+    tol = 2.0 * EPS * span
+    gain = ROUNDOFF_GAIN * EPS * span     # as in classify
+    bmc, bpc = b - c, b + c
+    abs_bmc = abs(bmc)
+    k = b * b - c * c
+    h3, h4 = 0.5 / b, -0.5 / c
+    two_bc = 2.0 * b * c
+    mb, mc = -sigma * b, -sigma * c
+    m3b, m3c = -3.0 * b, -3.0 * c
+    plus, minus = (np.add, np.subtract) if sigma > 0 else (np.subtract, np.add)
+    work = np.empty((13, min(n, BLOCK)))
+    for start in range(0, n, BLOCK):
+        stop = min(start + BLOCK, n)
+        sl = slice(start, stop)
+        rx, ry, ss, s, f2, f3, f4, gap, P, Q, inv3, inv4, t = work[:, :stop - start]
+        cos2, sin2 = res["cos2"][sl], res["sin2"][sl]
+        c3, s3, c4, s4 = res["c3"][sl], res["s3"][sl], res["c4"][sl], res["s4"][sl]
+        condition, roundoff = res["condition"][sl], res["roundoff"][sl]
+        st = status[sl]
+        t2 = t2all[sl]
+        if theta1:
+            t2 = np.subtract(t2, theta1, out=t)
+        np.cos(t2, out=cos2)
+        np.sin(t2, out=sin2)
+        # position (see position())
+        np.multiply(cos2, a, out=rx)
+        np.subtract(d, rx, out=rx)
+        np.multiply(sin2, -a, out=ry)
+        np.multiply(rx, rx, out=ss)
+        np.multiply(ry, ry, out=t)
+        np.add(ss, t, out=ss)
+        np.sqrt(ss, out=s)
+        np.add(s, bmc, out=f2)
+        np.subtract(s, bmc, out=f3)
+        np.subtract(bpc, s, out=f4)
+        np.subtract(s, abs_bmc, out=gap)
+        np.minimum(gap, f4, out=gap)
+        prod = np.add(s, bpc, out=s)
+        prod *= f2
+        prod *= f3
+        prod *= f4
+        gmin = gap.min()
+        if not gmin > 0.0:   # a limit position, or past one, in this block
+            np.copyto(prod, 0.0, where=(gap <= 0.0) & (gap > -tol))
+        area4 = np.sqrt(prod, out=prod)
+        np.divide(area4, two_bc, out=condition)
+        np.divide(h3, ss, out=inv3)
+        np.divide(h4, ss, out=inv4)
+        rxh = np.multiply(rx, area4, out=f2)
+        ryh = np.multiply(ry, area4, out=f3)
+        np.add(ss, k, out=P)
+        np.subtract(ss, k, out=Q)
+        np.multiply(rx, P, out=c3)
+        minus(c3, ryh, out=c3)
+        c3 *= inv3
+        np.multiply(ry, P, out=s3)
+        plus(s3, rxh, out=s3)
+        s3 *= inv3
+        np.multiply(rx, Q, out=c4)
+        plus(c4, ryh, out=c4)
+        c4 *= inv4
+        np.multiply(ry, Q, out=s4)
+        minus(s4, rxh, out=s4)
+        s4 *= inv4
+        # status and round-off (see classify)
+        if gmin > 0.0:
+            np.divide(gain, gap, out=roundoff)
+            ok = roundoff.max() <= MAX_ROUNDOFF
+            if ok:
+                st.fill(OK)
+            else:
+                np.copyto(st, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR))
+        else:
+            ok = False
+            st[...], roundoff[...] = classify(gap, span)
+        th3, th4 = res["theta3"][sl], res["theta4"][sl]
+        np.arctan2(s3, c3, out=th3)
+        np.arctan2(s4, c4, out=th4)
+        if theta1:
+            th3 += theta1
+            th4 += theta1
+        if order < 1:
+            continue
+        # derivatives (see solve())
+        if varying:
+            coef = _coefficients(a, *(x[sl] if np.ndim(x) else x for x in motion))
+        mk, A2, B2, R2, I2 = coef
+        bS = np.multiply(condition, mb, out=P)
+        cS = np.multiply(condition, mc, out=Q)
+        if not ok:
+            bad = st != OK
+            bS[bad] = np.nan
+            cS[bad] = np.nan
+        c23, s23, c24, s24 = rx, ry, ss, inv3
+        np.multiply(cos2, c3, out=c23)
+        np.multiply(sin2, s3, out=t)
+        c23 += t
+        np.multiply(sin2, c3, out=s23)
+        np.multiply(cos2, s3, out=t)
+        s23 -= t
+        np.multiply(cos2, c4, out=c24)
+        np.multiply(sin2, s4, out=t)
+        c24 += t
+        np.multiply(sin2, c4, out=s24)
+        np.multiply(cos2, s4, out=t)
+        s24 -= t
+        w3, w4 = res["omega3"][sl], res["omega4"][sl]
+        np.multiply(s24, mk, out=w3)
+        w3 /= bS
+        np.multiply(s23, mk, out=w4)
+        w4 /= cS
+        if order < 2:
+            continue
+        c34, p3, p4, n3, n4 = inv4, f2, f3, f4, gap
+        np.multiply(c3, c4, out=c34)
+        np.multiply(s3, s4, out=t)
+        c34 += t
+        np.multiply(w3, w3, out=p3)
+        np.multiply(w4, w4, out=p4)
+        np.multiply(p3, b, out=n3)
+        np.multiply(p4, c, out=n4)
+        a3, a4 = res["alpha3"][sl], res["alpha4"][sl]
+        np.multiply(c24, A2, out=a3)
+        np.multiply(s24, B2, out=t)
+        a3 += t
+        np.multiply(n3, c34, out=t)
+        a3 -= t
+        a3 += n4
+        a3 /= bS
+        np.multiply(c23, A2, out=a4)
+        np.multiply(s23, B2, out=t)
+        a4 += t
+        a4 -= n3
+        np.multiply(n4, c34, out=t)
+        a4 += t
+        a4 /= cS
+        if order < 3:
+            continue
+        R3, R4 = n3, n4
+        np.multiply(w3, a3, out=R3)
+        R3 *= m3b
+        np.multiply(w4, a4, out=R4)
+        R4 *= m3c
+        j3, j4 = res["jerk3"][sl], res["jerk4"][sl]
+        np.multiply(c24, R2, out=j3)
+        np.multiply(s24, I2, out=t)
+        j3 -= t
+        np.multiply(R3, c34, out=t)
+        j3 += t
+        j3 -= R4
+        j3 /= bS
+        np.multiply(p3, w3, out=t)
+        j3 += t
+        np.multiply(c23, R2, out=j4)
+        np.multiply(s23, I2, out=t)
+        j4 -= t
+        j4 += R3
+        np.multiply(R4, c34, out=t)
+        j4 -= t
+        j4 /= cS
+        np.multiply(p4, w4, out=t)
+        j4 += t
+    res = {k: v.reshape(shape) for k, v in res.items()}
+    out = Motion(theta2=theta2, theta3=res["theta3"], theta4=res["theta4"],
+                 status=status.reshape(shape), condition=res["condition"],
+                 roundoff=res["roundoff"], circuit=circuit)
+    out._unit = {"2": (res["cos2"], res["sin2"]), "3": (res["c3"], res["s3"]),
+                 "4": (res["c4"], res["s4"])}
+    if order >= 1:
+        out.omega2, out.omega3, out.omega4 = omega2, res["omega3"], res["omega4"]
+    if order >= 2:
+        out.alpha2, out.alpha3, out.alpha4 = alpha2, res["alpha3"], res["alpha4"]
+    if order >= 3:
+        out.jerk2, out.jerk3, out.jerk4 = jerk2, res["jerk3"], res["jerk4"]
     return out
