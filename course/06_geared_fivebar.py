@@ -62,21 +62,29 @@ use_style()
 # $\lambda = -2$: gear 5 has half the teeth of gear 2); an idler gear makes $\lambda > 0$.
 # Differentiating the loop twice, with $\omega_5$ and $\alpha_5$ known from eq. 7.28c:
 #
-# $$ \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
-#    + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right)
-#    - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right)
-#    - \left(d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5}\right) = 0 \tag{7.28a} $$
+# $$ \begin{split}
+#    & \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
+#      + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) \\
+#    & \quad - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right)
+#      - \left(d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5}\right) = 0
+#    \end{split} \tag{7.28a} $$
 #
 # Only $\alpha_3$ and $\alpha_4$ are unknown: the geared fivebar is a fourbar whose "ground pivot"
 # C moves along a known path. The real and imaginary parts solve to
 #
-# $$ \alpha_3 = \frac{-a\alpha_2\sin(\theta_2-\theta_4) - a\omega_2^2\cos(\theta_2-\theta_4)
-#    - b\omega_3^2\cos(\theta_3-\theta_4) + d\omega_5^2\cos(\theta_5-\theta_4)
-#    + d\alpha_5\sin(\theta_5-\theta_4) + c\omega_4^2}{b\sin(\theta_3-\theta_4)} \tag{7.29a} $$
+# $$ \begin{split}
+#    \alpha_3 = \frac{1}{b\sin(\theta_3-\theta_4)}
+#    & \Big[ -a\alpha_2\sin(\theta_2-\theta_4) - a\omega_2^2\cos(\theta_2-\theta_4) \\
+#    & \quad - b\omega_3^2\cos(\theta_3-\theta_4) + d\omega_5^2\cos(\theta_5-\theta_4) \\
+#    & \quad + d\alpha_5\sin(\theta_5-\theta_4) + c\omega_4^2 \Big]
+#    \end{split} \tag{7.29a} $$
 #
-# $$ \alpha_4 = \frac{a\alpha_2\sin(\theta_2-\theta_3) + a\omega_2^2\cos(\theta_2-\theta_3)
-#    - c\omega_4^2\cos(\theta_3-\theta_4) - d\omega_5^2\cos(\theta_3-\theta_5)
-#    + d\alpha_5\sin(\theta_3-\theta_5) + b\omega_3^2}{c\sin(\theta_4-\theta_3)} \tag{7.29b} $$
+# $$ \begin{split}
+#    \alpha_4 = \frac{1}{c\sin(\theta_4-\theta_3)}
+#    & \Big[ a\alpha_2\sin(\theta_2-\theta_3) + a\omega_2^2\cos(\theta_2-\theta_3) \\
+#    & \quad - c\omega_4^2\cos(\theta_3-\theta_4) - d\omega_5^2\cos(\theta_3-\theta_5) \\
+#    & \quad + d\alpha_5\sin(\theta_3-\theta_5) + b\omega_3^2 \Big]
+#    \end{split} \tag{7.29b} $$
 #
 # and the pins accelerate as
 #

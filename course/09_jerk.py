@@ -50,24 +50,27 @@ use_style()
 # $L(-\omega^3 j - 3\omega\alpha + \varphi j)e^{j\theta}$. Doing that to every term of the fourbar's
 # acceleration loop (eq. 7.7) and collecting:
 #
-# $$ -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2}
-#    - b\omega_3^3 je^{j\theta_3} - 3b\omega_3\alpha_3 e^{j\theta_3} + b\varphi_3 je^{j\theta_3}
-#    + c\omega_4^3 je^{j\theta_4} + 3c\omega_4\alpha_4 e^{j\theta_4} - c\varphi_4 je^{j\theta_4} = 0
-#    \tag{7.34b} $$
+# $$ \begin{split}
+#    & -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2} \\
+#    & - b\omega_3^3 je^{j\theta_3} - 3b\omega_3\alpha_3 e^{j\theta_3} + b\varphi_3 je^{j\theta_3} \\
+#    & + c\omega_4^3 je^{j\theta_4} + 3c\omega_4\alpha_4 e^{j\theta_4} - c\varphi_4 je^{j\theta_4} = 0
+#    \end{split} \tag{7.34b} $$
 #
 # Everything is known from the position, velocity and acceleration analyses except $\varphi_3$ and
 # $\varphi_4$ (the input's jerk $\varphi_2$ is given; zero at steady speed or constant
 # $\alpha_2$). The real and imaginary parts are two linear equations:
 #
-# $$ a\omega_2^3\sin\theta_2 - 3a\omega_2\alpha_2\cos\theta_2 - a\varphi_2\sin\theta_2
-#    + b\omega_3^3\sin\theta_3 - 3b\omega_3\alpha_3\cos\theta_3 - b\varphi_3\sin\theta_3
-#    - c\omega_4^3\sin\theta_4 + 3c\omega_4\alpha_4\cos\theta_4 + c\varphi_4\sin\theta_4 = 0
-#    \tag{7.35a} $$
+# $$ \begin{split}
+#    & a\omega_2^3\sin\theta_2 - 3a\omega_2\alpha_2\cos\theta_2 - a\varphi_2\sin\theta_2 \\
+#    & + b\omega_3^3\sin\theta_3 - 3b\omega_3\alpha_3\cos\theta_3 - b\varphi_3\sin\theta_3 \\
+#    & - c\omega_4^3\sin\theta_4 + 3c\omega_4\alpha_4\cos\theta_4 + c\varphi_4\sin\theta_4 = 0
+#    \end{split} \tag{7.35a} $$
 #
-# $$ -a\omega_2^3\cos\theta_2 - 3a\omega_2\alpha_2\sin\theta_2 + a\varphi_2\cos\theta_2
-#    - b\omega_3^3\cos\theta_3 - 3b\omega_3\alpha_3\sin\theta_3 + b\varphi_3\cos\theta_3
-#    + c\omega_4^3\cos\theta_4 + 3c\omega_4\alpha_4\sin\theta_4 - c\varphi_4\cos\theta_4 = 0
-#    \tag{7.35b} $$
+# $$ \begin{split}
+#    & -a\omega_2^3\cos\theta_2 - 3a\omega_2\alpha_2\sin\theta_2 + a\varphi_2\cos\theta_2 \\
+#    & - b\omega_3^3\cos\theta_3 - 3b\omega_3\alpha_3\sin\theta_3 + b\varphi_3\cos\theta_3 \\
+#    & + c\omega_4^3\cos\theta_4 + 3c\omega_4\alpha_4\sin\theta_4 - c\varphi_4\cos\theta_4 = 0
+#    \end{split} \tag{7.35b} $$
 #
 # The chapter names the known terms $A \ldots K$ in eq. 7.35a and $L \ldots U$ in eq. 7.35b
 # (eqs. 7.36a and 7.37a), e.g. $A = a\omega_2^3\sin\theta_2$, $H = c\sin\theta_4$,
@@ -75,15 +78,20 @@ use_style()
 #
 # $$ \varphi_3 = \frac{A - B - C + D - E - F + G + H\varphi_4}{K} \tag{7.36b} $$
 #
-# $$ \varphi_4 = \frac{KN - KL - KM - KP - KQ + AR - BR - CR + DR - ER - FR + GR + KS + KT}{KU - HR}
+# $$ \varphi_4 = \frac{K(N - L - M - P - Q + S + T) + R(A - B - C + D - E - F + G)}{KU - HR}
 #    \tag{7.39} $$
 #
-# The denominator $KU - HR = bc\sin(\theta_4 - \theta_3)$ vanishes at the toggle, as the
+# (The chapter writes the numerator out as fourteen products, $KN - KL - \ldots + KS + KT$; above
+# they are gathered by $K$ and $R$, and the cell below evaluates the chapter's form.) The
+# denominator $KU - HR = bc\sin(\theta_4 - \theta_3)$ vanishes at the toggle, as the
 # acceleration's did. The pins' linear jerks follow from the same rotating-vector derivative:
 #
-# $$ \mathbf{J}_A = -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2},
-#    \qquad \mathbf{J}_B = -c\omega_4^3 je^{j\theta_4} - 3c\omega_4\alpha_4 e^{j\theta_4}
-#    + c\varphi_4 je^{j\theta_4} \tag{7.40} $$
+# $$ \begin{split}
+#    \mathbf{J}_A &= -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2}
+#      + a\varphi_2 je^{j\theta_2} \\
+#    \mathbf{J}_B &= -c\omega_4^3 je^{j\theta_4} - 3c\omega_4\alpha_4 e^{j\theta_4}
+#      + c\varphi_4 je^{j\theta_4}
+#    \end{split} \tag{7.40} $$
 #
 # (the scanned chapter ends the line of $\mathbf{J}_B$ with a stray "= 0"), and any point from a
 # point of the same link, as for acceleration:

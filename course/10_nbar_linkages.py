@@ -410,8 +410,9 @@ can = np.abs(1.0 - C_y) <= 4.0                                   # the geometric
 limits = fdeg[np.flatnonzero(np.diff(can.astype(int)))]
 print(f"geometry: the rod reaches the slide except between {limits[0]:.1f} and {limits[1]:.1f} deg")
 print(f"sweep:    valid at {ok.sum()} of {ok.size} positions, status names {sorted(set(sw.status))}")
-print(f"          positions the sweep does not return although geometry allows them: "
-      f"{np.sum(can & ~ok)}")
+missed = int(np.sum(can & ~ok))
+print(f"          positions the sweep does not return although geometry allows them: {missed}"
+      + (" (it picks the linkage up again where geometry allows)" if missed == 0 else ""))
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8), sharex=True)
 ax1.plot(fdeg, sw.condition, color=COLORS["tangential"])
 top = 1.1 * np.nanmax(sw.condition)
@@ -436,11 +437,13 @@ plt.show()
 
 # %% [markdown]
 # Where the linkage runs *into* the limit (the first dashed line) the sweep stops exactly there.
-# Coming *out* of the gap is harder: the sweep has no previous solution to continue from and must
-# find the linkage again from its last known state, so it can pick it up later than geometry
-# allows (compare the grey band with the second dashed line; the cell above counts the positions
-# it missed). A `not_assemblable` from a sweep means that Newton-Raphson found no closure from its
-# guesses, not a proof that none exists.
+# Coming *out* of the gap is harder: the sweep has no previous solution to continue from, so it
+# must search for the linkage again from its last known state, on either side of the gap. The
+# cell above counts the positions that geometry allows but the sweep did not return (compare the
+# end of the grey band with the second dashed line): a search can come up empty where a linkage
+# exists, so the count is worth printing, and the cell says so when it is zero. In the same way,
+# a `not_assemblable` from a sweep means that Newton-Raphson found no closure from its guesses,
+# not a proof that none exists; the geometric check is what proves it.
 #
 # Asked about a single position, the solver raises an error that says what is wrong instead of
 # returning numbers. Inside the gap Newton-Raphson cannot close the loops; just inside an edge it
@@ -552,5 +555,8 @@ explore(draw, theta2=(0, 360, 5, 57, "deg"))
 #   the solver reports `Singular` or `NotAssemblable` (or `NoConvergence`) rather than guessing.
 # - **Iterating for velocities.** Only positions need Newton-Raphson.
 #
-# This is the last notebook on the chapter's analysis. Notebook 11 (speed and accuracy) will
-# compare the methods' cost and error once the benchmark lands.
+# This is the last notebook on the chapter's analysis. The next one compares the methods the
+# course has used, closed forms, Newton-Raphson, finite differences and the graphical
+# construction, for speed and accuracy.
+#
+# [Next: 11. Speed and accuracy](11_speed_accuracy.ipynb)
