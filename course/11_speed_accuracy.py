@@ -444,6 +444,8 @@ if HAVE_MPMATH:
         fd_error = {h: accuracy.worst(accuracy.relative_errors(fd, truth, rocker_scale))
                     for h, fd in fd_near.items()}
 refused = kern.status != 0
+if not HAVE_MPMATH:
+    print("mpmath is not installed: no measured errors below, only the solver's own estimate")
 print(f"toggle at theta2 = {math.degrees(toggle):.6f} deg; refused at {refused.sum()} of "
       f"{refused.size} distances, the farthest {delta[refused].max():.1e} rad")
 for i in (8, 10, 12, 16, 24):
