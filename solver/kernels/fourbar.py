@@ -103,10 +103,10 @@ def position(a, b, c, d, cos2, sin2, sigma):
 
 
 def _coefficients(a, omega2, alpha2, jerk2):
-    """The crank's terms of K_1..K_3 (floats, or arrays for array inputs):
-    -a omega2, -a omega2^2, -a alpha2, -3 a omega2 alpha2, a (jerk2 - omega2^3)."""
+    """The crank's terms of K_1..K_3 (floats, or arrays for array inputs): a omega2,
+    -a omega2, -a omega2^2, a alpha2, -3 a omega2 alpha2 and a (jerk2 - omega2^3)."""
     mk = -a * omega2
-    return (mk, mk * omega2, -a * alpha2, -3.0 * a * omega2 * alpha2,
+    return (a * omega2, mk, mk * omega2, a * alpha2, -3.0 * a * omega2 * alpha2,
             a * (jerk2 - omega2 * omega2 * omega2))
 
 
@@ -171,31 +171,35 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     cond = masked(status != OK, condition)
     bS = cond * (-sigma * b)     # b sin(theta3 - theta4)
     cS = cond * (-sigma * c)
-    c23 = cos2 * c3 + sin2 * s3  # cos and sin of theta2 - theta3, theta2 - theta4
-    s23 = sin2 * c3 - cos2 * s3
-    c24 = cos2 * c4 + sin2 * s4
-    s24 = sin2 * c4 - cos2 * s4
-    mk, A2, B2, R2, I2 = _coefficients(a, omega2, alpha2, jerk2)
-    omega3 = mk * s24 / bS
-    omega4 = mk * s23 / cS
+    k, mk, n, t, R2, I2 = _coefficients(a, omega2, alpha2, jerk2)
+    # order 1: K = j a omega2 e2
+    kx = mk * sin2
+    ky = k * cos2
+    omega3 = (kx * c4 + ky * s4) / bS
+    omega4 = (kx * c3 + ky * s3) / cS
     out.omega2, out.omega3, out.omega4 = omega2, omega3, omega4
     if order < 2:
         return out
-    c34 = c3 * c4 + s3 * s4      # cos(theta3 - theta4)
+    # order 2: K = a (j alpha2 - omega2^2) e2 - b omega3^2 e3 + c omega4^2 e4
     p3 = omega3 * omega3
     p4 = omega4 * omega4
     n3 = p3 * b
     n4 = p4 * c
-    alpha3 = (A2 * c24 + B2 * s24 - n3 * c34 + n4) / bS
-    alpha4 = (A2 * c23 + B2 * s23 - n3 + n4 * c34) / cS
+    kx = n * cos2 - t * sin2 - n3 * c3 + n4 * c4
+    ky = n * sin2 + t * cos2 - n3 * s3 + n4 * s4
+    alpha3 = (kx * c4 + ky * s4) / bS
+    alpha4 = (kx * c3 + ky * s3) / cS
     out.alpha2, out.alpha3, out.alpha4 = alpha2, alpha3, alpha4
     if order < 3:
         return out
+    # order 3: K = (R2 + j I2) e2 + R3 e3 - R4 e4, and the omega^3 terms apart
     R3 = omega3 * alpha3 * (-3.0 * b)
     R4 = omega4 * alpha4 * (-3.0 * c)
+    kx = R2 * cos2 - I2 * sin2 + R3 * c3 - R4 * c4
+    ky = R2 * sin2 + I2 * cos2 + R3 * s3 - R4 * s4
     out.jerk2 = jerk2
-    out.jerk3 = (R2 * c24 - I2 * s24 + R3 * c34 - R4) / bS + p3 * omega3
-    out.jerk4 = (R2 * c23 - I2 * s23 + R3 - R4 * c34) / cS + p4 * omega4
+    out.jerk3 = (kx * c4 + ky * s4) / bS + p3 * omega3
+    out.jerk4 = (kx * c3 + ky * s3) / cS + p4 * omega4
     return out
 
 
@@ -230,7 +234,7 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
     gain = ROUNDOFF_GAIN * EPS * span     # as in classify
     bmc, bpc = b - c, b + c
     abs_bmc = abs(bmc)
-    k = b * b - c * c
+    bbcc = b * b - c * c
     h3, h4 = 0.5 / b, -0.5 / c
     two_bc = 2.0 * b * c
     mb, mc = -sigma * b, -sigma * c
@@ -276,8 +280,8 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
         np.divide(h4, ss, out=inv4)
         rxh = np.multiply(rx, area4, out=f2)
         ryh = np.multiply(ry, area4, out=f3)
-        np.add(ss, k, out=P)
-        np.subtract(ss, k, out=Q)
+        np.add(ss, bbcc, out=P)
+        np.subtract(ss, bbcc, out=Q)
         np.multiply(rx, P, out=c3)
         minus(c3, ryh, out=c3)
         c3 *= inv3
@@ -312,56 +316,36 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
         # derivatives (see solve())
         if varying:
             coef = _coefficients(a, *(x[sl] if np.ndim(x) else x for x in motion))
-        mk, A2, B2, R2, I2 = coef
+        ka, mk, nn, tt, R2, I2 = coef
         bS = np.multiply(condition, mb, out=P)
         cS = np.multiply(condition, mc, out=Q)
         if not ok:
             bad = st != OK
             bS[bad] = np.nan
             cS[bad] = np.nan
-        c23, s23, c24, s24 = rx, ry, ss, inv3
-        np.multiply(cos2, c3, out=c23)
-        np.multiply(sin2, s3, out=t)
-        c23 += t
-        np.multiply(sin2, c3, out=s23)
-        np.multiply(cos2, s3, out=t)
-        s23 -= t
-        np.multiply(cos2, c4, out=c24)
-        np.multiply(sin2, s4, out=t)
-        c24 += t
-        np.multiply(sin2, c4, out=s24)
-        np.multiply(cos2, s4, out=t)
-        s24 -= t
+        kx, ky = rx, ry
+        np.multiply(sin2, mk, out=kx)
+        np.multiply(cos2, ka, out=ky)
         w3, w4 = res["omega3"][sl], res["omega4"][sl]
-        np.multiply(s24, mk, out=w3)
-        w3 /= bS
-        np.multiply(s23, mk, out=w4)
-        w4 /= cS
+        _solve2(kx, ky, c3, s3, c4, s4, bS, cS, w3, w4, t)
         if order < 2:
             continue
-        c34, p3, p4, n3, n4 = inv4, f2, f3, f4, gap
-        np.multiply(c3, c4, out=c34)
-        np.multiply(s3, s4, out=t)
-        c34 += t
+        p3, p4, n3, n4 = ss, inv3, inv4, f2
         np.multiply(w3, w3, out=p3)
         np.multiply(w4, w4, out=p4)
         np.multiply(p3, b, out=n3)
         np.multiply(p4, c, out=n4)
+        _rotating(nn, tt, cos2, sin2, kx, ky, t)
+        np.multiply(n3, c3, out=t)
+        kx -= t
+        np.multiply(n4, c4, out=t)
+        kx += t
+        np.multiply(n3, s3, out=t)
+        ky -= t
+        np.multiply(n4, s4, out=t)
+        ky += t
         a3, a4 = res["alpha3"][sl], res["alpha4"][sl]
-        np.multiply(c24, A2, out=a3)
-        np.multiply(s24, B2, out=t)
-        a3 += t
-        np.multiply(n3, c34, out=t)
-        a3 -= t
-        a3 += n4
-        a3 /= bS
-        np.multiply(c23, A2, out=a4)
-        np.multiply(s23, B2, out=t)
-        a4 += t
-        a4 -= n3
-        np.multiply(n4, c34, out=t)
-        a4 += t
-        a4 /= cS
+        _solve2(kx, ky, c3, s3, c4, s4, bS, cS, a3, a4, t)
         if order < 3:
             continue
         R3, R4 = n3, n4
@@ -369,23 +353,19 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
         R3 *= m3b
         np.multiply(w4, a4, out=R4)
         R4 *= m3c
+        _rotating(R2, I2, cos2, sin2, kx, ky, t)
+        np.multiply(R3, c3, out=t)
+        kx += t
+        np.multiply(R4, c4, out=t)
+        kx -= t
+        np.multiply(R3, s3, out=t)
+        ky += t
+        np.multiply(R4, s4, out=t)
+        ky -= t
         j3, j4 = res["jerk3"][sl], res["jerk4"][sl]
-        np.multiply(c24, R2, out=j3)
-        np.multiply(s24, I2, out=t)
-        j3 -= t
-        np.multiply(R3, c34, out=t)
-        j3 += t
-        j3 -= R4
-        j3 /= bS
+        _solve2(kx, ky, c3, s3, c4, s4, bS, cS, j3, j4, t)
         np.multiply(p3, w3, out=t)
         j3 += t
-        np.multiply(c23, R2, out=j4)
-        np.multiply(s23, I2, out=t)
-        j4 -= t
-        j4 += R3
-        np.multiply(R4, c34, out=t)
-        j4 -= t
-        j4 /= cS
         np.multiply(p4, w4, out=t)
         j4 += t
     res = {k: v.reshape(shape) for k, v in res.items()}
@@ -401,3 +381,26 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
     if order >= 3:
         out.jerk2, out.jerk3, out.jerk4 = jerk2, res["jerk3"], res["jerk4"]
     return out
+
+
+def _rotating(re, im, cos2, sin2, kx, ky, t):
+    """kx, ky = the components of (re + j im) e^{j theta2}, in place:
+    re cos2 - im sin2 and re sin2 + im cos2."""
+    np.multiply(cos2, re, out=kx)
+    np.multiply(sin2, im, out=t)
+    kx -= t
+    np.multiply(sin2, re, out=ky)
+    np.multiply(cos2, im, out=t)
+    ky += t
+
+
+def _solve2(kx, ky, c3, s3, c4, s4, bS, cS, x3, x4, t):
+    """x3 = (K . e4) / (b S), x4 = (K . e3) / (c S), in place."""
+    np.multiply(kx, c4, out=x3)
+    np.multiply(ky, s4, out=t)
+    x3 += t
+    x3 /= bS
+    np.multiply(kx, c3, out=x4)
+    np.multiply(ky, s3, out=t)
+    x4 += t
+    x4 /= cS
