@@ -16,6 +16,9 @@ iteration.
 
 import numpy as np
 
+from .newton import _solve_stack
+from .products import rows_times
+
 
 def vector_derivative(n, L, dL, th_d, e):
     """n-th time derivative (n = 1..3) of z = L e^{j theta}.
@@ -72,9 +75,9 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
     for n in range(1, order + 1):
         # the input's share of theta_v^(n); unknowns' n-th derivatives still zero
         dth[n - 1][:, s.vin] = s.ratio[s.vin] * inputs[n - 1][:, None]
-        K = vector_derivative(n, L, dL, dth, e) @ signs_T       # (N, n_loops) complex
+        K = rows_times(vector_derivative(n, L, dL, dth, e), signs_T)  # (N, n_loops) complex
         rhs = -K.view(np.float64)                               # interleaved re, im
-        x = np.linalg.solve(J, rhs[..., None])[..., 0]
+        x = _solve_stack(J, rhs[..., None])[0][..., 0]          # NaN where J is singular
         q_d.append(x)
         dL[n - 1][:, s.vl] = x[:, s.il]
         dth[n - 1][:, s.va] = s.ratio[s.va] * x[:, s.ia]
@@ -86,4 +89,4 @@ def point_motion(system, d, order=3):
     signs = system.model.point_signs
     z = [d["L"] * d["e"]] + [vector_derivative(n, d["L"], d["dL"], d["dth"], d["e"])
                              for n in range(1, order + 1)]
-    return [z_n @ signs.T for z_n in z]
+    return [rows_times(z_n, signs.T.astype(complex)) for z_n in z]

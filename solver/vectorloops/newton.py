@@ -13,8 +13,16 @@ and the same matrix serves the velocity, acceleration and jerk solves
 Everything here works on a stack of M positions at once (M = 1 for one
 position): F, the Jacobian and dF/dtheta2 of all M come from one real
 matrix product ``[L cos, cos, L sin, sin] @ B`` with a matrix B built once
-per linkage, and
-the M small Newton systems are solved by one stacked ``np.linalg.solve``.
+per linkage (in BLAS calls small enough never to start threads:
+:mod:`.products`), and the M small Newton systems are solved by one stacked
+``np.linalg.solve``.
+
+Each solved position also gets its *orientation*: det J over the product of
+J's column norms, in [-1, 1]. Its sign tells the assemblies apart (for a
+fourbar it is the sign of sin(theta3 - theta4): open and crossed have
+opposite signs), it can change along a continuous path only where J is
+singular, and its size says how far the position is from a singular one
+(:mod:`.sweep` follows one sign).
 """
 
 import math
@@ -22,15 +30,21 @@ import math
 import numpy as np
 
 from ..errors import NoConvergence
+from .products import rows_times
+from .straightline import compile_kernel
 
 MAX_ITERATIONS = 50
 MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed assembly
 MAX_LENGTH_STEP = 0.5     # [length scale] per iteration
-DEFAULT_TOL = 1e-13       # loop residual / length scale at which Newton stops
+DEFAULT_TOL = 1e-13       # loop residual / length scale that Newton gets below
 STEP_TOL_FACTOR = 1e-8 / math.sqrt(DEFAULT_TOL)   # last step <= this * sqrt(tol)
 
 # reasons a position did not converge
 CONVERGED, NOT_CLOSED, SINGULAR_STEP = 0, 1, 2
+#: an orientation (det J over the product of its column norms) smaller than
+#: this in size has no trustworthy sign: round-off in det J is about
+#: n eps times that product
+ORIENTATION_FLOOR = 1e-10
 
 
 def check_tol(tol):
@@ -47,9 +61,10 @@ def check_tol(tol):
 
 
 def step_tolerance(tol):
-    """Largest last Newton step [scaled] accepted at tolerance ``tol``: 1e-8 at
-    the default 1e-13, growing like sqrt(tol) (Newton's error after a step of
-    size s is of order s**2)."""
+    """Largest Newton step [scaled] that ends the iteration at tolerance
+    ``tol``: 1e-8 at the default 1e-13, growing like sqrt(tol). Newton's error
+    and loop residual after a step of size s are of order s**2 (times the
+    length scale), 1e-16 at the default, below ``tol`` at any tolerance."""
     return STEP_TOL_FACTOR * math.sqrt(tol)
 
 
@@ -111,7 +126,8 @@ class LoopSystem:
     def _tables(self):
         """Plain-Python tables for :meth:`newton1` (one position, no numpy): per
         vector its base index, ratio, offset, length (or unknown index) and the
-        rows and columns it adds to (F, J, dF/dtheta2)."""
+        rows and columns it adds to (F, J, dF/dtheta2); and from them the
+        straight-line kernel of one Newton step (:mod:`.straightline`)."""
         m = self.model
         rows = []
         for v in range(self.n_vectors):
@@ -131,6 +147,7 @@ class LoopSystem:
         self._py_vectors = tuple(rows)
         self._py_scale = [float(x) for x in self.scale]
         self._py_limit = [float(x) for x in self.step_limit]
+        self._kernel = compile_kernel(self._py_vectors, self.n_unknowns)
 
     # --- geometry of a stack of positions --------------------------------
     def vectors(self, q, theta2):
@@ -159,7 +176,8 @@ class LoopSystem:
         """As :meth:`evaluate`, from lengths and the cosines, sines of the angles."""
         M = c.shape[0]
         nu, nl = self.n_unknowns, self.n_loops
-        R = (np.concatenate([L * c, c, L * s, s], axis=1) @ self.B).reshape(M, nu + 2, 2 * nl)
+        Y = np.concatenate([L * c, c, L * s, s], axis=1)
+        R = rows_times(Y, self.B).reshape(M, nu + 2, 2 * nl)
         return R[:, 0], R[:, 1:nu + 1].transpose(0, 2, 1), R[:, nu + 1]
 
     def jacobian_stack(self, L, e):
@@ -198,18 +216,23 @@ class LoopSystem:
         theta2 : array (M,)
             Input angles [rad].
         tol : float
-            Stop when the loop residual is at most ``tol`` times the length
-            scale and the last full (undamped) step was at most
-            :func:`step_tolerance` (``tol``). At least one step is taken.
+            A position has converged when its Newton step moves no unknown by
+            more than :func:`step_tolerance` (``tol``) (radians, or lengths
+            over the length scale); that last step is taken, after which the
+            loop residual is of order the step squared, below ``tol`` times
+            the length scale. At least one step is taken.
 
         Returns
         -------
         q : (M, nu) solutions (the last iterate where not converged)
         iterations : (M,) Newton steps taken
-        residual : (M,) loop residual norm reached [m]
+        residual : (M,) loop residual norm at the last evaluation [m] (for a
+            converged position, before its last step)
         reason : (M,) int8, CONVERGED, NOT_CLOSED or SINGULAR_STEP
         slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged,
             and everywhere when ``slopes`` is False)
+        orient : (M,) the orientation at the solution (:func:`orientation`;
+            NaN where not converged)
         """
         q = np.array(q0, dtype=float, copy=True)
         theta2 = np.asarray(theta2, dtype=float)
@@ -218,122 +241,102 @@ class LoopSystem:
         residual = np.full(M, np.inf)
         reason = np.full(M, NOT_CLOSED, dtype=np.int8)
         slope = np.full_like(q, np.nan)
-        tol_res = tol * self.model.length_scale
+        orient = np.full(M, np.nan)
         step_tol = step_tolerance(tol)
-        size = np.full(M, np.inf)
         active = np.arange(M)
         qa, ta = q, theta2
         for it in range(max_iterations + 1):
             F, J, Ft = self.evaluate(qa, ta)
-            res = np.sqrt(np.einsum("ij,ij->i", F, F))
-            residual[active] = res
-            done = (size < step_tol) & (res <= tol_res)
-            if slopes:
-                sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1))
-            elif done.any():  # the converged positions need no more solves
-                if done.all():
-                    q[active] = qa
-                    reason[active] = CONVERGED
-                    break
-                sol = np.full(F.shape[:1] + (self.n_unknowns, 1), np.nan)
-                sol[~done], bad_rest = _solve_stack(J[~done], F[~done, :, None])
-                bad = np.zeros_like(done)
-                bad[~done] = bad_rest
-            else:
-                sol, bad = _solve_stack(J, F[:, :, None])
+            residual[active] = np.sqrt(np.einsum("ij,ij->i", F, F))
+            sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
+            dq = -sol[:, :, 0]
+            size = np.max(np.abs(dq) / self.scale, axis=1)
+            done = (size <= step_tol) & ~bad
             if done.any():
                 idx = active[done]
-                q[idx] = qa[done]
+                q[idx] = qa[done] + dq[done]
+                iterations[idx] += 1
                 reason[idx] = CONVERGED
+                orient[idx] = orientation(J[done])
                 if slopes:
                     slope[idx] = -sol[done, :, 1]
-                keep = ~done & ~bad
-            else:
-                keep = ~bad
             if bad.any():
-                hit = bad & ~done
-                q[active[hit]] = qa[hit]
-                reason[active[hit]] = SINGULAR_STEP
+                q[active[bad]] = qa[bad]
+                reason[active[bad]] = SINGULAR_STEP
+            keep = ~done & ~bad
             if it == max_iterations or not keep.any():
                 q[active[keep]] = qa[keep]
                 break
             if not keep.all():
-                active, qa, ta, sol = active[keep], qa[keep], ta[keep], sol[keep]
-            dq = -sol[:, :, 0]
+                active, qa, ta, dq = active[keep], qa[keep], ta[keep], dq[keep]
             ratio = np.max(np.abs(dq) / self.step_limit, axis=1)
-            size = np.max(np.abs(dq) / self.scale, axis=1)
             damped = ratio > 1.0
             if damped.any():  # never leap to another assembly in one step
                 dq[damped] /= ratio[damped, None]
-                size[damped] = np.inf
             qa = qa + dq
             iterations[active] += 1
-        return q, iterations, residual, reason, slope
+        return q, iterations, residual, reason, slope, orient
 
-    def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS):
+    def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS,
+                least_squares=False):
         """Newton-Raphson at one position, in plain Python floats.
 
         The same iteration, stopping rule and damping as :meth:`newton`, for
         the sequential steps of a sweep, where numpy's per-call overhead on
         a 4 x 4 system would cost more than the arithmetic.
 
-        Returns ``(q, iterations, residual, reason, slope)`` with q and slope
-        as lists (slope None where not converged).
+        An iterate where the Jacobian is exactly singular stops the iteration
+        (SINGULAR_STEP), unless ``least_squares`` is set: then that step is
+        the least-squares step of least norm (it moves only where the
+        Jacobian can), which is how a sweep leaves a singular position.
+
+        Returns ``(q, iterations, residual, reason, slope, orient)`` with q
+        and slope as lists (slope None where not converged, or where the
+        Jacobian is exactly singular) and orient the orientation at the last
+        evaluation (det J over the product of J's column norms; NaN where not
+        converged).
         """
         q = [float(x) for x in q0]
         if not math.isfinite(theta2):
-            return q, 0, math.nan, NOT_CLOSED, None
-        nu = len(q)
-        f, d = nu, nu + 1                       # columns of -F and -dF/dtheta2
-        n = 2 * self.n_loops
-        vectors = self._py_vectors
+            return q, 0, math.nan, NOT_CLOSED, None, math.nan
+        kernel = self._kernel
         scale, limit = self._py_scale, self._py_limit
-        tol_res = tol * self.model.length_scale
         step_tol = step_tolerance(tol)
-        cos, sin, hypot = math.cos, math.sin, math.hypot
-        size = math.inf
         steps = 0
         while True:
-            X = q + [theta2, 0.0]
-            A = [[0.0] * (nu + 2) for _ in range(n)]   # [J | -F | -dF/dtheta2]
-            for b, k, o, li, Lf, fterms, aterms, lterms, dterms in vectors:
-                th = k * X[b] + o
-                cv, sv = cos(th), sin(th)
-                L = q[li] if li >= 0 else Lf
-                lc, ls = L * cv, L * sv
-                for r, sg in fterms:
-                    A[r][f] -= sg * lc
-                    A[r + 1][f] -= sg * ls
-                for r, u, cf in aterms:
-                    A[r][u] -= cf * ls
-                    A[r + 1][u] += cf * lc
-                for r, u, sg in lterms:
-                    A[r][u] += sg * cv
-                    A[r + 1][u] += sg * sv
-                for r, cf in dterms:
-                    A[r][d] += cf * ls
-                    A[r + 1][d] -= cf * lc
-            res = hypot(*[row[f] for row in A])
-            x = _gauss(A, nu)
-            if size < step_tol and res <= tol_res:
-                return q, steps, res, CONVERGED, (None if x is None else [xk[1] for xk in x])
-            if x is None or res != res:
-                return q, steps, res, SINGULAR_STEP, None
-            if steps == max_iterations:
-                return q, steps, res, NOT_CLOSED, None
+            res, orient, dq, slope = kernel(q, theta2)
+            if res != res:
+                return q, steps, res, SINGULAR_STEP, None, math.nan
+            if dq is None and least_squares:
+                dq = self._least_squares_step(q, theta2)
+            if dq is None:
+                return q, steps, res, SINGULAR_STEP, None, math.nan
             ratio = size = 0.0
-            for xk, lim, sc in zip(x, limit, scale):
-                a = abs(xk[0])
+            for a, lim, sc in zip(dq, limit, scale):
+                a = abs(a)
                 if a > ratio * lim:
                     ratio = a / lim
                 if a > size * sc:
                     size = a / sc
+            if size <= step_tol:
+                return [x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED, slope, orient
+            if steps == max_iterations:
+                return q, steps, res, NOT_CLOSED, None, math.nan
             if ratio > 1.0:  # never leap to another assembly in one step
-                q = [qk + xk[0] / ratio for qk, xk in zip(q, x)]
-                size = math.inf
+                q = [x + y / ratio for x, y in zip(q, dq)]
             else:
-                q = [qk + xk[0] for qk, xk in zip(q, x)]
+                q = [x + y for x, y in zip(q, dq)]
             steps += 1
+
+    def _least_squares_step(self, q, theta2):
+        """The least-squares Newton step of least norm at a singular Jacobian,
+        in the unknowns scaled by :attr:`scale`, as a list (None if not
+        finite)."""
+        F, J, _ = self.evaluate(np.array([q], dtype=float), np.array([theta2]))
+        dx = np.linalg.lstsq(J[0] * self.scale, -F[0], rcond=1e-10)[0] * self.scale
+        if not np.all(np.isfinite(dx)):
+            return None
+        return [float(v) for v in dx]
 
     def solve_position(self, q0, theta2, tol=DEFAULT_TOL):
         """Newton-Raphson at one position from q0 to machine precision.
@@ -343,53 +346,13 @@ class LoopSystem:
         (with the residual it reached) when the loops do not close.
         """
         theta2 = float(theta2)
-        q, it, res, reason, slope = self.newton1(q0, theta2, tol)
+        q, it, res, reason, slope, _ = self.newton1(q0, theta2, tol)
         if reason != CONVERGED:
             raise no_convergence(theta2, res, it, reason)
         q = np.array(q)
         J = self.evaluate(q[None], np.array([theta2]))[1][0]
         slope = np.full(len(q), np.nan) if slope is None else np.array(slope)
         return q, it, res, J, slope
-
-
-def _gauss(A, nu):
-    """Solve the square system in the augmented rows A (n x (nu + 2): J, then two
-    right-hand sides) by Gaussian elimination with partial pivoting, in place.
-
-    Returns the solution rows [[x_rhs1, x_rhs2], ...] or None when singular.
-    """
-    n = len(A)
-    width = range(nu + 2)
-    for k in range(nu):
-        p, big = k, abs(A[k][k])
-        for r in range(k + 1, n):
-            v = abs(A[r][k])
-            if v > big:
-                p, big = r, v
-        if big == 0.0:
-            return None
-        if p != k:
-            A[k], A[p] = A[p], A[k]
-        rk = A[k]
-        inv = 1.0 / rk[k]
-        cols = width[k + 1:]
-        for r in range(k + 1, n):
-            row = A[r]
-            f = row[k] * inv
-            if f != 0.0:
-                for j in cols:
-                    row[j] -= f * rk[j]
-    x = [None] * nu
-    for k in range(nu - 1, -1, -1):
-        rk = A[k]
-        a, b = rk[nu], rk[nu + 1]
-        for j in range(k + 1, nu):
-            xj = x[j]
-            a -= rk[j] * xj[0]
-            b -= rk[j] * xj[1]
-        inv = 1.0 / rk[k]
-        x[k] = (a * inv, b * inv)
-    return x
 
 
 def _solve_stack(J, rhs):
@@ -425,6 +388,16 @@ def no_convergence(theta2, residual, iterations, reason):
         f"be assembled there, or the guesses are too far from an assembly. Check the lengths, "
         f"or give guesses closer to the intended assembly.",
         residual=residual, iterations=iterations)
+
+
+def orientation(J):
+    """det J over the product of J's column norms, for one square matrix or a
+    stack: in [-1, 1], 0 where singular (Hadamard's inequality), its sign the
+    assembly's orientation (see the module docstring)."""
+    J = np.asarray(J, dtype=float)
+    norms = np.prod(np.sqrt(np.einsum("...ij,...ij->...j", J, J)), axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(norms > 0, np.linalg.det(J) / np.where(norms > 0, norms, 1.0), 0.0)
 
 
 def condition(J, model):

@@ -21,16 +21,22 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
     Returns a Motion with ``q`` (N, n_unknowns), per-vector ``L``, ``theta``,
     ``dL``/``dth`` (lists of derivative arrays), point motions ``points``
     (list [R, V, A, J] of (N, n_points) complex arrays), ``status``,
-    ``condition``, ``iterations`` and ``message``.
+    ``condition``, ``iterations``, ``message`` (the first failed position's
+    error, else what the sweep noted, else the first singular position's) and
+    ``notes`` (position -> text: where the sweep passed a change point on its
+    own assembly, or left a singular first position; see :mod:`.sweep`).
     """
     theta2 = np.atleast_1d(np.asarray(theta2, dtype=float))
     N = len(theta2)
     inputs = [np.broadcast_to(np.asarray(x, dtype=float), (N,)) for x in (omega2, alpha2, jerk2)]
     tol = check_tol(tol)
-    q, status, iterations, message = solve_sweep(system, theta2, system.model.guess, tol, batch)
+    q, status, iterations, message, notes = solve_sweep(system, theta2, system.model.guess, tol,
+                                                        batch)
+    if message is None and notes:
+        message = Singular(" ".join(notes.values()))
     ok = status == OK
     nv = len(system.fixed_length)
-    out = Motion(q=q, status=status, iterations=iterations, message=message,
+    out = Motion(q=q, status=status, iterations=iterations, message=message, notes=notes,
                  condition=np.full(N, np.nan))
     L = np.full((N, nv), np.nan)
     theta = np.full((N, nv), np.nan)

@@ -24,6 +24,19 @@ nearest below it and the nearest above it in theta2, modulo a turn of the
 crank when the input drives only whole gear ratios) reaches it on the
 followed assembly; otherwise it is reported ``not_assemblable`` on this
 assembly, with a message.
+
+The followed assembly has an *orientation* (the sign of det J, see
+:mod:`.newton`), which can change along a continuous path only through a
+singular position. Every solved position is checked against it. A position
+reached with the other orientation means either that Newton-Raphson jumped
+(a walk in small steps then stays on the assembly) or that the sweep passed a
+singular position where two assemblies meet, a change point: there the
+sweep stays on the assembly with its orientation (:mod:`.crossing`) and says
+so in a note, or, if it cannot find it, marks the positions past the change
+point ``singular``; it never reports the other assembly as if it were the
+same. A sweep that starts on a singular position reports that position
+(``singular``, from its condition) and continues from the next one that
+converges, with a note that the guesses did not choose the assembly.
 """
 
 import math
@@ -32,25 +45,34 @@ import numpy as np
 
 from ..errors import NotAssemblable, Singular
 from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR, SINGULAR_CONDITION
-from .newton import CONVERGED, DEFAULT_TOL, no_convergence
+from .crossing import (SWITCH_DISTANCE, ambiguity_message, crossing_note, other_branch,
+                       singular_passage_note, singular_start_note)
+from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_STEP, condition,
+                     no_convergence, step_tolerance)
 
 JUMP_TOLERANCE = 0.05   # [rad or length scale] beyond the predicted change
-SUBSTEPS = 8
 COARSE_STEP = 0.25      # [rad] first theta2 step between sequentially solved positions
 COARSE_RANGE = (0.02, 0.6)  # [rad] the step adapts within this range
 COARSE_TARGET = 0.005   # [rad or length scale] aimed-at chord/slope mismatch per step
-MAX_STRIDE = 64         # most positions between two sequentially solved ones
-MIN_STRIDE = 4          # below this, walk position by position
+MAX_STRIDE = 256        # most positions between two sequentially solved ones
+MIN_STRIDE = 2          # below this, walk position by position
 GAP_CHUNK = 16          # positions tried together while the loops do not close
 WALK_STEP = 0.05        # [rad] continuation step when rejoining the assembly after a gap
 MIN_WALK_STEP = 1e-6    # [rad] smallest step of that walk before it gives up
 WALK_ITERATIONS = 8     # Newton steps a walk step may take before it is halved
 MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
 HIGHER_ORDER_CAP = 0.1  # [rad or length scale] largest 2nd+3rd order predictor term
+SAMPLE_SINGULAR = 100.0  # a solved position whose |orientation| is below this many times
+                         # Newton's step tolerance (at most 1e-3) is treated as singular:
+                         # its orientation's sign and its slope are not trusted
 
 
 class _BranchJump(Singular):
     """Newton-Raphson reached closure only on another assembly."""
+
+
+def _sign(x):
+    return math.copysign(1.0, x)
 
 
 class _Sweep:
@@ -61,10 +83,12 @@ class _Sweep:
         N, nu = len(theta2), system.n_unknowns
         self.q = np.full((N, nu), np.nan)
         self.slope = np.full((N, nu), np.nan)     # at sequentially solved positions
+        self.orient = np.full(N, np.nan)          # orientation of solved positions
         self.status = np.full(N, OK, dtype=np.int8)
         self.iterations = np.zeros(N, dtype=int)
         self.sequential = np.zeros(N, dtype=bool)  # solved by continuation (anchors)
         self.errors = {}
+        self.notes = {}         # position -> what the sweep decided there (crossings)
         self.guess = np.asarray(q0, dtype=float)
         self.last = None        # index of the last position solved by continuation
         self.taylor = None      # 2nd and 3rd Taylor coefficients of q(theta2) at last
@@ -78,19 +102,36 @@ class _Sweep:
         # self.last; the per-position bookkeeping of a 4-unknown linkage is
         # cheaper in Python than in numpy calls
         self.state = None
+        self.sign = None        # orientation (+1 / -1) of the followed assembly
+        self.singular_last = False  # self.last is a singular position
+        self.singular_start = None  # index of a singular first position, until the sign is set
+        self.blocked = None     # (theta2, direction): past it the assembly was lost
+        self.sample_singular = min(1e-3, SAMPLE_SINGULAR * step_tolerance(tol))
+        self.theta2_list = [float(x) for x in theta2]
 
     # --- bookkeeping --------------------------------------------------------
-    def accept(self, i, q, it, slope):
+    def accept(self, i, q, it, slope, orient):
         q = [float(x) for x in q]
+        singular = not abs(orient) >= self.sample_singular
+        if singular:
+            slope = None            # dq/dtheta2 means nothing at a singular position
         slope = None if slope is None else [float(x) for x in slope]
         if slope is not None and not all(math.isfinite(x) for x in slope):
             slope = None
         self.q[i], self.iterations[i], self.status[i] = q, it, OK
         self.slope[i] = np.nan if slope is None else slope
+        self.orient[i] = orient
         self.sequential[i] = True
+        t = float(self.theta2[i])
+        if not singular and self.sign is None:
+            self.sign = _sign(orient)
+            if self.singular_start is not None:
+                self.notes[i] = singular_start_note(float(self.theta2[self.singular_start]), t)
+                self.singular_start = None
+        elif singular and self.sign is None and self.state is None:
+            self.singular_start = i
         # second and third derivatives of q(theta2) at i from the cubic through the
         # previous solved position: the predictor becomes a cubic Taylor polynomial
-        t = float(self.theta2[i])
         self.taylor = None
         if self.state is not None and not self.gap and slope is not None:
             t0, q0, s0 = self.state
@@ -102,6 +143,7 @@ class _Sweep:
                                [(2 * d + h * (a + b)) / h3 for d, a, b in zip(dq, s0, slope)])
         self.state = (t, q, slope)
         self.last, self.gap = i, False
+        self.singular_last = singular
         self.failures = 0
 
     def restore(self, a):
@@ -110,6 +152,7 @@ class _Sweep:
         self.state = (float(self.theta2[a]), [float(x) for x in self.q[a]],
                       [float(x) for x in slope] if np.isfinite(slope).all() else None)
         self.last, self.gap, self.failures, self.taylor = a, False, 0, None
+        self.singular_last = not abs(self.orient[a]) >= self.sample_singular
 
     def fail(self, i, status, exc):
         self.status[i] = status
@@ -128,13 +171,18 @@ class _Sweep:
         limit = JUMP_TOLERANCE + 0.5 * change
         return any(abs(a - b) > limit * sc for a, b, sc in zip(q, pred, self.scale_list))
 
+    def flipped(self, orient):
+        """Is ``orient`` (trusted in sign) the other orientation than the followed one?"""
+        return (self.sign is not None and abs(orient) >= ORIENTATION_FLOOR
+                and _sign(orient) != self.sign)
+
     def predict(self, t):
         """Continuation predictor from the last solved position to theta2 = t:
         ``(guess, change)``, ``change`` the largest scaled first-order change
         (None without a slope). The cubic Taylor terms are used only where they
         stay small (< HIGHER_ORDER_CAP), so they never carry a guess far from
         the tangent. ``t`` a float gives lists, an array gives arrays."""
-        if np.ndim(t):
+        if not isinstance(t, float):
             return self._predict_many(np.asarray(t, dtype=float))
         if self.state is None:
             return [float(x) for x in self.guess], None
@@ -175,60 +223,172 @@ class _Sweep:
         """Solve position i from the continuation state (or post-process the
         Newton ``result`` already computed from that same prediction)."""
         t = float(self.theta2[i])
+        if self.blocked is not None and (t - self.blocked[0]) * self.blocked[1] > 0:
+            self.fail(i, SINGULAR, Singular(ambiguity_message(self.blocked[0], t)))
+            return False
         pred, change = self.predict(t)
-        if result is None:
-            result = self.system.newton1(pred, t, self.tol)
-        q, it, res, reason, slope = result
+        leaving = self.singular_last and self.state is not None
+        if result is None or (leaving and result[3] == SINGULAR_STEP):
+            result = self.system.newton1(pred, t, self.tol, least_squares=leaving)
+        q, it, res, reason, slope, orient = result
+        if reason == SINGULAR_STEP and self.state is None:
+            result = self.singular_first(pred, t)
+            if result is not None:
+                q, it, res, reason, slope, orient = result
         if reason != CONVERGED:
             self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res, it, reason))
             return False
+        trusted = abs(orient) >= self.sample_singular
         if self.gap:  # across a gap the prediction means little: walk to check instead
-            ok, q, slope = self.rejoin(i, np.asarray(q), slope)
+            ok, q, slope, orient = self.rejoin(i, np.asarray(q), slope, orient)
             if not ok:
                 return False
-        elif change is not None and self.jumped(q, pred, change):
-            try:
-                q, it, slope = self.subdivide(t)
-            except _BranchJump as exc:
-                self.fail(i, SINGULAR, exc)
+        elif ((change is not None and self.jumped(q, pred, change))
+              or (self.flipped(orient) and trusted and not leaving)):
+            found = self.subdivide(i, t, it)
+            if found is None:
                 return False
-        self.accept(i, q, it, slope)
+            q, it, slope, orient = found
+        elif leaving and self.sign is not None and trusted:
+            t_s, q_c = float(self.state[0]), np.array(self.state[1])
+            if self.flipped(orient):
+                found = self.switch(i, t_s, q_c, (np.asarray(q) - q_c) / (t - t_s), t)
+                if found is None:
+                    return False
+                q, it, slope, orient = found
+            else:
+                self.notes[i] = singular_passage_note(t_s, t)
+        self.accept(i, q, it, slope, orient)
         return True
 
-    def subdivide(self, t):
-        """Walk from the last solved position to t in small steps; raise
-        _BranchJump if it still jumps."""
-        q_prev = self.q[self.last]
-        t_prev = float(self.theta2[self.last])
-        slope = self.slope[self.last]
-        total = 0
-        for k in range(1, SUBSTEPS + 1):
-            tk = t_prev + (t - t_prev) * k / SUBSTEPS
-            h = tk - (t_prev + (t - t_prev) * (k - 1) / SUBSTEPS)
-            pred = q_prev + slope * h
+    def singular_first(self, q0, t):
+        """The first position's guesses sit where the Jacobian is singular. If the
+        position itself is singular (least-squares Newton-Raphson closes the
+        loops there at a condition below SINGULAR_CONDITION) return that result:
+        it is accepted and reported ``singular``. Otherwise None: the guesses,
+        not the position, are singular, and they choose no assembly."""
+        result = self.system.newton1(q0, t, self.tol, least_squares=True)
+        if result[3] != CONVERGED:
+            return None
+        J = self.system.evaluate(np.array([result[0]]), np.array([t]))[1]
+        if not condition(J, self.system.model)[0] < SINGULAR_CONDITION:
+            return None
+        return result
+
+    # --- off the prediction: a jump, or through a singular position -----------
+    def subdivide(self, i, t, it):
+        """Position i converged far from the prediction (a jump) or with the
+        other orientation than the followed assembly. Walk to it from the last
+        solved position in small steps on the followed orientation
+        (:meth:`follow`): if the walk arrives, Newton-Raphson had jumped and
+        the walk's solution stands; if the orientation changes even within a
+        step of MIN_WALK_STEP, a singular position where two assemblies meet
+        lies there (a change point), and the sweep finds its own assembly past
+        it (:meth:`switch`). Returns ``(q, iterations, slope, orient)`` or None
+        (position i failed)."""
+        t_a, q_a, s_a = self.state
+        if s_a is None:
+            self.fail(i, SINGULAR, _BranchJump(
+                f"at theta2 = {np.degrees(t):.6g} deg Newton-Raphson reaches the loops' closure "
+                f"only on another assembly, and the sweep cannot walk there from theta2 = "
+                f"{np.degrees(t_a):.6g} deg. Sweep in smaller steps."))
+            return None
+        kind, data = self.follow(np.array(q_a), np.array(s_a), t_a, t, self.sign,
+                                 float(self.orient[self.last]))
+        if kind == "arrived":
+            q_w, s_w, o_w = data
+            return q_w, it, s_w, o_w
+        if kind == "stuck":
+            self.fail(i, SINGULAR, _BranchJump(
+                f"near theta2 = {np.degrees(t_a + math.copysign(data, t - t_a)):.6g} deg "
+                f"Newton-Raphson reaches the loops' closure only on another assembly: the "
+                f"linkage passes a limit (toggle) position there. Sweep a range that avoids it."))
+            return None
+        t_p, q_p, o_p, s_p, t_n, q_n, o_n = data
+        w = o_p / (o_p - o_n)        # the orientation is about linear in theta2 there
+        return self.switch(i, t_p + w * (t_n - t_p), q_p + w * (q_n - q_p), s_p, t)
+
+    def switch(self, i, t_c, q_c, v, t):
+        """At position i (theta2 = t), past the singular position q_c at t_c
+        that the continuation crossed along direction v (dq/dtheta2), find the
+        solution with the followed orientation. Within SWITCH_DISTANCE of the
+        crossing the two curves through q_c are told apart directly
+        (:func:`.crossing.other_branch`); farther, at SWITCH_DISTANCE, and the
+        sweep's own curve is followed from there to t. Returns ``(q,
+        iterations, slope, orient)``, with a note, or None with position i
+        failed and the positions past t_c blocked."""
+        d = t - t_c
+        t_w = t if abs(d) <= SWITCH_DISTANCE else t_c + math.copysign(SWITCH_DISTANCE, d)
+        q_k, it, _, reason, s_k, o_k = self.system.newton1(q_c + v * (t_w - t_c), t_w, self.tol)
+        near = found = None
+        if reason == CONVERGED and s_k is not None:
+            if abs(o_k) >= ORIENTATION_FLOOR and _sign(o_k) == self.sign:
+                near = np.asarray(q_k), it, np.asarray(s_k), o_k
+            else:
+                near = other_branch(self.system, t_c, q_c, t_w, np.asarray(q_k), self.sign,
+                                    self.tol, JUMP_TOLERANCE)
+        if near is not None and t_w == t:
+            found = near
+        elif near is not None:
+            kind, data = self.follow(near[0], near[2], t_w, t, self.sign, near[3])
+            if kind == "arrived":
+                found = (data[0], near[1], data[1], data[2])
+        if found is None:
+            self.blocked = (t_c, math.copysign(1.0, d), i)
+            self.fail(i, SINGULAR, Singular(ambiguity_message(t_c, t)))
+            return None
+        self.notes[i] = crossing_note(t_c, t)
+        return found
+
+    def follow(self, q, slope, t0, target, sign, orient=math.nan):
+        """Continuation from (t0, q, slope, orient) to theta2 = target in steps of
+        at most WALK_STEP, halved where a step jumps, does not close within
+        WALK_ITERATIONS, or (``sign`` not None) lands on the other orientation.
+
+        Returns ``(kind, data)``: ``("arrived", (q, slope, orient))``;
+        ``("stuck", distance reached [rad])``; or, when the orientation changes
+        within a step no longer than MIN_WALK_STEP, ``("flip", (t_p, q_p,
+        orient_p, slope_p, t_n, q_n, orient_n))`` on either side of it.
+        """
+        q = np.asarray(q, dtype=float)
+        slope = np.asarray(slope, dtype=float)
+        t = t0
+        dist = target - t0
+        h = math.copysign(min(WALK_STEP, abs(dist)), dist)
+        while abs(target - t) > 0.0:
+            if not np.isfinite(slope).all():
+                return "stuck", abs(t - t0)
+            h = math.copysign(min(abs(h), abs(target - t)), dist)
+            pred = q + slope * h
             change = float(np.max(np.abs(slope * h) / self.scale))
-            qk, it, res, reason, new_slope = self.system.newton1(pred, tk, self.tol)
-            total += it
-            if reason != CONVERGED or new_slope is None or self.jumped(np.asarray(qk), pred,
-                                                                         change):
-                raise _BranchJump(
-                    f"near theta2 = {np.degrees(tk):.6g} deg Newton-Raphson reaches the loops' "
-                    f"closure only on another assembly: the linkage passes a limit (toggle) "
-                    f"position there. Sweep a range that avoids it.")
-            q_prev, slope = np.asarray(qk), np.asarray(new_slope)
-        return q_prev, total, slope
+            qk, _, _, reason, sk, ok = self.system.newton1(pred, t + h, self.tol, WALK_ITERATIONS)
+            closed = (reason == CONVERGED and sk is not None
+                      and not self.jumped(np.asarray(qk), pred, change))
+            other = (closed and sign is not None and abs(ok) >= ORIENTATION_FLOOR
+                     and _sign(ok) != sign)
+            if closed and not other:
+                q, slope, t, orient = np.asarray(qk), np.asarray(sk), t + h, ok
+                h = math.copysign(min(2.0 * abs(h), WALK_STEP), dist)
+                continue
+            if other and abs(h) <= MIN_WALK_STEP and math.isfinite(orient):
+                return "flip", (t, q, orient, slope, t + h, np.asarray(qk), ok)
+            h /= 2.0
+            if abs(h) < MIN_WALK_STEP and not other:
+                return "stuck", abs(t - t0)
+        return "arrived", (q, slope, orient)
 
     # --- after a stretch that cannot be assembled ------------------------------
-    def rejoin(self, i, q_try, slope_try):
+    def rejoin(self, i, q_try, slope_try, orient_try):
         """Is the solution found at i, after a gap, on the followed assembly?
 
         Walk by continuation to theta2[i] from the nearest solved position
         below it and from the nearest above it (modulo the input's period, if
         it has one), nearer first; a walk that arrives defines the assembly.
-        Returns ``(ok, q, slope)``.
+        Returns ``(ok, q, slope, orient)``.
         """
         t = float(self.theta2[i])
-        anchors = np.flatnonzero(self.sequential[:i] & (self.status[:i] == OK))
+        anchors = np.flatnonzero(self.sequential[:i] & (self.status[:i] == OK)
+                                 & np.isfinite(self.slope[:i]).all(axis=1))
         d = t - self.theta2[anchors]
         period = self.system.period
         walks = []
@@ -248,48 +408,32 @@ class _Sweep:
             if isinstance(reached, float):
                 self.walk_failed[key] = reached
                 continue
-            q_w, slope_w = reached
+            q_w, slope_w, orient_w = reached
             if dist != t - self.theta2[a]:   # the same configuration, whole turns away
-                q_w, _, _, reason, slope_w = self.system.newton1(q_w, t, self.tol)
-                if reason != CONVERGED or slope_w is None:
+                q_w, _, _, reason, slope_w, orient_w = self.system.newton1(q_w, t, self.tol)
+                if reason != CONVERGED or slope_w is None or self.flipped(orient_w):
                     continue
                 q_w = np.asarray(q_w)
             if np.max(np.abs(q_w - q_try) / self.scale) <= MATCH_TOLERANCE:
-                return True, q_try, slope_try
-            return True, q_w, slope_w
+                return True, q_try, slope_try, orient_try
+            return True, q_w, slope_w, orient_w
         self.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
             f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range where "
             f"they cannot, but not on the assembly this sweep follows: no continuous path "
             f"from the positions solved before reaches it. Solve this range on its own, with "
             f"guesses for the assembly you want."))
-        return False, None, None
+        return False, None, None, None
 
     def walk(self, a, dist):
-        """Continuation from solved position a over ``dist`` [rad] of theta2, in
-        steps of at most WALK_STEP, halved where a step jumps or does not close
-        within WALK_ITERATIONS. Returns (q, slope) at theta2[a] + dist, or the
-        distance [rad] it reached before it had to give up."""
-        q = self.q[a]
-        slope = self.slope[a]
-        t0 = t = float(self.theta2[a])
-        target = t + dist
-        h = math.copysign(min(WALK_STEP, abs(dist)), dist)
-        while abs(target - t) > 0.0:
-            if not np.isfinite(slope).all():
-                return abs(t - t0)
-            h = math.copysign(min(abs(h), abs(target - t)), dist)
-            pred = q + slope * h
-            change = float(np.max(np.abs(slope * h) / self.scale))
-            qk, _, _, reason, sk = self.system.newton1(pred, t + h, self.tol, WALK_ITERATIONS)
-            if reason == CONVERGED and sk is not None and not self.jumped(np.asarray(qk), pred,
-                                                                          change):
-                q, slope, t = np.asarray(qk), np.asarray(sk), t + h
-                h = math.copysign(min(2.0 * abs(h), WALK_STEP), dist)
-                continue
-            h /= 2.0
-            if abs(h) < MIN_WALK_STEP:
-                return abs(t - t0)
-        return q, slope
+        """Continuation from solved position a over ``dist`` [rad] of theta2 on
+        the followed orientation (:meth:`follow`). Returns (q, slope, orient) at
+        theta2[a] + dist, or the distance [rad] it reached before it had to
+        give up."""
+        kind, data = self.follow(self.q[a], self.slope[a], float(self.theta2[a]),
+                                 float(self.theta2[a]) + dist, self.sign, float(self.orient[a]))
+        if kind == "arrived":
+            return data
+        return data if kind == "stuck" else abs(data[0] - float(self.theta2[a]))
 
     def scan_gap(self, i, stop):
         """Positions i..stop-1 while the loops do not close: every one starts from
@@ -298,10 +442,10 @@ class _Sweep:
         idx = np.arange(i, stop)
         t = self.theta2[idx]
         q0, _ = self.predict(t)
-        q, it, res, reason, slope = self.system.newton(q0, t, self.tol)
+        q, it, res, reason, slope, orient = self.system.newton(q0, t, self.tol)
         for k, n in enumerate(idx):
             result = (q[k], int(it[k]), float(res[k]), reason[k],
-                      slope[k] if reason[k] == CONVERGED else None)
+                      slope[k] if reason[k] == CONVERGED else None, float(orient[k]))
             if self.step(n, result):
                 return n + 1
         return stop
@@ -309,29 +453,35 @@ class _Sweep:
     # --- the coarse chain and the batched positions between ----------------------
     def coarse_end(self, a):
         """Index b of the next sequentially solved position after a: theta2 monotonic
-        on [a, b], |theta2[b] - theta2[a]| <= COARSE_STEP, b - a <= MAX_STRIDE."""
-        t = self.theta2
-        w = t[a:a + MAX_STRIDE + 1]
-        if len(w) < 2:
+        on [a, b], |theta2[b] - theta2[a]| <= the coarse step, b - a <= MAX_STRIDE
+        (at least a + 1)."""
+        t = self.theta2_list
+        stop = min(a + MAX_STRIDE, len(t) - 1)
+        if stop <= a + 1:
             return a + 1
-        d = np.diff(w)
-        sign = np.sign(d[0])
-        if sign == 0:
+        t0, prev = t[a], t[a + 1]
+        sign = math.copysign(1.0, prev - t0)
+        if prev == t0:
             return a + 1
-        steps = d * sign
-        run = len(steps) if (steps > 0).all() else int(np.argmin(steps > 0))
-        dist = (w[1:run + 1] - w[0]) * sign
-        n = int(np.searchsorted(dist, self.coarse, side="right"))
-        return a + max(n, 1)
+        limit = self.coarse
+        b = a + 1
+        while b < stop:
+            nxt = t[b + 1]
+            if (nxt - prev) * sign <= 0.0 or (nxt - t0) * sign > limit:
+                break
+            b, prev = b + 1, nxt
+        return b
 
     def coarse_step(self, a, b):
-        """Continuation from a straight to b; accepted only without a jump and with
-        slopes at both ends consistent with the chord (a smooth branch)."""
+        """Continuation from a straight to b; accepted only without a jump, on the
+        followed orientation away from singular positions, and with slopes at
+        both ends consistent with the chord (a smooth branch)."""
         t = float(self.theta2[b])
         pred, change = self.predict(t)
-        q, it, res, reason, slope = self.system.newton1(pred, t, self.tol)
+        q, it, res, reason, slope, orient = self.system.newton1(pred, t, self.tol)
         lo, hi = COARSE_RANGE
-        if reason != CONVERGED or slope is None:
+        if (reason != CONVERGED or slope is None or not abs(orient) >= self.sample_singular
+                or self.flipped(orient)):
             self.coarse = max(lo, 0.5 * self.coarse)
             return False
         ta, qa, sa = self.state
@@ -343,7 +493,7 @@ class _Sweep:
         self.coarse = min(hi, max(lo, abs(h) * min(2.0, max(0.5, grow))))
         if error > JUMP_TOLERANCE or self.jumped(q, pred, change):
             return False
-        self.accept(b, q, it, slope)
+        self.accept(b, q, it, slope, orient)
         return True
 
     def batch(self, intervals):
@@ -358,12 +508,15 @@ class _Sweep:
         idx = np.concatenate([np.arange(a + 1, b) for a, b in intervals])
         th = self.theta2
         guess, rate = self.hermite(idx, A[owner], Bn[owner])
-        q, it, res, reason, _ = self.system.newton(guess, th[idx], self.tol, slopes=False)
+        q, it, res, reason, _, orient = self.system.newton(guess, th[idx], self.tol,
+                                                           slopes=False)
         dt = np.abs(th[idx] - th[idx - 1])[:, None]
         change = np.max(np.abs(rate * dt) / self.scale, axis=1)
         off = np.max(np.abs(q - guess) / self.scale, axis=1)
         good = (reason == CONVERGED) & (off <= JUMP_TOLERANCE + 0.5 * change)
-        self.q[idx], self.iterations[idx] = q, it
+        if self.sign is not None:   # never the other orientation
+            good &= ~((np.abs(orient) >= ORIENTATION_FLOOR) & (np.sign(orient) != self.sign))
+        self.q[idx], self.iterations[idx], self.orient[idx] = q, it, orient
         bad = np.unique(owner[~good])
         return [intervals[k] for k in bad]
 
@@ -385,11 +538,15 @@ class _Sweep:
         """Forget everything solved after position b (the chain is restarted there)."""
         self.q[b + 1:] = np.nan
         self.slope[b + 1:] = np.nan
+        self.orient[b + 1:] = np.nan
         self.status[b + 1:] = OK
         self.iterations[b + 1:] = 0
         self.sequential[b + 1:] = False
         self.errors = {i: e for i, e in self.errors.items() if i <= b}
+        self.notes = {i: e for i, e in self.notes.items() if i <= b}
         self.walk_failed = {k: v for k, v in self.walk_failed.items() if k[0] <= b}
+        if self.blocked is not None and self.blocked[2] > b:
+            self.blocked = None
 
     def advance(self, i, stop):
         """Solve position i by continuation; while the loops do not close (the
@@ -429,11 +586,13 @@ class _Sweep:
             for a, b in self.batch(intervals):
                 # walk this interval again position by position from a
                 q_b, slope_b, it_b = self.q[b].copy(), self.slope[b].copy(), self.iterations[b]
+                orient_b = self.orient[b]
                 self.restore(a)
                 self.walk_dense(a + 1, b + 1)
                 if (self.status[b] == OK and self.last == b
                         and np.max(np.abs(self.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE):
                     self.q[b], self.slope[b], self.iterations[b] = q_b, slope_b, it_b
+                    self.orient[b] = orient_b
                     continue
                 # the walk reached b differently: the chain after b is void
                 self.reset_after(b)
@@ -454,14 +613,20 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
         Solve the positions between a coarse sequential chain together
         (default); False walks position by position (the reference path).
 
-    Returns ``(q, status, iterations, message)``: q (N, n_unknowns) with NaN
-    where not valid, int8 status per position (0 ok, 1 not assemblable,
-    2 only reachable by a branch jump), Newton iterations per position, and
-    the error of the first failed position (or None). Singular Jacobians at
-    converged positions are flagged afterwards, on the whole stack at once.
+    Returns ``(q, status, iterations, message, notes)``: q (N, n_unknowns)
+    with NaN where not valid, int8 status per position (0 ok, 1 not
+    assemblable, 2 only reachable by a branch jump, or past a change point
+    where the followed assembly was lost), Newton iterations per position,
+    the error of the first failed position (or None), and ``notes``: a dict
+    from position to what the sweep decided there without failing it
+    (passing a change point on its own assembly, leaving a singular first
+    position). Singular Jacobians at converged positions are flagged
+    afterwards, on the whole stack at once.
     """
     theta2 = np.asarray(theta2, dtype=float)
-    return _Sweep(system, theta2, q0, tol).run(batch)
+    sweep = _Sweep(system, theta2, q0, tol)
+    q, status, iterations, message = sweep.run(batch)
+    return q, status, iterations, message, dict(sorted(sweep.notes.items()))
 
 
 def singular_message(theta2, cond):
