@@ -236,10 +236,12 @@ plt.show()
 # $a e^{j\theta_2} - b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_1} = 0$, differentiated twice
 # with $a, c, d$ constant and $b$ varying, gives
 #
-# $$ a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}
-#    - \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3} + 2\dot b\omega_3 je^{j\theta_3}
-#    + \ddot b e^{j\theta_3}\right) - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right)
-#    = 0 \tag{7.20b} $$
+# $$ \begin{split}
+#    & a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2} \\
+#    & - \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3} + 2\dot b\omega_3 je^{j\theta_3}
+#    + \ddot b e^{j\theta_3}\right) \\
+#    & - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right) = 0
+#    \end{split} \tag{7.20b} $$
 #
 # which is the acceleration difference equation between A and B, with the slide's two extra
 # parts inside $\mathbf{A}_{AB} = \mathbf{A}_A - \mathbf{A}_B$:
@@ -261,11 +263,12 @@ plt.show()
 #    + c\omega_4^2\sin(\theta_4-\theta_3) - 2\dot b\omega_3}{b + c\cos(\theta_3-\theta_4)}
 #    \tag{7.26a} $$
 #
-# $$ \ddot b = -\frac{a\omega_2^2\left[b\cos(\theta_3-\theta_2) + c\cos(\theta_4-\theta_2)\right]
-#    + a\alpha_2\left[b\sin(\theta_2-\theta_3) - c\sin(\theta_4-\theta_2)\right]
-#    + 2\dot b c\omega_4\sin(\theta_4-\theta_3)
-#    - \omega_4^2\left[b^2 + c^2 + 2bc\cos(\theta_4-\theta_3)\right]}{b + c\cos(\theta_3-\theta_4)}
-#    \tag{7.26b} $$
+# $$ \ddot b = -\frac{N}{b + c\cos(\theta_3-\theta_4)}, \qquad \begin{split}
+#    N = {} & a\omega_2^2\left[b\cos(\theta_3-\theta_2) + c\cos(\theta_4-\theta_2)\right] \\
+#    & + a\alpha_2\left[b\sin(\theta_2-\theta_3) - c\sin(\theta_4-\theta_2)\right] \\
+#    & + 2\dot b c\omega_4\sin(\theta_4-\theta_3)
+#    - \omega_4^2\left[b^2 + c^2 + 2bc\cos(\theta_4-\theta_3)\right]
+#    \end{split} \tag{7.26b} $$
 #
 # (The scanned chapter prints $\sin(\theta_4 + \theta_2)$ in eq. 7.26b; the sum is a misprint, the
 # cell below shows that only the difference agrees with the solver.) The denominator vanishes

@@ -105,16 +105,24 @@ def execute(source, outdir=EXECUTED, timeout=CELL_TIMEOUT):
     try:
         client.execute(env=kernel_env())
     except CellExecutionError as exc:
-        nbformat.write(nb, target)
+        _write_failed(nb, target)
         raise NotebookFailed(f"{source.name} failed:\n{exc}") from None
     except Exception as exc:  # a timeout, a dead kernel: the same verdict, with its kind
-        nbformat.write(nb, target)
+        _write_failed(nb, target)
         raise NotebookFailed(f"{source.name} failed: {type(exc).__name__}: {exc}") from None
-    nbformat.write(nb, target)
     found = problems(nb)
     if found:
+        _write_failed(nb, target)
         raise NotebookFailed(f"{source.name} wrote to stderr or failed:\n" + "\n".join(found))
+    nbformat.write(nb, target)
     return target
+
+
+def _write_failed(nb, target):
+    """Keep a failed run to read, dated 1970 so that ``--reuse`` never takes it."""
+    import nbformat
+    nbformat.write(nb, target)
+    os.utime(target, (0, 0))
 
 
 def executed_notebooks(outdir=EXECUTED, reuse=False, log=print):
