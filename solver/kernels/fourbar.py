@@ -46,7 +46,7 @@ a single position is solved by the same formulas in the same order, so a
 sweep gives, position by position, exactly the scalar answers.
 """
 
-import math
+import threading
 
 import numpy as np
 
@@ -58,6 +58,10 @@ CIRCUITS = {"open": 1.0, "crossed": -1.0}
 #: positions per block of the array path: the block's 26 work arrays (8 bytes a
 #: position) then fit the 512 kB second-level cache of one core
 BLOCK = 16384
+#: fewer positions than this are solved by plain whole-array expressions, whose
+#: fixed cost per call is lower (the same formulas: the same bits)
+MIN_BLOCKED = 2000
+_KEPT = threading.local()
 
 
 def position(a, b, c, d, cos2, sin2, sigma):
@@ -148,8 +152,8 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
-    if type(theta2) is not float and _blockable(theta2, (omega2, alpha2, jerk2),
-                                                (a, b, c, d, theta1)):
+    if (type(theta2) is not float and theta2.size >= MIN_BLOCKED
+            and _blockable(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))):
         return _solve_blocks(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,
                              jerk2, float(theta1), sigma, circuit, order)
     turned = np.ndim(theta1) > 0 or theta1 != 0.0
@@ -240,7 +244,7 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
     mb, mc = -sigma * b, -sigma * c
     m3b, m3c = -3.0 * b, -3.0 * c
     plus, minus = (np.add, np.subtract) if sigma > 0 else (np.subtract, np.add)
-    work = np.empty((13, min(n, BLOCK)))
+    work = _work()
     for start in range(0, n, BLOCK):
         stop = min(start + BLOCK, n)
         sl = slice(start, stop)
@@ -381,6 +385,15 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
     if order >= 3:
         out.jerk2, out.jerk3, out.jerk4 = jerk2, res["jerk3"], res["jerk4"]
     return out
+
+
+def _work():
+    """The block's 13 work arrays, kept from call to call (one set per thread):
+    a fresh 1.7 MB array would cost the page faults of new memory at every call."""
+    work = getattr(_KEPT, "work", None)
+    if work is None or work.shape[1] != BLOCK:
+        work = _KEPT.work = np.empty((13, BLOCK))
+    return work
 
 
 def _rotating(re, im, cos2, sin2, kx, ky, t):
