@@ -71,7 +71,12 @@ class VectorLoopLinkage:
 
         A scalar theta2 that cannot be assembled or is singular raises
         NotAssemblable / Singular (a NoConvergence carries the residual);
-        an array gives NaN and a ``valid`` mask there.
+        an array gives NaN and a ``valid`` mask there, and ``message`` says
+        why. A sweep through a change point (a singular position where two
+        assemblies meet, e.g. a fourbar with s + l = p + q) stays on the
+        assembly with the orientation it followed and says so in ``notes``;
+        a sweep that starts on a singular position reports that position
+        ``singular`` and continues from the next one.
         """
         t2 = to_si(theta2, "theta2", "angle")
         w2 = to_si(omega2, "omega2", "angular_velocity")
@@ -112,7 +117,11 @@ class LoopResult:
     """Solved vector-loop linkage: ``vectors[NAME]`` (angle, omega, alpha, jerk
     and, for sliders, length, length_dot, length_ddot, length_dddot) and
     ``points[NAME]`` (R, V, A, J as complex Quantities), with ``valid``,
-    ``status``, ``condition`` and Newton ``iterations`` per position."""
+    ``status``, ``condition`` and Newton ``iterations`` per position; for a
+    sweep also ``message`` (why the first position that failed did, or what
+    the sweep decided on its way) and ``notes`` (position index -> what the
+    sweep decided there: where it passed a change point on its own assembly,
+    or left a singular first position)."""
 
     def __init__(self, system, motion, scalar):
         self._motion, self._scalar = motion, scalar
@@ -155,3 +164,15 @@ class LoopResult:
     @property
     def iterations(self):
         return self._one(self._motion.iterations)
+
+    @property
+    def message(self):
+        """Text: the first failed position's reason, else the sweep's notes,
+        else the first singular position's (None when all is well)."""
+        m = self._motion.message
+        return None if m is None else str(m)
+
+    @property
+    def notes(self):
+        """dict: position index -> what the sweep decided there."""
+        return dict(self._motion.notes)

@@ -38,6 +38,9 @@ MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed ass
 MAX_LENGTH_STEP = 0.5     # [length scale] per iteration
 DEFAULT_TOL = 1e-13       # loop residual / length scale that Newton gets below
 STEP_TOL_FACTOR = 1e-8 / math.sqrt(DEFAULT_TOL)   # last step <= this * sqrt(tol)
+#: a loop residual this small (times the length scale) is round-off: Newton stops
+#: there whatever its step (at a singular root the step stalls near 1e-8 in noise)
+ROUNDOFF_RESIDUAL = 1e-14
 
 # reasons a position did not converge
 CONVERGED, NOT_CLOSED, SINGULAR_STEP = 0, 1, 2
@@ -220,7 +223,10 @@ class LoopSystem:
             more than :func:`step_tolerance` (``tol``) (radians, or lengths
             over the length scale); that last step is taken, after which the
             loop residual is of order the step squared, below ``tol`` times
-            the length scale. At least one step is taken.
+            the length scale. A position whose loop residual is already
+            round-off (ROUNDOFF_RESIDUAL, or ``tol`` if smaller, times the
+            length scale) has converged too, without a step larger than that:
+            at a singular root the step is noise.
 
         Returns
         -------
@@ -243,19 +249,22 @@ class LoopSystem:
         slope = np.full_like(q, np.nan)
         orient = np.full(M, np.nan)
         step_tol = step_tolerance(tol)
+        floor = min(tol, ROUNDOFF_RESIDUAL) * self.model.length_scale
         active = np.arange(M)
         qa, ta = q, theta2
         for it in range(max_iterations + 1):
             F, J, Ft = self.evaluate(qa, ta)
-            residual[active] = np.sqrt(np.einsum("ij,ij->i", F, F))
+            res = np.sqrt(np.einsum("ij,ij->i", F, F))
+            residual[active] = res
             sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
             dq = -sol[:, :, 0]
             size = np.max(np.abs(dq) / self.scale, axis=1)
-            done = (size <= step_tol) & ~bad
+            small = size <= step_tol
+            done = (small | (res <= floor)) & ~bad
             if done.any():
                 idx = active[done]
-                q[idx] = qa[done] + dq[done]
-                iterations[idx] += 1
+                q[idx] = qa[done] + np.where(small[done, None], dq[done], 0.0)
+                iterations[idx] += small[done]
                 reason[idx] = CONVERGED
                 orient[idx] = orientation(J[done])
                 if slopes:
@@ -302,6 +311,7 @@ class LoopSystem:
         kernel = self._kernel
         scale, limit = self._py_scale, self._py_limit
         step_tol = step_tolerance(tol)
+        floor = min(tol, ROUNDOFF_RESIDUAL) * self.model.length_scale
         steps = 0
         while True:
             res, orient, dq, slope = kernel(q, theta2)
@@ -320,6 +330,8 @@ class LoopSystem:
                     size = a / sc
             if size <= step_tol:
                 return [x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED, slope, orient
+            if res <= floor:        # round-off already: at a singular root the step is noise
+                return q, steps, res, CONVERGED, slope, orient
             if steps == max_iterations:
                 return q, steps, res, NOT_CLOSED, None, math.nan
             if ratio > 1.0:  # never leap to another assembly in one step

@@ -231,8 +231,8 @@ class _Sweep:
         if result is None or (leaving and result[3] == SINGULAR_STEP):
             result = self.system.newton1(pred, t, self.tol, least_squares=leaving)
         q, it, res, reason, slope, orient = result
-        if reason == SINGULAR_STEP and self.state is None:
-            result = self.singular_first(pred, t)
+        if reason == SINGULAR_STEP:
+            result = self.singular_step(pred, t)
             if result is not None:
                 q, it, res, reason, slope, orient = result
         if reason != CONVERGED:
@@ -261,15 +261,18 @@ class _Sweep:
         self.accept(i, q, it, slope, orient)
         return True
 
-    def singular_first(self, q0, t):
-        """The first position's guesses sit where the Jacobian is singular. If the
-        position itself is singular (least-squares Newton-Raphson closes the
-        loops there at a condition below SINGULAR_CONDITION) return that result:
-        it is accepted and reported ``singular``. Otherwise None: the guesses,
+    def singular_step(self, q0, t):
+        """Newton-Raphson met an exactly singular Jacobian on its way from q0:
+        try again with least-squares steps there. The result is returned if it
+        converges, except for the first position of a sweep, where it must
+        also be singular itself (a condition below SINGULAR_CONDITION: it is
+        then accepted and reported ``singular``); otherwise None: the guesses,
         not the position, are singular, and they choose no assembly."""
         result = self.system.newton1(q0, t, self.tol, least_squares=True)
         if result[3] != CONVERGED:
             return None
+        if self.state is not None:
+            return result
         J = self.system.evaluate(np.array([result[0]]), np.array([t]))[1]
         if not condition(J, self.system.model)[0] < SINGULAR_CONDITION:
             return None
@@ -305,7 +308,8 @@ class _Sweep:
                 f"linkage passes a limit (toggle) position there. Sweep a range that avoids it."))
             return None
         t_p, q_p, o_p, s_p, t_n, q_n, o_n = data
-        w = o_p / (o_p - o_n)        # the orientation is about linear in theta2 there
+        # the orientation is about linear in theta2 there
+        w = o_p / (o_p - o_n) if o_p != o_n else 1.0
         return self.switch(i, t_p + w * (t_n - t_p), q_p + w * (q_n - q_p), s_p, t)
 
     def switch(self, i, t_c, q_c, v, t):
@@ -347,31 +351,40 @@ class _Sweep:
 
         Returns ``(kind, data)``: ``("arrived", (q, slope, orient))``;
         ``("stuck", distance reached [rad])``; or, when the orientation changes
-        within a step no longer than MIN_WALK_STEP, ``("flip", (t_p, q_p,
-        orient_p, slope_p, t_n, q_n, orient_n))`` on either side of it.
+        within a step no longer than MIN_WALK_STEP, or a step lands on a
+        singular position (``|orient|`` below the sweep's threshold: the walk
+        is at the crossing itself), ``("flip", (t_p, q_p, orient_p, slope_p,
+        t_n, q_n, orient_n))`` on either side of it.
         """
         q = np.asarray(q, dtype=float)
         slope = np.asarray(slope, dtype=float)
         t = t0
         dist = target - t0
         h = math.copysign(min(WALK_STEP, abs(dist)), dist)
-        while abs(target - t) > 0.0:
+        while (target - t) * dist > 0.0:
             if not np.isfinite(slope).all():
                 return "stuck", abs(t - t0)
-            h = math.copysign(min(abs(h), abs(target - t)), dist)
+            if abs(h) >= abs(target - t):     # the last step lands on target exactly
+                t_next, h = target, target - t
+            else:
+                t_next = t + h
             pred = q + slope * h
             change = float(np.max(np.abs(slope * h) / self.scale))
-            qk, _, _, reason, sk, ok = self.system.newton1(pred, t + h, self.tol, WALK_ITERATIONS)
+            qk, _, _, reason, sk, ok = self.system.newton1(pred, t_next, self.tol,
+                                                           WALK_ITERATIONS)
             closed = (reason == CONVERGED and sk is not None
                       and not self.jumped(np.asarray(qk), pred, change))
             other = (closed and sign is not None and abs(ok) >= ORIENTATION_FLOOR
                      and _sign(ok) != sign)
+            if (closed and not other and sign is not None and math.isfinite(orient)
+                    and not abs(ok) >= self.sample_singular):
+                return "flip", (t, q, orient, slope, t_next, np.asarray(qk), ok)
             if closed and not other:
-                q, slope, t, orient = np.asarray(qk), np.asarray(sk), t + h, ok
+                q, slope, t, orient = np.asarray(qk), np.asarray(sk), t_next, ok
                 h = math.copysign(min(2.0 * abs(h), WALK_STEP), dist)
                 continue
             if other and abs(h) <= MIN_WALK_STEP and math.isfinite(orient):
-                return "flip", (t, q, orient, slope, t + h, np.asarray(qk), ok)
+                return "flip", (t, q, orient, slope, t_next, np.asarray(qk), ok)
             h /= 2.0
             if abs(h) < MIN_WALK_STEP and not other:
                 return "stuck", abs(t - t0)
