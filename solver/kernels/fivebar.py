@@ -23,8 +23,8 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import (OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet,
-                     triangle_angles)
+from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
+                     piecewise, quiet, triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -59,6 +59,9 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
+        return in_pieces(lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit,
+                                               order), theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     t5 = lam * t2 + phi
     cos2, sin2 = np.cos(t2), np.sin(t2)

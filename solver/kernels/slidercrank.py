@@ -20,7 +20,8 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 
 import numpy as np
 
-from .common import EPS, OK, Motion, acc_term, as_input, classify, jerk_term, masked, quiet, where
+from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
+                     piecewise, quiet, where)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
@@ -55,6 +56,9 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
+        return in_pieces(lambda *motion: solve(a, b, c, *motion, theta1, circuit, order),
+                         theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     y = a * sin2 - c
