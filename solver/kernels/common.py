@@ -88,6 +88,11 @@ def classify(gap, span):
         status = (NOT_ASSEMBLABLE if not gap > -tol else
                   OK if roundoff <= MAX_ROUNDOFF else SINGULAR)
         return np.int8(status), roundoff
+    if gap.size and gap.min() > 0.0:  # every position closes (the usual sweep): fewer passes
+        roundoff = ROUNDOFF_GAIN * EPS * span / gap
+        if roundoff.max() <= MAX_ROUNDOFF:
+            return np.zeros(gap.shape, dtype=np.int8), roundoff
+        return np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR).astype(np.int8), roundoff
     with np.errstate(divide="ignore", invalid="ignore"):
         roundoff = np.where(gap > 0, ROUNDOFF_GAIN * EPS * span / gap, np.inf)
     status = np.where(gap > -tol, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR),

@@ -96,7 +96,8 @@ def position(a, b, c, d, cos2, sin2, sigma):
             prod = 0.0
     else:
         gap = np.minimum(f23, f4)
-        prod = np.where((gap <= 0.0) & (gap > -tol), 0.0, prod)
+        if not gap.min(initial=np.inf) > 0.0:   # a limit position, or past one
+            prod = np.where((gap <= 0.0) & (gap > -tol), 0.0, prod)
     area4 = np.sqrt(prod)
     k = b * b - c * c
     inv3 = (0.5 / b) / ss
