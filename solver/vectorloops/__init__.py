@@ -10,7 +10,16 @@ A sweep over an array of theta2 follows one assembly by continuation on a
 coarse subset of the positions and solves the positions in between in one
 batched Newton-Raphson (:mod:`.sweep`); ``tol=`` on
 :meth:`VectorLoopLinkage.solve` sets Newton-Raphson's convergence tolerance
-(default 1e-13, round-off).
+(default 1e-13, round-off). The assembly is told by its orientation (the
+sign of det J); through a change point, where two assemblies meet, a sweep
+keeps that orientation and says so in ``notes`` (:mod:`.crossing`).
+
+Modules: :mod:`.description` (reading a description), :mod:`.newton` (the
+loop equations and Newton-Raphson), :mod:`.straightline` (one position's
+Newton step as generated Python), :mod:`.products` (BLAS products that stay
+single-threaded), :mod:`.sweep` and :mod:`.walks` (continuation),
+:mod:`.crossing` (change points), :mod:`.derivatives` (velocity to jerk),
+:mod:`.solve`, :mod:`.linkage` and :mod:`.batch` (the entry points).
 """
 
 from .batch import solve_case
