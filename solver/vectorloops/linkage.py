@@ -61,13 +61,15 @@ class VectorLoopLinkage:
         tol : float
             Newton-Raphson's convergence tolerance, dimensionless (default
             1e-13, which converges to round-off). Newton stops at a position
-            when the loop residual is at most ``tol`` times the longest link
-            and its last full step moved no unknown by more than
+            with a full step that moves no unknown by more than
             ``1e-8 * sqrt(tol / 1e-13)`` (radians, or lengths over the longest
-            link); it always takes at least one step. A looser ``tol`` (up to
-            1e-2) stops sooner; the positions are then accurate to about
-            ``tol`` divided by the condition measure, and velocity to jerk,
-            solved exactly at the positions found, inherit that error.
+            link), which it takes: the loop residual after it is of order that
+            step squared, below ``tol`` times the longest link (it also stops
+            where the residual is already round-off, as at a singular
+            position). A looser ``tol`` (up to 1e-2) stops sooner; the
+            positions are then accurate to about ``tol`` divided by the
+            condition measure, and velocity to jerk, solved exactly at the
+            positions found, inherit that error.
 
         A scalar theta2 that cannot be assembled or is singular raises
         NotAssemblable / Singular (a NoConvergence carries the residual);

@@ -456,7 +456,7 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
     theta2 = np.asarray(theta2, dtype=float)
     sweep = _Sweep(system, theta2, q0, tol)
     q, status, iterations, message = sweep.run(batch)
-    return q, status, iterations, message, dict(sorted(sweep.notes.items()))
+    return q, status, iterations, message, {int(i): sweep.notes[i] for i in sorted(sweep.notes)}
 
 
 def singular_message(theta2, cond):
