@@ -238,7 +238,7 @@ class _Sweep(Walks):
             q, it, slope, orient = found
         elif leaving and self.sign is not None and trusted:
             t_s, q_c = float(self.state[0]), np.array(self.state[1])
-            if self.flipped(orient):
+            if self.flipped(orient) and t != t_s:
                 found = self.switch(i, t_s, q_c, (np.asarray(q) - q_c) / (t - t_s), t)
                 if found is None:
                     return False
