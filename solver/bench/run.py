@@ -311,13 +311,10 @@ def _thresholds(st):
     from ..kernels import common
     out = {}
     d = stability.threshold_distance(st, "kernels")
-    rule = []
-    if hasattr(common, "MAX_ROUNDOFF"):
-        rule.append(f"estimated round-off > {common.MAX_ROUNDOFF:g}")
-    rule.append(f"condition < {common.SINGULAR_CONDITION:g}")
     if d:
         out["kernels"] = d
-        out["kernels_text"] = ("closed forms refuse below here\n(" + " or ".join(rule) + ")")
+        out["kernels_text"] = ("closed forms refuse below here\n(estimated round-off > "
+                               f"{common.MAX_ROUNDOFF:g})")
     delta = np.asarray(st["delta"])
     cond = np.asarray(st["condition"], dtype=float)
     ok = np.isfinite(cond) & (cond > 0)
