@@ -12,9 +12,10 @@ from matplotlib.testing.compare import compare_images  # noqa: E402
 
 from solver.graphical import construct_case  # noqa: E402
 from solver.graphical import style  # noqa: E402
-from solver.graphical.draw import (diagrams, draw_linkage, draw_polygons, nice,  # noqa: E402
-                                   save)
+from solver.graphical.draw import (diagrams, draw_linkage, draw_polygon,  # noqa: E402
+                                   draw_polygons, nice, save)
 from solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction  # noqa: E402
+from solver.graphical.labels import label_texts, layers  # noqa: E402
 
 BASELINE = os.path.join(os.path.dirname(__file__), "graphical_baseline")
 
@@ -23,7 +24,7 @@ def texts(fig):
     out = []
     for ax in fig.axes:
         out += [t.get_text() for t in ax.texts]
-    return out + [t.get_text() for t in fig.texts]
+    return out + [t.get_text() for t in fig.texts] + label_texts(fig)
 
 
 def test_linkage_figure_has_labelled_components_and_scale_bars():
@@ -31,10 +32,10 @@ def test_linkage_figure_has_labelled_components_and_scale_bars():
     fig = draw_linkage(con)
     t = texts(fig)
     for label in (r"$\mathbf{A}_{A}^{n}$", r"$\mathbf{A}_{A}^{t}$", r"$\mathbf{A}_{B}^{t}$",
-                  r"$\mathbf{A}_{P}$", "$O_2$", "$O_4$", "p", "q"):
+                  r"$\mathbf{A}_{P}$", "$O_{2}$", "$O_{4}$", "p", "q"):
         assert label in t, label
-    assert any(s.startswith("lengths: ") for s in t)
-    assert any(s.startswith("accelerations: ") for s in t)
+    assert "1 in" in t, "an inch linkage has its scale bars in inches"
+    assert any(s.endswith(r"in/s$^2$") for s in t)
     ax = fig.axes[0]
     assert ax.get_aspect() == 1.0  # equal aspect: drawn to scale
     legend = [x.get_text() for x in ax.get_legend().get_texts()]
@@ -46,10 +47,11 @@ def test_polygons_figure_panels_and_labels():
     con = construct_case(EXAMPLE_7_1)
     assert diagrams(con) == ["velocity", "acceleration", "point"]
     fig = draw_polygons(con)
-    assert [ax.get_title() for ax in fig.axes] == ["Velocity polygon", "Acceleration polygon",
-                                                   "Acceleration of P"]
+    assert sorted(ax.get_title() for ax in fig.axes) == ["Acceleration of P",
+                                                         "Acceleration polygon",
+                                                         "Velocity polygon"]
     t = texts(fig)
-    for label in (r"$\mathbf{A}_{BA}^{t}$", r"$\mathbf{A}_{B}^{t}$", r"$-\mathbf{A}_{B}^{n}$",
+    for label in (r"$\mathbf{A}_{BA}^{t}$", r"$\mathbf{A}_{B}^{t}$", r"$\mathbf{A}_{B}^{n}$",
                   r"$\mathbf{A}_{PA}^{n}$", r"$\mathbf{V}_{B}$", "$o_A$", "$o_V$"):
         assert label in t, label
     plt.close(fig)
@@ -58,7 +60,7 @@ def test_polygons_figure_panels_and_labels():
 def test_coriolis_drawn_for_the_inverted_slider_crank():
     con = construction("graphical-invertedslidercrank")
     fig = draw_polygons(con)
-    legend = [x.get_text() for x in fig.axes[-1].get_legend().get_texts()]
+    legend = [x.get_text() for x in fig.legends[0].get_texts()]
     assert "Coriolis" in legend and "slip" in legend
     assert r"$\mathbf{A}_{cor}$" in texts(fig)
     plt.close(fig)
@@ -94,6 +96,88 @@ def test_walk_the_construction_step_by_step():
     plt.close(fig)
     with pytest.raises(ValueError, match="no step '9'"):
         draw_polygons(con, step="9")
+
+
+def _placed(fig):
+    """Every label box placed when ``fig`` was drawn, per layer, with its axes box."""
+    fig.canvas.draw()
+    return [(layer.placed, layer.ax.bbox) for layer in layers(fig)]
+
+
+def _overlap(a, b):
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return w > 0.5 and h > 0.5
+
+
+@pytest.mark.parametrize("name", sorted(GALLERY))
+def test_labels_never_overlap_and_stay_inside(name):
+    """In every figure of the gallery, no two labels share a pixel and every
+    label lies inside its axes, at the size the site shows the figure."""
+    con = construction(name)
+    for maker in (draw_linkage, draw_polygons):
+        fig = maker(con)
+        fig.set_dpi(100)
+        for boxes, frame in _placed(fig):
+            assert boxes
+            for i, a in enumerate(boxes):
+                assert frame.x0 - 1 <= a[0] and a[2] <= frame.x1 + 1, (name, maker.__name__)
+                assert frame.y0 - 1 <= a[1] and a[3] <= frame.y1 + 1, (name, maker.__name__)
+                for b in boxes[i + 1:]:
+                    assert not _overlap(a, b), (name, maker.__name__, a, b)
+        plt.close(fig)
+
+
+def test_tiny_component_is_magnified_in_an_inset():
+    """Example 7-1's A_A^t is a twentieth of A_A^n: the polygon and the linkage
+    show it again in a magnified inset, labelled there."""
+    con = construct_case(EXAMPLE_7_1)
+    fig, ax = plt.subplots()
+    draw_polygon(con, "acceleration", ax=ax)
+    assert len(ax.child_axes) == 1
+    inset = ax.child_axes[0]
+    assert r"$\mathbf{A}_{A}^{t}$" in [lab["text"] for layer in layers(fig)
+                                        if layer.ax is inset for lab in layer.labels]
+    assert any(t.get_text().startswith("\u00d7") for t in inset.texts)  # its factor
+    plt.close(fig)
+    fig = draw_linkage(con)
+    assert fig.axes[0].child_axes
+    plt.close(fig)
+
+
+def test_acceleration_polygon_draws_both_sides_of_eq_7_4_from_the_pole():
+    """A_B is the sum it is: the chain A_B^n + A_B^t and the chain
+    A_A^t + A_A^n + A_BA^n + A_BA^t both end at its tip."""
+    con = construct_case(EXAMPLE_7_1)
+    arrows = {a.name: a for a in con.items("acceleration")[0]}
+    tip = arrows[r"\mathbf{A}_{B}"].tip
+    assert arrows[r"\mathbf{A}_{B}^{n}"].start == 0
+    assert arrows[r"\mathbf{A}_{B}^{t}"].start == arrows[r"\mathbf{A}_{B}^{n}"].tip
+    assert abs(arrows[r"\mathbf{A}_{B}^{t}"].tip - tip) < 1e-12
+    assert abs(arrows[r"\mathbf{A}_{BA}^{t}"].tip - tip) < 1e-12
+    assert abs(arrows[r"\mathbf{A}_{BA}^{n}"].tip - arrows[r"\mathbf{A}_{BA}^{t}"].start) < 1e-12
+
+
+def test_vectors_along_a_link_are_drawn_beside_it():
+    """A_A^n points from A along the crank: it is drawn a few points beside it."""
+    from solver.graphical.draw import _beside
+    con = construct_case(EXAMPLE_7_1)
+    pts = con.linkage.points
+    arrows = [(a.start, a.vector) for a in con.items("linkage")[0]]
+    segs = [(pts[p], pts[q]) for p, q in (("O2", "A"), ("A", "B"), ("O4", "B"))]
+    offsets = _beside(arrows, segs, 0.3)
+    names = [a.name for a in con.items("linkage")[0]]
+    assert abs(offsets[names.index(r"\mathbf{A}_{A}^{n}")]) > 0
+    assert offsets[names.index(r"\mathbf{A}_{A}^{t}")] == 0   # perpendicular: stays put
+
+
+def test_units_follow_the_case():
+    si = construct_case(dict(EXAMPLE_7_1, a="50 mm", b="150 mm", c="230 mm", d="180 mm",
+                             p="75 mm"))
+    assert si.units == "SI" and construct_case(EXAMPLE_7_1).units == "US"
+    fig = draw_linkage(si)
+    assert any(s.endswith("mm") for s in texts(fig))
+    plt.close(fig)
 
 
 def test_nice_scale_numbers():

@@ -65,4 +65,20 @@ def construct_case(case):
         params.setdefault("delta3", 0.0)
     if ci.mechanism == "rotation":
         params.pop("theta1", None)
-    return construct(ci.mechanism, ci.circuit, **params)
+    con = construct(ci.mechanism, ci.circuit, **params)
+    con.units = units_of_case(case)
+    return con
+
+
+#: length units that make a case "US" (its drawings in in, in/s, in/s^2)
+_US_LENGTHS = ("in", "inch", "inches", "ft", "foot", "feet")
+
+
+def units_of_case(case):
+    """``"US"`` if the case gives its lengths in inches or feet, else ``"SI"``."""
+    for key in ("a", "b", "c", "d", "f", "p"):
+        value = case.get(key) if isinstance(case, dict) else None
+        if isinstance(value, str):
+            unit = value.strip().split()[-1].lower() if value.strip() else ""
+            return "US" if unit in _US_LENGTHS else "SI"
+    return "SI"

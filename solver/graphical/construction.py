@@ -94,6 +94,7 @@ class Construction:
     values: dict
     circuit: str = None
     title: str = ""
+    units: str = None  # "US" or "SI": how the case gave its lengths (the drawings follow)
 
     def step(self, label, phase, text):
         s = Step(label, phase, text)

@@ -2,6 +2,20 @@
 the acceleration components at their points (Figure 7-4a/d) and the velocity
 and acceleration polygons (Figure 7-4b/c).
 
+What makes them read like a textbook figure:
+
+* **the linkage's own units**: an inch linkage is drawn and labelled in in, in/s
+  and in/s^2, a metric one in mm, m/s and m/s^2 (``units="US"`` / ``"SI"``,
+  by default the units the case was given in);
+* **every component visible**: a vector too short to see at the figure's scale
+  is shown again in a magnified inset (its factor written in it);
+* **vectors beside the link**, not on it: a vector that lies along a link from
+  its pin (a centripetal component) is drawn a few points to its side;
+* **labels that overlap nothing**: placed when the figure is drawn
+  (:mod:`.labels`), clear of each other, of the links and of the vectors;
+* **scale bars** for lengths and accelerations, and arrowheads of one size
+  in every panel.
+
 ``step=k`` draws what steps 1..k of the construction have added (see
 :class:`~solver.graphical.construction.Construction`), with that step's text
 as the caption, so a notebook can walk through the method.
@@ -13,13 +27,52 @@ import textwrap
 
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
-from matplotlib.patches import Polygon
+from matplotlib.markers import MarkerStyle
+from matplotlib.patches import FancyArrowPatch, Polygon
+from matplotlib.path import Path
+from matplotlib.transforms import Affine2D, ScaledTranslation
 
 from . import style
+from .labels import LabelLayer
 
-DIAGRAM_UNITS = {"velocity": ("m/s", "Velocity polygon"),
-                 "acceleration": (r"m/s$^2$", "Acceleration polygon"),
-                 "point": (r"m/s$^2$", "Acceleration of P")}
+IN = 0.0254  # m per inch
+
+#: display units: name -> (length unit, factor from m), velocity, acceleration
+UNIT_SYSTEMS = {
+    "US": {"length": ("in", 1 / IN), "velocity": ("in/s", 1 / IN),
+           "acceleration": (r"in/s$^2$", 1 / IN)},
+    "SI": {"length": ("mm", 1e3), "velocity": ("m/s", 1.0),
+           "acceleration": (r"m/s$^2$", 1.0)},
+    "SI-m": {"length": ("m", 1.0), "velocity": ("m/s", 1.0),
+             "acceleration": (r"m/s$^2$", 1.0)},
+}
+DIAGRAMS = {"velocity": ("velocity", "Velocity polygon"),
+            "acceleration": ("acceleration", "Acceleration polygon"),
+            "point": ("acceleration", "Acceleration of P")}
+#: a vector shorter than this fraction of its diagram's size gets a magnified inset
+TINY = 0.06
+#: an inset that would magnify less than this is not drawn (the vector is readable as is)
+MIN_MAGNIFICATION = 4
+INSET_WIDTH = 0.34      # of the axes
+#: a vector within this angle [deg] of a link from its own pin is drawn beside the link
+ALONG = 12.0
+BESIDE = 5.5            # how far beside [pt]
+HEAD_LENGTH = 9.0       # arrowhead length [pt]
+_HEAD = Path([(0, 0), (-1, 0.36), (-0.82, 0), (-1, -0.36), (0, 0)],
+             [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY])
+#: the chapter's symbol of each link of each mechanism (for schematic figures)
+LINK_SYMBOLS = {
+    "fourbar": {("O2", "A"): "a", ("A", "B"): "b", ("O4", "B"): "c", ("O2", "O4"): "d",
+                ("A", "P"): "p"},
+    "slidercrank": {("O2", "A"): "a", ("A", "B"): "b"},
+    "invertedslidercrank": {("O2", "A"): "a", ("O4", "B"): "c", ("O2", "O4"): "d"},
+    "fivebar": {("O2", "A"): "a", ("A", "B"): "b", ("C", "B"): "c", ("O5", "C"): "d",
+                ("O2", "O5"): "f"},
+    "rotation": {("O2", "P"): "p"},
+    "slotted": {},
+}
+__all__ = ["draw_linkage", "draw_polygon", "draw_polygons", "save", "diagrams", "nice",
+           "fmt", "units_of", "UNIT_SYSTEMS"]
 
 
 # ---------------------------------------------------------------- helpers
@@ -29,7 +82,7 @@ def nice(x):
         return 1.0
     e = math.floor(math.log10(x))
     for m in (5, 2, 1):
-        if m * 10 ** e <= x:
+        if m * 10 ** e <= x * (1 + 1e-12):
             return m * 10 ** e
     return 10 ** e
 
@@ -40,69 +93,64 @@ def fmt(x):
 
 
 def length_unit(size):
-    """(factor, name) to show lengths of a linkage of this size [m]."""
+    """(factor, name) to show lengths of a metric linkage of this size [m]."""
     return (1e3, "mm") if size < 1.0 else (1.0, "m")
 
 
-class _Labels:
-    """Greedy placement of labels away from each other and from the drawing."""
-
-    def __init__(self, ax, extent):
-        self.ax = ax
-        self.extent = extent
-        self.obstacles = []  # complex points to keep away from
-        self.placed = []
-
-    def avoid_segment(self, z0, z1):
-        n = max(5, min(60, int(40 * abs(z1 - z0) / self.extent) + 2))
-        self.obstacles += [z0 + (z1 - z0) * k / (n - 1) for k in range(n)]
-
-    def _score(self, z, rank, offset):
-        d_obst = min((abs(z - p) for p in self.obstacles), default=offset)
-        d_label = min((abs(z - p) for p in self.placed), default=3 * offset)
-        return min(d_obst, offset) + min(d_label, 3 * offset) - 0.02 * offset * rank
-
-    def place(self, text, candidates, offset=None, **kw):
-        offset = offset or 0.06 * self.extent
-        best = max(enumerate(candidates), key=lambda rc: self._score(rc[1], rc[0], offset))[1]
-        self.placed.append(best)
-        return self.ax.text(best.real, best.imag, text, ha="center", va="center",
-                            fontsize=style.LABEL_SIZE, zorder=10,
-                            bbox=dict(boxstyle="round,pad=0.12", fc="white", ec="none",
-                                      alpha=0.8), **kw)
+def units_of(con, units=None):
+    """The display units of a drawing: ``units`` ("US", "SI", "SI-m") or the
+    construction's own (``con.units``, set from the case by ``construct_case``);
+    a metric linkage a metre or more across is drawn in m instead of mm."""
+    units = units or getattr(con, "units", None) or "SI"
+    if units not in UNIT_SYSTEMS:
+        raise ValueError(f"units must be one of {', '.join(UNIT_SYSTEMS)} (got {units!r})")
+    if units == "SI":
+        pts = list(con.linkage.points.values())
+        size = max((abs(p - q) for p in pts for q in pts), default=0.0)
+        if size >= 1.0:
+            units = "SI-m"
+    return UNIT_SYSTEMS[units]
 
 
-def _arrow(ax, start, vector, kind, head):
-    """Shaft with the kind's line style and a solid arrowhead of size ``head``."""
+def _pts_per_data(ax):
+    """Points of the figure per data unit of ``ax`` as it stands (an estimate:
+    a layout engine may still move the axes a little)."""
+    ax.apply_aspect()
+    bb = ax.get_position()
+    w_pts = bb.width * ax.figure.get_figwidth() * 72.0
+    x0, x1 = ax.get_xlim()
+    return w_pts / abs(x1 - x0)
+
+
+def _offset(ax, off):
+    """ax.transData shifted by ``off`` (complex) points."""
+    if off == 0:
+        return ax.transData
+    return ax.transData + ScaledTranslation(off.real / 72.0, off.imag / 72.0,
+                                            ax.figure.dpi_scale_trans)
+
+
+def _arrow(ax, start, vector, kind, ppd, offset=0j, zorder=6):
+    """A vector from ``start`` (data) in the style of its kind: the shaft in its
+    line style, a solid head of a fixed size in points (smaller on a vector too
+    short for it). ``offset`` [pt] draws it beside where it belongs."""
     st = style.component(kind)
     length = abs(vector)
     if length == 0.0 or not math.isfinite(length):
         return False
-    u = vector / length
-    h = min(head, 0.45 * length)
-    w = 0.38 * h
+    head = min(HEAD_LENGTH * (1.15 if kind == "resultant" else 1.0), 0.55 * length * ppd)
     tip = start + vector
-    base = tip - h * u
-    ax.plot([start.real, base.real], [start.imag, base.imag], color=st["color"],
-            linestyle=st["linestyle"], linewidth=st["linewidth"], zorder=6,
-            solid_capstyle="butt", dash_capstyle="butt")
-    n = 1j * u * w
-    tri = [(tip.real, tip.imag), ((base + n).real, (base + n).imag),
-           ((base - n).real, (base - n).imag)]
-    ax.add_patch(Polygon(tri, closed=True, facecolor=st["color"], edgecolor=st["color"],
-                         linewidth=0.5, zorder=7))
+    trans = _offset(ax, offset)
+    ax.add_patch(FancyArrowPatch((start.real, start.imag), (tip.real, tip.imag),
+                                 arrowstyle="-", shrinkA=0, shrinkB=0.6 * head,
+                                 color=st["color"], linewidth=st["linewidth"],
+                                 linestyle=st["linestyle"], capstyle="butt",
+                                 joinstyle="miter", transform=trans, zorder=zorder))
+    angle = math.degrees(math.atan2(vector.imag, vector.real))
+    ax.plot([tip.real], [tip.imag], linestyle="none", transform=trans, zorder=zorder + 1,
+            marker=MarkerStyle(_HEAD, transform=Affine2D().rotate_deg(angle)),
+            markersize=2 * head, color=st["color"], markeredgewidth=0.4)
     return True
-
-
-def _label_candidates(start, vector, offset):
-    u = vector / abs(vector)
-    n = 1j * u
-    out = []
-    for f in (0.5, 0.35, 0.65, 0.2, 0.8):
-        m = start + f * vector
-        out += [m + offset * n, m - offset * n]
-    out += [start + vector + 1.1 * offset * u]
-    return out
 
 
 def _clip(point, u, box):
@@ -121,23 +169,23 @@ def _clip(point, u, box):
     return point + lo * u, point + hi * u
 
 
-def _construction_line(ax, labels, line, box):
-    u = line.direction / abs(line.direction)
+def _construction_line(ax, labels, point, direction, name, box, letters=True,
+                       obstacles=None):
+    u = direction / abs(direction)
     x0, x1, y0, y1 = box
-    inset = 0.03 * max(x1 - x0, y1 - y0)
-    seg = _clip(line.point, u, (x0 + inset, x1 - inset, y0 + inset, y1 - inset))
+    inset = 0.04 * max(x1 - x0, y1 - y0)
+    seg = _clip(point, u, (x0 + inset, x1 - inset, y0 + inset, y1 - inset))
     if seg is None:
         return
     z0, z1 = seg
+    if obstacles is not None:
+        obstacles.extend(z0 + (z1 - z0) * k / 30 for k in range(31))
     ax.plot([z0.real, z1.real], [z0.imag, z1.imag], zorder=3, **style.CONSTRUCTION_LINE)
-    labels.avoid_segment(z0, z1)
-    if line.name:
-        letter = line.name[0]
+    labels.avoid(z0, z1, weight=0.12, width=1.0)
+    if name and letters:
         for z in (z0, z1):
-            ax.text(z.real, z.imag, letter, fontsize=style.FONT_SIZE, style="italic",
-                    color="#555555", ha="center", va="center", zorder=9,
-                    bbox=dict(boxstyle="circle,pad=0.1", fc="white", ec="none"))
-            labels.placed.append(z)
+            labels.add_fixed(name[0], z, color="#555555", style="italic",
+                             fontsize=style.FONT_SIZE)
 
 
 def _extent(points):
@@ -146,12 +194,13 @@ def _extent(points):
     return min(xs), max(xs), min(ys), max(ys)
 
 
-def _set_limits(ax, points, margin, strip=0.0):
-    """Frame the points with a margin, plus a strip of ``strip`` times the
-    frame's size below it for the scale bars. Returns the drawing's box (without
-    the strip) and the strip's top y."""
-    x0, x1, y0, y1 = _extent(points)
-    box = (x0 - margin, x1 + margin, y0 - margin, y1 + margin)
+def _frame(ax, points, margin, strip=0.0, box=None):
+    """Frame the points (or the given ``box``) with a margin, plus a strip of
+    ``strip`` times the frame's size below it for the scale bars. Returns the
+    drawing's box (without the strip)."""
+    if box is None:
+        x0, x1, y0, y1 = _extent(points)
+        box = (x0 - margin, x1 + margin, y0 - margin, y1 + margin)
     h = strip * max(box[1] - box[0], box[3] - box[2])
     ax.set_xlim(box[0], box[1])
     ax.set_ylim(box[2] - h, box[3])
@@ -160,13 +209,16 @@ def _set_limits(ax, points, margin, strip=0.0):
     return box
 
 
-def _scale_bar(ax, x, y, length_data, text, tick):
+def _scale_bar(ax, labels, x, y, length_data, text, tick):
+    """A bar ``length_data`` long at (x, y) with its value written after it;
+    the labels of the drawing keep clear of both."""
     ax.plot([x, x + length_data], [y, y], color="black", linewidth=2.0, zorder=8,
             solid_capstyle="butt")
     for xx in (x, x + length_data):
-        ax.plot([xx, xx], [y - tick, y + tick], color="black", linewidth=1.5, zorder=8)
-    ax.text(x + length_data / 2, y + 1.5 * tick, text, ha="center", va="bottom",
-            fontsize=style.FONT_SIZE - 1, zorder=8)
+        ax.plot([xx, xx], [y - tick, y + tick], color="black", linewidth=1.3, zorder=8)
+    labels.avoid(complex(x, y), complex(x + length_data, y), width=6.0)
+    labels.add_fixed(text, complex(x + length_data + 1.5 * tick, y), ha="left",
+                     boxed=False, fontsize=style.FONT_SIZE - 1)
 
 
 def _legend(ax, kinds, with_lines, **kw):
@@ -178,8 +230,9 @@ def _legend(ax, kinds, with_lines, **kw):
     if with_lines:
         handles.append(Line2D([], [], label="construction line", **style.CONSTRUCTION_LINE))
     if handles:
-        ax.legend(handles=handles, fontsize=style.FONT_SIZE - 1, frameon=False,
-                  handlelength=3.2, **kw)
+        kw.setdefault("handlelength", 3.0)
+        return ax.legend(handles=handles, fontsize=style.FONT_SIZE - 1, frameon=False, **kw)
+    return None
 
 
 def _caption(fig, con, step):
@@ -191,9 +244,9 @@ def _caption(fig, con, step):
     s = con.steps[step - 1]
     head = (f"Step {s.label}" if s.phase == "acceleration" else
             {"position": "Position", "velocity": f"Velocity {s.label}"}[s.phase])
-    text = textwrap.fill(f"{head} ({step}/{len(con.steps)}): {s.text}", 100)
-    text = _mathtext(text)
-    fig.text(0.5, 0.0, text, ha="center", va="top", fontsize=style.FONT_SIZE)
+    width = max(60, int(fig.get_figwidth() * 12))
+    text = textwrap.fill(f"{head} ({step}/{len(con.steps)}): {s.text}", width)
+    fig.text(0.5, 0.0, _mathtext(text), ha="center", va="top", fontsize=style.FONT_SIZE)
 
 
 _SYMBOL = re.compile(r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?"
@@ -211,11 +264,128 @@ def _mathtext(text):
     return _SYMBOL.sub(sub, text).replace("^2", "$^2$")
 
 
+def _label_colour(kind):
+    return "black" if kind == "resultant" else style.component(kind)["color"]
+
+
+def _pretty(name, names=None):
+    name = (names or {}).get(name, name)
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    return f"${m.group(1)}_{{{m.group(2)}}}$" if m else f"${name}$"
+
+
+# ---------------------------------------------------------------- insets
+def _tiny(vectors, size, ppd=None):
+    """Indices of the vectors (complex, drawn lengths) too short to see: shorter
+    than a fraction of the diagram, or than a few arrowheads on paper (``ppd``:
+    points per data unit)."""
+    short = TINY * size
+    if ppd:
+        short = max(short, 2.4 * HEAD_LENGTH / ppd)
+    return [i for i, v in enumerate(vectors) if 0 < abs(v) < short]
+
+
+def _inset_spot(ax, region, box, obstacles, frac):
+    """Where to put an inset of width ``frac`` (axes fraction): of the corners
+    and edge middles of the drawing box, the one whose rectangle covers the
+    fewest obstacle points and not the magnified region itself. Returns
+    (bounds in axes fraction, number of obstacle points covered)."""
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    w = frac
+    h = frac * (x1 - x0) / (y1 - y0)  # a square region stays square
+    bx0 = (box[0] - x0) / (x1 - x0)
+    bx1 = (box[1] - x0) / (x1 - x0)
+    by0 = (box[2] - y0) / (y1 - y0)
+    by1 = (box[3] - y0) / (y1 - y0)
+    xm, ym = (bx0 + bx1 - w) / 2, (by0 + by1 - h) / 2
+    best = None
+    for cx, cy in ((bx1 - w, by1 - h), (bx0, by1 - h), (bx1 - w, by0), (bx0, by0),
+                   (xm, by1 - h), (bx1 - w, ym), (bx0, ym), (xm, by0)):
+        rx0, rx1 = x0 + cx * (x1 - x0), x0 + (cx + w) * (x1 - x0)
+        ry0, ry1 = y0 + cy * (y1 - y0), y0 + (cy + h) * (y1 - y0)
+        m = 0.05 * (x1 - x0)  # lines running up to its border read as running into it
+        inside = sum(1.0 if rx0 <= z.real <= rx1 and ry0 <= z.imag <= ry1 else 0.1
+                     for z in obstacles
+                     if rx0 - m <= z.real <= rx1 + m and ry0 - m <= z.imag <= ry1 + m)
+        covers = not (region[1] < rx0 or region[0] > rx1 or region[3] < ry0
+                      or region[2] > ry1)
+        cost = inside + (10 ** 6 if covers else 0)
+        if best is None or cost < best[0]:
+            best = (cost, (cx, cy, w, h))
+    return best[1], best[0]
+
+
+def _inset_plan(ax, box, starts, vectors, tiny):
+    """(centre, half side, factor) of the region to magnify around the vectors
+    ``tiny`` (indices), or None when the magnification would be too small to
+    be worth an inset."""
+    if not tiny:
+        return None
+    size = max(box[1] - box[0], box[3] - box[2])
+    ends = [starts[i] for i in tiny] + [starts[i] + vectors[i] for i in tiny]
+    x0, x1, y0, y1 = _extent(ends)
+    centre = complex((x0 + x1) / 2, (y0 + y1) / 2)
+    half = 0.75 * max(x1 - x0, y1 - y0, 0.35 * TINY * size)
+    width_data = INSET_WIDTH * (ax.get_xlim()[1] - ax.get_xlim()[0])
+    factor = nice(width_data / (2 * half))
+    if factor < MIN_MAGNIFICATION:
+        return None
+    return centre, width_data / factor / 2, factor
+
+
+def _magnifier(ax, box, plan, tiny, draw, obstacles):
+    """A magnified inset of the region ``plan`` (see :func:`_inset_plan`) around
+    the vectors ``tiny``. ``draw(inset_ax, labels, region, tiny)`` paints the
+    scene into the inset, labelling the tiny vectors."""
+    centre, half, factor = plan
+    region = (centre.real - half, centre.real + half, centre.imag - half, centre.imag + half)
+    frac = INSET_WIDTH
+    spot, covered = _inset_spot(ax, region, box, obstacles, frac)
+    if covered > 1.5:  # no free corner: make room beside the drawing, on the right
+        xl = ax.get_xlim()
+        ax.set_xlim(xl[0], xl[1] + frac / (1 - frac) * (xl[1] - xl[0]))
+        xl, yl = ax.get_xlim(), ax.get_ylim()
+        h = frac * (xl[1] - xl[0]) / (yl[1] - yl[0])
+        spot = (1 - frac, (box[3] - yl[0]) / (yl[1] - yl[0]) - h, frac, h)
+    inset = ax.inset_axes(spot)
+    inset.set_xlim(region[0], region[1])
+    inset.set_ylim(region[2], region[3])
+    inset.set_aspect("equal", adjustable="box")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    for sp in inset.spines.values():
+        sp.set_edgecolor("#777777")
+        sp.set_linewidth(0.8)
+    inset.patch.set_facecolor("white")
+    inset.patch.set_alpha(0.95)
+    labels = LabelLayer(inset)
+    draw(inset, labels, region, tiny)
+    inset.text(0.04, 0.96, f"\u00d7{factor:g}", transform=inset.transAxes, ha="left",
+               va="top", fontsize=style.FONT_SIZE - 1, color="#555555")
+    rect = Polygon([(region[0], region[2]), (region[1], region[2]), (region[1], region[3]),
+                    (region[0], region[3])], closed=True, fill=False, edgecolor="#777777",
+                   linewidth=0.8, zorder=9)
+    ax.add_patch(rect)
+    # a leader from the magnified region to the inset
+    ix0, iy0, iw, ih = spot
+    fx = ax.get_xlim()
+    fy = ax.get_ylim()
+    inset_centre = complex(fx[0] + (ix0 + iw / 2) * (fx[1] - fx[0]),
+                           fy[0] + (iy0 + ih / 2) * (fy[1] - fy[0]))
+    d = inset_centre - centre
+    if abs(d) > 0:
+        a = centre + d / abs(d) * half * 1.05
+        hw = 0.5 * iw * (fx[1] - fx[0])
+        hh = 0.5 * ih * (fy[1] - fy[0])
+        t = min(hw / abs(d.real) if d.real else math.inf, hh / abs(d.imag) if d.imag else math.inf)
+        b = inset_centre - d * min(t, 1.0)
+        if abs(b - centre) > abs(a - centre):
+            ax.plot([a.real, b.real], [a.imag, b.imag], color="#999999", lw=0.8, zorder=9)
+    return True
+
+
 # ---------------------------------------------------------------- linkage
-def _pretty(name):
-    return {"O2": r"$O_2$", "O4": r"$O_4$", "O5": r"$O_5$"}.get(name, f"${name}$")
-
-
 def _ground(ax, z, size):
     """A pivot's ground symbol: a hatched triangle under the pin."""
     tri = [(z.real, z.imag), (z.real - 0.6 * size, z.imag - size),
@@ -233,7 +403,50 @@ def _block(ax, z, direction, size):
                          facecolor="#e6e6e6", edgecolor="#222222", linewidth=1.2, zorder=4))
 
 
-def draw_linkage(con, step=None, ax=None, scale=None):
+def _on(z, z0, z1, tol):
+    """Whether the point z lies on the segment z0-z1 (within tol)."""
+    d = z1 - z0
+    if abs(d) == 0:
+        return abs(z - z0) <= tol
+    t = ((z - z0) * d.conjugate()).real / abs(d) ** 2
+    return -1e-9 <= t <= 1 + 1e-9 and abs(z - (z0 + t * d)) <= tol
+
+
+def _beside(arrows, segments, size):
+    """For each linkage vector (start, v), an offset [pt] that moves it beside a
+    link (or slide) it would otherwise lie on, and beside another vector along
+    the same line from the same point."""
+    offsets = []
+    taken = {}
+    tol = 1e-9 * size
+    for start, v in arrows:
+        off = 0j
+        if abs(v) > 0:
+            u = v / abs(v)
+            along = False
+            for z0, z1 in segments:
+                d = z1 - z0
+                if abs(d) == 0 or not _on(start, z0, z1, tol):
+                    continue
+                sine = abs((u * (d / abs(d)).conjugate()).imag)
+                probe = start + 0.01 * size * u  # a little way along the vector
+                if sine < math.sin(math.radians(ALONG)) and _on(probe, z0, z1, 0.01 * size):
+                    along = True
+            key = (round(start.real, 9), round(start.imag, 9))
+            same = [w for w in taken.get(key, []) if abs(math.degrees(math.atan2(
+                (w * u.conjugate()).imag, (w * u.conjugate()).real))) < ALONG]
+            if along or same:
+                k = len(same) + (1 if along else 0)
+                side = 1 if k % 2 else -1
+                off = side * 1j * u * BESIDE * ((k + 1) // 2)
+            taken.setdefault(key, []).append(u)
+        offsets.append(off)
+    return offsets
+
+
+def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, legend=True,
+                 title=None, scale_bars=True, vectors=True, symbols=False, names=None,
+                 inset=True, lines=True):
     """The linkage to scale with the acceleration components at their points.
 
     Parameters
@@ -244,8 +457,27 @@ def draw_linkage(con, step=None, ax=None, scale=None):
         a label such as ``"6"`` names a step of Example 7-1.
     ax : matplotlib Axes, optional
     scale : float, optional
-        Drawing scale of the acceleration vectors [m of drawing per m/s^2];
-        by default the longest vector is drawn half as long as the linkage.
+        Drawing scale of the acceleration vectors [length unit of the drawing
+        per acceleration unit of the drawing, e.g. in per in/s^2]; by default
+        the longest vector is drawn about half as long as the linkage. Give
+        one scale (and one ``box``) to draw several positions alike.
+    units : {"US", "SI", "SI-m"}, optional
+        Display units (default: the units of the case, see :func:`units_of`).
+    box : tuple, optional
+        (x0, x1, y0, y1) of the drawing in its length unit: the frame, the
+        same for every figure given it (the scale bars go below it).
+    legend, title, scale_bars : bool or str
+        Parts of the figure to draw (``title`` may be the title's text).
+    vectors : bool
+        False draws the linkage alone (a schematic, with ``symbols``).
+    symbols : bool
+        Label the links with the chapter's symbols (a, b, c, d ...).
+    names : dict, optional
+        New names for points, e.g. ``{"P": "A"}``.
+    inset : bool
+        Magnify vectors too short to see in an inset.
+    lines : bool
+        Draw the construction lines (pp, qq).
 
     Returns
     -------
@@ -253,170 +485,259 @@ def draw_linkage(con, step=None, ax=None, scale=None):
     """
     own = ax is None
     if own:
-        _, ax = plt.subplots(figsize=(8.2, 6.4))
+        _, ax = plt.subplots(figsize=(7.4, 5.6), layout="constrained")
     fig = ax.figure
+    u = units_of(con, units)
+    lname, lf = u["length"]
+    aname, af = u["acceleration"]
     lk = con.linkage
-    pts = lk.points
+    pts = {k: z * lf for k, z in lk.points.items()}
     size = max((abs(p - q) for p in pts.values() for q in pts.values()), default=1.0) or 1.0
-    arrows_all, _, _ = con.items("linkage")
-    arrows, lines, _ = con.items("linkage", step)
+    arrows_all = con.items("linkage")[0] if vectors else []
+    arrows, clines, _ = con.items("linkage", step) if vectors else ([], [], {})
+    if not lines:
+        clines = []
     if scale is None:
-        big = max((abs(a.vector) for a in arrows_all), default=0.0)
-        scale = 0.5 * size / big if big > 0 else 1.0
-    # the frame: the linkage and every vector of the finished drawing (steps line up)
-    xs = list(pts.values())
-    box = _set_limits(ax, xs + [a.start + a.vector * scale for a in arrows_all], 0.14 * size,
-                      strip=0.16 if arrows_all else 0.08)
-    labels = _Labels(ax, size)
+        big = max((abs(a.vector) * af for a in arrows_all), default=0.0)
+        scale = 0.55 * size / big if big > 0 else 1.0
+    drawn = [(a.start * lf, a.vector * af * scale) for a in arrows]
+    every = [(a.start * lf, a.vector * af * scale) for a in arrows_all]
+    box = _frame(ax, list(pts.values()) + [s + v for s, v in every] + [s for s, _ in every],
+                 0.13 * size, strip=(0.15 if arrows_all else 0.09) if scale_bars else 0.0,
+                 box=box)
+    span = max(box[1] - box[0], box[3] - box[2])
+    ppd = _pts_per_data(ax)
+    guides = []
     for link in lk.links:
         zs = [pts[n] for n in link]
-        if len(link) == 3:
-            ax.add_patch(Polygon([(z.real, z.imag) for z in zs], closed=True,
-                                 **style.COUPLER_FILL))
-        else:
-            ax.plot([z.real for z in zs], [z.imag for z in zs], **style.LINK)
-        for z0, z1 in zip(zs, zs[1:] + zs[:1] if len(zs) == 3 else zs[1:]):
-            labels.avoid_segment(z0, z1)
-    for p0, u in lk.slides:
-        u = u / abs(u)
-        ts = [((z - p0) * u.conjugate()).real for z in pts.values()]
-        t0, t1 = min(ts + [0.0]) - 0.15 * size, max(ts + [0.0]) + 0.15 * size
-        za, zb = p0 + t0 * u, p0 + t1 * u
-        ax.plot([za.real, zb.real], [za.imag, zb.imag], color="#222222", linewidth=1.0,
-                linestyle="-.", zorder=1)
-        labels.avoid_segment(za, zb)
-    for p0, u, t0, t1 in lk.rods:
-        u = u / abs(u)
-        za, zb = p0 + t0 * u, p0 + t1 * u
-        ax.plot([za.real, zb.real], [za.imag, zb.imag], color="#4d4d4d", linewidth=2.2,
-                zorder=2)
-        labels.avoid_segment(za, zb)
-    for name, u in lk.blocks:
-        _block(ax, pts[name], u, 0.06 * size)
-    for g in lk.ground:
-        _ground(ax, pts[g], 0.05 * size)
-    ax.scatter([z.real for z in xs], [z.imag for z in xs], **style.PIN)
-    for ln in lines:
-        _construction_line(ax, labels, ln, box)
-    kinds = set()
-    head = 0.04 * size
-    for a in arrows:
-        v = a.vector * scale
-        if _arrow(ax, a.start, v, a.kind, head):
-            kinds.add(a.kind)
-            labels.avoid_segment(a.start, a.start + v)
-    centre = sum(xs) / len(xs)
-    for name, z in pts.items():
-        away = z - centre
-        away = away / abs(away) if abs(away) > 0 else 1j
-        labels.place(_pretty(name), [z + 0.07 * size * away * r for r in
-                                     (1, complex(0.7, 0.7), complex(0.7, -0.7), 1j, -1j, -1)])
-    for a in arrows:
-        v = a.vector * scale
-        if abs(v) > 0:
-            labels.place(f"${a.name}$", _label_candidates(a.start, v, 0.065 * size),
-                         0.065 * size,
-                         color=_label_colour(a.kind))
-    x0, x1, y0, y1 = box
-    span = max(x1 - x0, y1 - y0)
-    f, unit = length_unit(size)
-    L = nice(0.25 * size * f) / f
-    _scale_bar(ax, x0 + 0.02 * span, y0 - 0.05 * span, L, f"lengths: {fmt(L * f)} {unit}",
-               0.008 * span)
-    if arrows_all:
-        Aval = nice(0.25 * size / scale)
-        _scale_bar(ax, x0 + 0.02 * span, y0 - 0.13 * span, Aval * scale,
-                   f"accelerations: {fmt(Aval)} " + r"m/s$^2$", 0.008 * span)
-    ax.set_title(con.title + ": linkage to scale,\naccelerations drawn at their points",
-                 fontsize=style.TITLE_SIZE)
-    _legend(ax, kinds, bool(lines), loc="upper left", bbox_to_anchor=(1.0, 1.0))
+        guides += list(zip(zs, zs[1:] + zs[:1] if len(zs) == 3 else zs[1:]))
+    for p0, d, t0, t1 in lk.rods:  # a slide carried by a link
+        d = d / abs(d)
+        guides.append((p0 * lf + t0 * lf * d, p0 * lf + t1 * lf * d))
+    for p0, d in lk.slides:        # a slide on the ground
+        d = d / abs(d)
+        guides.append((p0 * lf - 10 * size * d, p0 * lf + 10 * size * d))
+    offsets = _beside(drawn, guides, size)
+    obstacles = []
+
+    def paint(target, labels, region=None, tiny=()):
+        """Draw the scene on ``target``; the main axes or a magnifying inset."""
+        main = region is None
+        ppd_t = ppd if main else _pts_per_data(target)
+        for link in lk.links:
+            zs = [pts[n] for n in link]
+            if len(link) == 3:
+                target.add_patch(Polygon([(z.real, z.imag) for z in zs], closed=True,
+                                         **style.COUPLER_FILL))
+                pairs = list(zip(zs, zs[1:] + zs[:1]))
+            else:
+                target.plot([z.real for z in zs], [z.imag for z in zs], **style.LINK)
+                pairs = list(zip(zs, zs[1:]))
+            for z0, z1 in pairs:
+                labels.avoid(z0, z1, width=style.LINK["linewidth"] if len(link) == 2 else 1.2)
+                if main:
+                    obstacles.extend(z0 + (z1 - z0) * k / 40 for k in range(41))
+            if symbols and len(link) == 2:
+                sym = LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(link)) or \
+                    LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(reversed(link)))
+                if sym:
+                    labels.add_vector(f"${sym}$", zs[0], zs[1] - zs[0], color="#333333",
+                                      priority=0.5)
+        for p0, d in lk.slides:
+            d = d / abs(d)
+            ts = [((z - p0 * lf) * d.conjugate()).real for z in pts.values()]
+            t0, t1 = min(ts + [0.0]) - 0.15 * size, max(ts + [0.0]) + 0.15 * size
+            za, zb = p0 * lf + t0 * d, p0 * lf + t1 * d
+            target.plot([za.real, zb.real], [za.imag, zb.imag], color="#222222",
+                        linewidth=1.0, linestyle="-.", zorder=1)
+            labels.avoid(za, zb, weight=0.5, width=1.0)
+        for p0, d, t0, t1 in lk.rods:
+            d = d / abs(d)
+            za, zb = p0 * lf + t0 * lf * d, p0 * lf + t1 * lf * d
+            target.plot([za.real, zb.real], [za.imag, zb.imag], color="#4d4d4d",
+                        linewidth=2.2, zorder=2)
+            labels.avoid(za, zb, width=2.2)
+        for name, d in lk.blocks:
+            _block(target, pts[name], d, 0.06 * size)
+            e = d / abs(d) * 0.06 * size
+            corners = [pts[name] + sx * 0.9 * e + sy * 0.5j * e
+                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            for k in range(4):
+                labels.avoid(corners[k], corners[(k + 1) % 4], width=1.2)
+        for g in lk.ground:
+            _ground(target, pts[g], 0.05 * size)
+            z = pts[g]
+            corners = [z, z + complex(-0.6, -1) * 0.05 * size, z + complex(0.6, -1) * 0.05 * size]
+            for k in range(3):
+                labels.avoid(corners[k], corners[(k + 1) % 3], width=1.0)
+        xs = list(pts.values())
+        target.scatter([z.real for z in xs], [z.imag for z in xs], **style.PIN)
+        for z in xs:
+            labels.avoid_pin(z, 4.0)
+        for ln in clines:
+            _construction_line(target, labels, ln.point * lf, ln.direction, ln.name,
+                               box if main else (region[0], region[1], region[2], region[3]),
+                               letters=main, obstacles=obstacles if main else None)
+        for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+            if _arrow(target, s, v, a.kind, ppd_t, offsets[i]):
+                labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"],
+                             offset=offsets[i])
+                if main:
+                    obstacles.extend(s + v * k / 20 for k in range(21))
+        for name, z in pts.items():
+            if main or (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3]):
+                labels.add_point(_pretty(name, names), z, priority=0)
+        for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+            if abs(v) > 0 and (main != (i in tiny)):
+                labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),
+                                  offset=offsets[i], priority=1 + (0 if a.kind == "resultant"
+                                                                   else 0.5))
+
+    labels = LabelLayer(ax)
+    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
+    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
+    if plan is None:
+        tiny = []
+    paint(ax, labels, None, tiny)
+    if plan:
+        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    kinds = {a.kind for a in arrows}
+    if scale_bars:
+        x0, x1, y0, y1 = box
+        tick = 0.008 * span
+        L = nice(0.22 * size)
+        _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.045 * span, L,
+                   f"{fmt(L)} {lname}", tick)
+        if arrows_all:
+            Aval = nice(0.22 * size / scale)
+            _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.11 * span, Aval * scale,
+                       f"{fmt(Aval)} {aname}", tick)
+    if title is None or title is True:
+        title = (con.title + ": linkage to scale,\naccelerations drawn at their points"
+                 if arrows_all else con.title)
+    if title:
+        ax.set_title(title, fontsize=style.TITLE_SIZE)
+    if legend and (kinds or clines):
+        _legend(ax, kinds, bool(clines), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                ncol=3, borderaxespad=0.2)
     if own:
         _caption(fig, con, step)
     return fig
 
 
-def _label_colour(kind):
-    return "black" if kind == "resultant" else style.component(kind)["color"]
-
-
 # ---------------------------------------------------------------- polygons
 def diagrams(con):
     """The polygon diagrams this construction has, in drawing order."""
-    return [d for d in DIAGRAM_UNITS if con.items(d)[0]]
+    return [d for d in DIAGRAMS if con.items(d)[0]]
 
 
-def draw_polygon(con, diagram, step=None, ax=None):
+def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, legend=None,
+                 title=True, scale_bar=True, box=None, pole=True):
     """One polygon: ``diagram`` is ``"velocity"``, ``"acceleration"`` or
-    ``"point"``. Returns ``(figure, kinds drawn, whether lines were drawn)``."""
+    ``"point"``. ``box`` (x0, x1, y0, y1 in the drawing's unit) fixes the frame,
+    so that several polygons are drawn at one scale. Returns ``(figure, kinds
+    drawn, whether construction lines were drawn)``."""
     own = ax is None
     if own:
-        _, ax = plt.subplots(figsize=(6.5, 6.0))
-    unit, title = DIAGRAM_UNITS[diagram]
-    arrows_all, _, _ = con.items(diagram)
-    arrows, lines, _ = con.items(diagram, step)
-    ends = [0j] + [a.start for a in arrows_all] + [a.tip for a in arrows_all]
+        _, ax = plt.subplots(figsize=(6.4, 5.6), layout="constrained")
+    quantity, default_title = DIAGRAMS[diagram]
+    uname, uf = units_of(con, units)[quantity]
+    arrows_all = con.items(diagram)[0]
+    arrows, clines, _ = con.items(diagram, step)
+    drawn = [(a.start * uf, a.vector * uf) for a in arrows]
+    every = [(a.start * uf, a.vector * uf) for a in arrows_all]
+    ends = [0j] + [s for s, _ in every] + [s + v for s, v in every]
     x0, x1, y0, y1 = _extent(ends)
     size = max(x1 - x0, y1 - y0) or 1.0
-    box = _set_limits(ax, ends, 0.16 * size, strip=0.08)
-    labels = _Labels(ax, size)
-    for ln in lines:
-        _construction_line(ax, labels, ln, box)
-    kinds = set()
-    head = 0.04 * size
-    for a in arrows:
-        if _arrow(ax, a.start, a.vector, a.kind, head):
-            kinds.add(a.kind)
-            labels.avoid_segment(a.start, a.tip)
-    ax.scatter([0.0], [0.0], s=22, color="black", zorder=9)
-    pole = r"$o_V$" if diagram == "velocity" else r"$o_A$"
-    labels.place(pole, [0.06 * size * z for z in (-1 - 1j, 1 - 1j, -1 + 1j, 1 + 1j)])
-    for a in arrows:
-        if abs(a.vector) > 0:
-            labels.place(f"${a.name}$", _label_candidates(a.start, a.vector, 0.07 * size),
-                         0.07 * size,
-                         color=_label_colour(a.kind))
-    bx0, bx1, by0, by1 = box
-    span = max(bx1 - bx0, by1 - by0)
-    L = nice(0.25 * size)
-    _scale_bar(ax, bx0 + 0.02 * span, by0 - 0.05 * span, L, f"{fmt(L)} {unit}", 0.008 * span)
-    ax.set_title(title, fontsize=style.TITLE_SIZE)
+    box = _frame(ax, ends, 0.14 * size, strip=0.12 if scale_bar else 0.0, box=box)
+    span = max(box[1] - box[0], box[3] - box[2])
+    ppd = _pts_per_data(ax)
+    obstacles = []
+
+    def paint(target, labels, region=None, tiny=()):
+        main = region is None
+        ppd_t = ppd if main else _pts_per_data(target)
+        frame = box if main else region
+        for ln in clines:
+            _construction_line(target, labels, ln.point * uf, ln.direction, ln.name, frame,
+                               letters=main, obstacles=obstacles if main else None)
+        for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+            if _arrow(target, s, v, a.kind, ppd_t):
+                labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"])
+                if main:
+                    obstacles.extend(s + v * k / 20 for k in range(21))
+        if pole:
+            target.scatter([0.0], [0.0], s=22, color="black", zorder=9)
+            labels.avoid_pin(0j, 3.0)
+            if main or (region[0] <= 0 <= region[1] and region[2] <= 0 <= region[3]):
+                labels.add_point(r"$o_V$" if diagram == "velocity" else r"$o_A$", 0j,
+                                 priority=0)
+        for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+            if abs(v) > 0 and (main != (i in tiny)):
+                labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),
+                                  priority=1 + (0 if a.kind == "resultant" else 0.5))
+
+    labels = LabelLayer(ax)
+    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
+    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
+    if plan is None:
+        tiny = []
+    paint(ax, labels, None, tiny)
+    if plan:
+        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    kinds = {a.kind for a in arrows}
+    if scale_bar:
+        L = nice(0.22 * size)
+        _scale_bar(ax, labels, box[0] + 0.02 * span, box[2] - 0.07 * span, L,
+                   f"{fmt(L)} {uname}", 0.008 * span)
+    if title:
+        ax.set_title(default_title if title is True else title, fontsize=style.TITLE_SIZE)
+    if legend or (legend is None and own):
+        _legend(ax, kinds, bool(clines), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                ncol=2)
     if own:
-        _legend(ax, kinds, bool(lines), loc="upper left", bbox_to_anchor=(1.0, 1.0))
         _caption(ax.figure, con, step)
-    return ax.figure, kinds, bool(lines)
+    return ax.figure, kinds, bool(clines)
 
 
-def draw_polygons(con, step=None):
-    """Every polygon of the construction side by side, one legend."""
+def draw_polygons(con, step=None, units=None):
+    """Every polygon of the construction in one figure, one legend: the
+    acceleration polygon large, the velocity polygon (and that of the coupler
+    point, if any) beside it."""
     names = diagrams(con)
-    widths = {"velocity": 1.0, "acceleration": 1.3, "point": 0.9}
-    fig, axes = plt.subplots(1, len(names), figsize=(4.6 * sum(widths[n] for n in names) + 2, 6),
-                             gridspec_kw={"width_ratios": [widths[n] for n in names]},
-                             squeeze=False)
+    others = [n for n in names if n != "acceleration"]
+    fig = plt.figure(figsize=(8.2, 6.0), layout="constrained")
+    if "acceleration" in names and others:
+        grid = fig.add_gridspec(len(others), 2, width_ratios=[1.75, 1])
+        axes = {"acceleration": fig.add_subplot(grid[:, 0])}
+        for k, n in enumerate(others):
+            axes[n] = fig.add_subplot(grid[k, 1])
+    else:
+        grid = fig.add_gridspec(1, len(names))
+        axes = {n: fig.add_subplot(grid[0, k]) for k, n in enumerate(names)}
     kinds, anylines = set(), False
-    for name, ax in zip(names, axes[0]):
-        _, k, ln = draw_polygon(con, name, step, ax)
+    for name in names:
+        _, k, ln = draw_polygon(con, name, step, axes[name], units=units)
         kinds |= k
         anylines |= ln
-    _legend(axes[0][-1], kinds, anylines, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    _legend(fig, kinds, anylines, loc="outside lower center", ncol=3)
     fig.suptitle(con.title, fontsize=style.TITLE_SIZE + 1)
     _caption(fig, con, step)
     return fig
 
 
-def save(con, outdir, stem, formats=("png", "svg"), step=None):
+def save(con, outdir, stem, formats=("png", "svg"), step=None, units=None):
     """Write ``{stem}-linkage`` and ``{stem}-polygons`` in each format to
     ``outdir``; returns the list of paths written."""
     import os
     os.makedirs(outdir, exist_ok=True)
     paths = []
     for kind, maker in (("linkage", draw_linkage), ("polygons", draw_polygons)):
-        fig = maker(con, step=step)
-        # the tight frame, measured once for every format (saves a layout pass each)
-        bbox = fig.get_tightbbox(fig.canvas.get_renderer()).padded(0.15)
+        fig = maker(con, step=step, units=units)
         for ext in formats:
             path = os.path.join(outdir, f"{stem}-{kind}.{ext}")
-            fig.savefig(path, dpi=style.DPI, bbox_inches=bbox, metadata=_metadata(ext))
+            fig.savefig(path, dpi=style.DPI, bbox_inches="tight", pad_inches=0.12,
+                        metadata=_metadata(ext))
             paths.append(path)
         plt.close(fig)
     return paths

@@ -143,17 +143,20 @@ def construct(a, b, c, d, theta2, omega2, alpha2, theta1=0.0, circuit="open",
     A_A = A_A_t + A_A_n
     A_B = A_B_t + A_B_n
     st = con.step("6", "acceleration",
-                  "Polygon: A_A^t and A_A^n tip to tail, then A_BA^n, then -A_B^n; a line "
-                  "parallel to qq through its tip and one parallel to pp through the pole "
-                  "meet at the tip of A_B^t.")
+                  "Polygon: from the pole lay the right side of eq. 7.4 tip to tail, A_A^t, "
+                  "A_A^n, A_BA^n, and a line parallel to qq through its tip; from the pole "
+                  "also the known part of the left side, A_B^n, and a line parallel to pp "
+                  "through its tip. The lines cross at the tip of A_B: A_BA^t and A_B^t "
+                  "close the two chains.")
     st.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, A_A_t, "tangential", "acceleration"),
                   Arrow(r"\mathbf{A}_{A}^{n}", A_A_t, A_A_n, "normal", "acceleration"),
                   Arrow(r"\mathbf{A}_{BA}^{n}", A_A, A_BA_n, "normal", "acceleration"),
-                  Arrow(r"-\mathbf{A}_{B}^{n}", A_A + A_BA_n, -A_B_n, "normal", "acceleration")]
-    st.lines += [Line("qq", T, 1j * R_BA, "acceleration"),
-                 Line("pp", 0j, 1j * R_BO4, "acceleration")]
-    st.arrows += [Arrow(r"\mathbf{A}_{B}^{t}", 0j, A_B_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{BA}^{t}", T, A_BA_t, "tangential", "acceleration"),
+                  Arrow(r"\mathbf{A}_{B}^{n}", 0j, A_B_n, "normal", "acceleration")]
+    st.lines += [Line("qq", A_A + A_BA_n, 1j * R_BA, "acceleration"),
+                 Line("pp", A_B_n, 1j * R_BO4, "acceleration")]
+    st.arrows += [Arrow(r"\mathbf{A}_{B}^{t}", A_B_n, A_B_t, "tangential", "acceleration"),
+                  Arrow(r"\mathbf{A}_{BA}^{t}", A_A + A_BA_n, A_BA_t, "tangential",
+                        "acceleration"),
                   Arrow(r"\mathbf{A}_{A}", 0j, A_A, "resultant", "acceleration"),
                   Arrow(r"\mathbf{A}_{B}", 0j, A_B, "resultant", "acceleration")]
     st.marks["acceleration"] = {"pole": 0j}
