@@ -270,6 +270,8 @@ def _label_colour(kind):
 
 def _pretty(name, names=None):
     name = (names or {}).get(name, name)
+    if not name:
+        return None
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     return f"${m.group(1)}_{{{m.group(2)}}}$" if m else f"${name}$"
 
@@ -446,7 +448,7 @@ def _beside(arrows, segments, size):
 
 def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, legend=True,
                  title=None, scale_bars=True, vectors=True, symbols=False, names=None,
-                 inset=True, lines=True):
+                 inset=True, lines=True, notes=None, colour=None):
     """The linkage to scale with the acceleration components at their points.
 
     Parameters
@@ -474,6 +476,11 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         Label the links with the chapter's symbols (a, b, c, d ...).
     names : dict, optional
         New names for points, e.g. ``{"P": "A"}``.
+    notes : dict, optional
+        Text to write beside a point, e.g. ``{"O2": r"$\\omega_2$"}``.
+    colour : str, optional
+        Colour of the links (default: the style's grey), to tell a second
+        position drawn on the same axes from the first.
     inset : bool
         Magnify vectors too short to see in an inset.
     lines : bool
@@ -531,7 +538,8 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
                                          **style.COUPLER_FILL))
                 pairs = list(zip(zs, zs[1:] + zs[:1]))
             else:
-                target.plot([z.real for z in zs], [z.imag for z in zs], **style.LINK)
+                target.plot([z.real for z in zs], [z.imag for z in zs],
+                            **dict(style.LINK, **({"color": colour} if colour else {})))
                 pairs = list(zip(zs, zs[1:]))
             for z0, z1 in pairs:
                 labels.avoid(z0, z1, width=style.LINK["linewidth"] if len(link) == 2 else 1.2)
@@ -585,8 +593,13 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
                 if main:
                     obstacles.extend(s + v * k / 20 for k in range(21))
         for name, z in pts.items():
-            if main or (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3]):
+            if _pretty(name, names) and (main or (region[0] <= z.real <= region[1]
+                                                  and region[2] <= z.imag <= region[3])):
                 labels.add_point(_pretty(name, names), z, priority=0)
+        for name, text in (notes or {}).items():
+            if main and name in pts:
+                labels.add_point(text, pts[name], color="#444444", priority=0.7,
+                                 fontsize=style.FONT_SIZE - 1)
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
             if abs(v) > 0 and (main != (i in tiny)):
                 labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),

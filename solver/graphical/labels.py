@@ -141,7 +141,7 @@ class LabelLayer(Artist):
 
     def _candidates(self, lab, w, h, ppt):
         """(centre [px], leader) candidates in order of preference."""
-        gap = 6.0 * ppt
+        gap = 7.0 * ppt  # clear of a link 4 pt wide, even at 45 degrees
         out = []
         if lab["kind"] == "fixed":
             return [(self._px(lab["z"], 0j, ppt), False)]
