@@ -1,8 +1,29 @@
 """accelab's course: acceleration analysis of planar linkages, one notebook per topic.
 
-The notebooks are kept as jupytext percent-format scripts (``NN_slug.py``) with
-no outputs in git; ``tests/test_course.py`` executes every one of them, and
-``python -m course.build_site`` turns the executed notebooks into the
-self-study site in ``build/site/``. :mod:`course.coursekit` holds the little
-the notebooks share (the ``explore`` control, number formatting, plot style).
+The notebooks are jupytext percent-format scripts (``course/NN_slug.py``, no
+outputs in git), shipped with the package: ``accelab course --out DIR``
+writes them as ``.ipynb`` notebooks (:mod:`course.cli`), and
+:func:`notebooks` lists them. They are clients of the installed packages:
+:mod:`solver` for every number, :mod:`course.kit` for what they share (the
+``explore`` control, number formatting, plot style, :func:`course.kit.stated`),
+:mod:`course.animation` for the mechanisms that move, and
+``exercises.practice`` for self-study problems with instant feedback.
+``errata.md`` lists the misprints of the chapter the course found, and
+``FAMILIES.md`` which notebook teaches each graded exercise family.
 """
+
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+__all__ = ["notebooks", "pages", "HERE"]
+
+
+def notebooks():
+    """The course notebooks' sources, in order: ``course/NN_slug.py``."""
+    return sorted(HERE.glob("[0-9][0-9]_*.py"))
+
+
+def pages():
+    """The course's markdown pages (the errata, the families table)."""
+    return sorted(p for p in HERE.glob("*.md"))

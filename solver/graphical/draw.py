@@ -448,7 +448,7 @@ def _beside(arrows, segments, size):
 
 def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, legend=True,
                  title=None, scale_bars=True, vectors=True, symbols=False, names=None,
-                 inset=True, lines=True, notes=None, colour=None):
+                 inset=True, lines=True, notes=None, colour=None, kinds=None):
     """The linkage to scale with the acceleration components at their points.
 
     Parameters
@@ -481,6 +481,8 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
     colour : str, optional
         Colour of the links (default: the style's grey), to tell a second
         position drawn on the same axes from the first.
+    kinds : sequence of str, optional
+        Draw only the vectors of these kinds (e.g. ``("resultant",)``).
     inset : bool
         Magnify vectors too short to see in an inset.
     lines : bool
@@ -502,6 +504,9 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
     size = max((abs(p - q) for p in pts.values() for q in pts.values()), default=1.0) or 1.0
     arrows_all = con.items("linkage")[0] if vectors else []
     arrows, clines, _ = con.items("linkage", step) if vectors else ([], [], {})
+    if kinds is not None:
+        arrows_all = [a for a in arrows_all if a.kind in kinds]
+        arrows = [a for a in arrows if a.kind in kinds]
     if not lines:
         clines = []
     if scale is None:
@@ -509,6 +514,8 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         scale = 0.55 * size / big if big > 0 else 1.0
     drawn = [(a.start * lf, a.vector * af * scale) for a in arrows]
     every = [(a.start * lf, a.vector * af * scale) for a in arrows_all]
+    # a given frame fixes the scale bars too (the same in every figure drawn in it)
+    bar = size if box is None else 0.6 * max(box[1] - box[0], box[3] - box[2])
     box = _frame(ax, list(pts.values()) + [s + v for s, v in every] + [s for s, _ in every],
                  0.13 * size, strip=(0.15 if arrows_all else 0.09) if scale_bars else 0.0,
                  box=box)
@@ -618,11 +625,11 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
     if scale_bars:
         x0, x1, y0, y1 = box
         tick = 0.008 * span
-        L = nice(0.22 * size)
+        L = nice(0.22 * bar)
         _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.045 * span, L,
                    f"{fmt(L)} {lname}", tick)
         if arrows_all:
-            Aval = nice(0.22 * size / scale)
+            Aval = nice(0.22 * bar / scale)
             _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.11 * span, Aval * scale,
                        f"{fmt(Aval)} {aname}", tick)
     if title is None or title is True:

@@ -1,0 +1,262 @@
+"""Mechanisms that move: the linkage through its cycle with its acceleration
+vectors (drawn by the solver's linkage drawer, :func:`solver.graphical.draw.draw_linkage`),
+and beside it a marker running along the curves of the angular accelerations
+and of the sizes of the accelerations.
+
+>>> from course.animation import animate
+>>> from solver.graphical.gallery import EXAMPLE_7_1
+>>> animate(EXAMPLE_7_1)            # shown in a notebook as an animated GIF
+
+Made with :class:`matplotlib.animation.FuncAnimation` and written as an
+animated GIF (Pillow, which matplotlib already needs): it plays in Jupyter, in
+the site's pages and in a plain browser, with no JavaScript and no ffmpeg. The
+frames are few (36 by default) and small (96 dpi, 710 px wide), so that one animation
+weighs well under a megabyte and takes a few seconds to make.
+
+Every frame is the graphical construction of that position (section 7.2), so
+the vectors drawn are exact, and the curves come from the same constructions
+at every 2 degrees.
+"""
+
+import base64
+import math
+import os
+import tempfile
+
+import numpy as np
+
+from solver.graphical import construct_case
+from solver.graphical import style as _style
+
+__all__ = ["animate", "Animation", "DEFAULTS"]
+
+#: what to plot beside each mechanism: (angular curves, vector magnitudes)
+DEFAULTS = {
+    "fourbar": (("alpha3", "alpha4"), ("A_A", "A_B", "A_P")),
+    "slidercrank": (("alpha3",), ("A_A", "A_B")),
+    "invertedslidercrank": (("alpha4",), ("A_A", "A_B", "A_coriolis")),
+    "fivebar": (("alpha3", "alpha4"), ("A_A", "A_B", "A_C")),
+    "rotation": (("omega2",), ("A_t", "A_n", "A")),
+}
+#: how each name reads on the plots
+SYMBOLS = {"alpha3": r"$\alpha_3$", "alpha4": r"$\alpha_4$", "alpha5": r"$\alpha_5$",
+           "omega2": r"$\omega_2$", "omega3": r"$\omega_3$", "omega4": r"$\omega_4$",
+           "A_A": r"$|\mathbf{A}_A|$", "A_B": r"$|\mathbf{A}_B|$", "A_C": r"$|\mathbf{A}_C|$",
+           "A_P": r"$|\mathbf{A}_P|$", "A_coriolis": r"$|\mathbf{A}_{cor}|$",
+           "A_t": r"$|\mathbf{A}^t|$", "A_n": r"$|\mathbf{A}^n|$", "A": r"$|\mathbf{A}|$"}
+#: the colours of the curves, in order (Okabe-Ito, as the drawings)
+CURVE_COLOURS = ["#000000", _style.OKABE_ITO["vermillion"], _style.OKABE_ITO["blue"],
+                 _style.OKABE_ITO["green"]]
+
+
+class Animation:
+    """An animated GIF that a notebook shows inline (``_repr_html_``).
+
+    Attributes
+    ----------
+    gif : bytes
+        The animation.
+    frames : int
+    width, height : int
+        Its size [px].
+    """
+
+    def __init__(self, gif, frames, width, height, alt):
+        self.gif = gif
+        self.frames = frames
+        self.width = width
+        self.height = height
+        self.alt = alt
+
+    def __len__(self):
+        return len(self.gif)
+
+    def save(self, path):
+        """Write the GIF to ``path``."""
+        with open(path, "wb") as fh:
+            fh.write(self.gif)
+        return path
+
+    def _repr_html_(self):
+        data = base64.b64encode(self.gif).decode("ascii")
+        return (f'<img src="data:image/gif;base64,{data}" alt="{self.alt}" '
+                f'width="{self.width}" style="max-width:100%;height:auto">')
+
+    def __repr__(self):
+        return (f"<Animation: {self.frames} frames, {self.width}x{self.height} px, "
+                f"{len(self.gif) / 1024:.0f} KiB GIF>")
+
+
+def _writer(fps):
+    """matplotlib's PillowWriter, taking each frame from the canvas that the
+    animation has just drawn instead of drawing the figure once more."""
+    from matplotlib.animation import PillowWriter
+    from PIL import Image
+
+    class CanvasGifWriter(PillowWriter):
+        def grab_frame(self, **savefig_kwargs):
+            canvas = self.fig.canvas
+            w, h = canvas.get_width_height(physical=True)
+            self._frames.append(Image.frombuffer("RGBA", (w, h), bytes(canvas.buffer_rgba()),
+                                                 "raw", "RGBA", 0, 1))
+
+    return CanvasGifWriter(fps=fps)
+
+
+def _cycle(case, angles, motion):
+    """The construction of ``case`` at each angle [deg] of ``angles``."""
+    out = []
+    for deg in angles:
+        c = dict(case, theta2=f"{float(deg)!r} deg")
+        if motion is not None:
+            c.update(motion(deg))
+        out.append(construct_case(c))
+    return out
+
+
+def _value(con, name, motion_values):
+    if name in con.values:
+        return con.values[name]
+    return motion_values[name]
+
+
+def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitudes=None,
+            kinds=("resultant",), title=None, fps=10, dpi=96, size=(7.4, 3.5)):
+    """Animate ``case`` (a batch case, CONVENTIONS format) through its cycle.
+
+    Parameters
+    ----------
+    case : dict
+        The mechanism and its input; ``theta2`` is replaced by each angle.
+    frames : int
+        Frames of the animation (spread evenly over ``angles``).
+    angles : (start, stop), optional
+        The input angles of the cycle [deg] (default 0 to 360; a geared
+        fivebar whose ratio is not a whole number needs more).
+    motion : callable, optional
+        ``motion(theta2_deg) -> dict`` of case entries that change with the
+        angle (e.g. ``{"omega2": "12 rad/s"}`` for a crank speeding up); the
+        values it returns are plotted when named in ``curves``.
+    curves, magnitudes : sequence of str, optional
+        Construction values to plot beside the linkage: angular ones
+        (``alpha3`` ...) on top, vectors by their size (``A_B`` ...) below.
+        Defaults per mechanism in :data:`DEFAULTS`.
+    kinds : sequence of str
+        Which vectors to draw on the linkage (``"resultant"``, ``"normal"``,
+        ``"tangential"``, ``"coriolis"``, ``"slip"``).
+    title : str, optional
+    fps, dpi, size :
+        Frames per second, resolution and figure size [in].
+
+    Returns
+    -------
+    Animation
+    """
+    import matplotlib
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FuncAnimation
+
+    from solver.graphical.draw import draw_linkage, units_of
+
+    start, stop = angles or (0.0, 360.0)
+    fine = np.linspace(start, stop, int(round(abs(stop - start) / 2.0)) + 1)
+    motion_values = [dict(motion(d)) if motion else {} for d in fine]
+    cons = _cycle(case, fine, motion)
+    mech = cons[0].mechanism
+    default_curves, default_mags = DEFAULTS.get(mech, ((), ()))
+    curves = list(curves if curves is not None else default_curves)
+    magnitudes = [m for m in (magnitudes if magnitudes is not None else default_mags)
+                  if m in cons[0].values]
+    units = units_of(cons[0])
+    lname, lf = units["length"]
+    aname, af = units["acceleration"]
+
+    def series(name):
+        vals = []
+        for con, mv in zip(cons, motion_values):
+            v = _value(con, name, mv)
+            if isinstance(v, str):
+                from solver.units import Q_
+                v = Q_(v).to_base_units().magnitude
+            vals.append(v)
+        return np.array(vals)
+
+    curve_data = {n: series(n) for n in curves}
+    mag_data = {n: np.abs(series(n)) * af for n in magnitudes}
+
+    # one frame and one vector scale for every position
+    vecs = [(a.start * lf, a.vector * af) for con in cons
+            for a in con.items("linkage")[0] if a.kind in kinds]
+    big = max((abs(v) for _, v in vecs), default=0.0)
+    pts = [z * lf for con in cons for z in con.linkage.points.values()]
+    size_l = max(max(z.real for z in pts) - min(z.real for z in pts),
+                 max(z.imag for z in pts) - min(z.imag for z in pts))
+    scale = 0.45 * size_l / big if big > 0 else 1.0
+    ends = pts + [s + v * scale for s, v in vecs]
+    m = 0.06 * size_l
+    box = (min(z.real for z in ends) - m, max(z.real for z in ends) + m,
+           min(z.imag for z in ends) - m, max(z.imag for z in ends) + m)
+
+    with matplotlib.rc_context({"figure.dpi": dpi, "font.size": 9,
+                                "axes.titlesize": 10, "axes.labelsize": 9,
+                                "legend.fontsize": 8, "xtick.labelsize": 8,
+                                "ytick.labelsize": 8}):
+        fig = plt.figure(figsize=size, dpi=dpi, layout="constrained")
+        grid = fig.add_gridspec(2, 2, width_ratios=[1.3, 1])
+        ax_l = fig.add_subplot(grid[:, 0])
+        ax_c = fig.add_subplot(grid[0, 1])
+        ax_m = fig.add_subplot(grid[1, 1], sharex=ax_c)
+        markers = []
+        for ax, data, unit in ((ax_c, curve_data, None), (ax_m, mag_data, aname)):
+            for k, (name, y) in enumerate(data.items()):
+                colour = CURVE_COLOURS[k % len(CURVE_COLOURS)]
+                ax.plot(fine, y, color=colour, lw=1.5, label=SYMBOLS.get(name, name))
+                markers.append((ax.plot([], [], "o", color=colour, ms=6, zorder=5)[0], y))
+            if data:
+                ax.legend(loc="upper right", ncol=len(data), frameon=False,
+                          borderaxespad=0.1, handlelength=1.4, columnspacing=0.8)
+                lo = min(np.nanmin(y) for y in data.values())
+                hi = max(np.nanmax(y) for y in data.values())
+                pad = 0.3 * (hi - lo or 1.0)
+                ax.set_ylim(lo - 0.08 * pad, hi + pad)
+            ax.grid(alpha=0.3)
+            ax.spines[["top", "right"]].set_visible(False)
+        first = next(iter(curve_data), "")
+        ax_c.set_ylabel("rad/s" if first.startswith("omega") else r"rad/s$^2$")
+        ax_m.set_ylabel(aname)
+        ax_m.set_xlabel(r"$\theta_2$ [deg]")
+        ax_m.set_xlim(start, stop)
+        step = 90 if abs(stop - start) <= 360 else 180
+        ax_m.set_xticks(np.arange(start, stop + 1, step))
+        plt.setp(ax_c.get_xticklabels(), visible=False)
+        cursors = [ax.axvline(start, color="#999999", lw=0.8) for ax in (ax_c, ax_m)]
+        picks = np.linspace(0, len(fine) - 1, frames + 1)[:-1].round().astype(int) \
+            if math.isclose((stop - start) % 360, 0) else \
+            np.linspace(0, len(fine) - 1, frames).round().astype(int)
+        heading = title or cons[0].title
+
+        def frame(k):
+            i = picks[k]
+            ax_l.clear()
+            draw_linkage(cons[i], ax=ax_l, scale=scale, box=box, kinds=kinds, lines=False,
+                         inset=False, legend=False, scale_bars=True,
+                         title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$")
+            for mk, y in markers:
+                mk.set_data([fine[i]], [y[i]])
+            for c in cursors:
+                c.set_xdata([fine[i], fine[i]])
+            return []
+
+        frame(0)
+        fig.canvas.draw()                  # lay the figure out once ...
+        fig.set_layout_engine("none")      # ... and keep it for every frame
+        anim = FuncAnimation(fig, frame, frames=frames, interval=1000 / fps, blit=False)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "animation.gif")
+            anim.save(path, writer=_writer(fps), dpi="figure")
+            with open(path, "rb") as fh:
+                gif = fh.read()
+        width, height = (int(round(x)) for x in fig.get_size_inches() * dpi)
+        plt.close(fig)
+    return Animation(gif, frames, width, height,
+                     alt=f"{heading} through its cycle, with its accelerations")

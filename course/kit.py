@@ -1,0 +1,337 @@
+"""What the course notebooks share: the ``explore`` control, number formatting,
+one plotting style, and :func:`stated`, which ties a number the prose states
+to the value the notebook computes.
+
+``explore(draw, theta2=(0, 360, 5, 30), omega2=(...))`` shows sliders in a live
+Jupyter session. Executed headless (the tests and the site build set
+``ACCELAB_STATIC=1``) it draws the same figure at a few values of the first
+slider instead, side by side, so a printed or static page still shows what
+moving the slider teaches.
+
+>>> from course.kit import explore
+>>> def draw(theta2, omega2):
+...     fig, ax = plt.subplots()
+...     ...                       # one figure for these values
+...     return fig
+>>> explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(-20, 20, 1, 10, "rad/s"))
+"""
+
+import io
+import math
+import os
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from solver import Q_
+from solver.graphical import style as _style
+
+#: colours of the vector kinds, as the graphical constructions draw them
+COLORS = {kind: spec["color"] for kind, spec in _style.COMPONENT.items()}
+#: line styles of the vector kinds (they also read in greyscale)
+LINESTYLES = {kind: spec["linestyle"] for kind, spec in _style.COMPONENT.items()}
+#: a neutral grey for links, and the two circuits of a fourbar
+LINK_COLOR = "#4d4d4d"
+CIRCUIT_COLORS = {"open": _style.OKABE_ITO["blue"], "crossed": _style.OKABE_ITO["vermillion"]}
+
+#: standard gravity: the g in "accelerations in g" (pint's ``g`` is the gram)
+G0 = Q_(1, "standard_gravity")
+
+#: panels of the static figure when the first slider's values are not given
+STATIC_FRAMES = 4
+_STATIC_DPI = 100
+#: widest static figure [px]: two panels of a page's width (about 750 px) side by side
+STATIC_WIDTH = 900
+
+__all__ = ["COLORS", "LINESTYLES", "LINK_COLOR", "CIRCUIT_COLORS", "G0", "use_style",
+           "is_static", "static_values", "small_multiples", "explore", "cartesian", "polar",
+           "in_g", "vector", "stated", "measure"]
+
+
+def use_style():
+    """Matplotlib settings every notebook starts with: readable at page width."""
+    plt.rcParams.update({
+        "figure.figsize": (6.4, 4.0), "figure.dpi": _STATIC_DPI, "savefig.dpi": _STATIC_DPI,
+        "font.size": 11, "axes.titlesize": 12, "axes.labelsize": 11, "legend.fontsize": 10,
+        "axes.grid": True, "grid.alpha": 0.3, "axes.spines.top": False,
+        "axes.spines.right": False, "figure.constrained_layout.use": True,
+    })
+
+
+def is_static():
+    """True when sliders cannot be shown: executed headless (``ACCELAB_STATIC``
+    set to anything but ``0``), no ipywidgets, or not inside a Jupyter kernel."""
+    if os.environ.get("ACCELAB_STATIC", "0") not in ("", "0"):
+        return True
+    try:
+        import ipywidgets  # noqa: F401
+        from IPython import get_ipython
+    except ImportError:
+        return True
+    shell = get_ipython()
+    return shell is None or not hasattr(shell, "kernel")
+
+
+def _parse(name, spec):
+    if not isinstance(spec, (tuple, list)) or len(spec) not in (4, 5):
+        raise ValueError(f"explore: {name} must be (min, max, step, default) or "
+                         f"(min, max, step, default, unit), e.g. {name}=(0, 360, 5, 30, 'deg'); "
+                         f"got {spec!r}")
+    lo, hi, step, default = spec[:4]
+    unit = spec[4] if len(spec) == 5 else ""
+    if not lo <= default <= hi or step <= 0:
+        raise ValueError(f"explore: {name} needs min <= default <= max and step > 0 "
+                         f"(got {spec!r})")
+    return lo, hi, step, default, unit
+
+
+def static_values(lo, hi, step, frames=STATIC_FRAMES):
+    """``frames`` values from lo to hi on the slider's step grid. A slider over a
+    whole turn (its ends 360 apart) skips the end that repeats the start."""
+    periodic = math.isclose(hi - lo, 360.0)
+    n = frames if periodic else frames - 1
+    span = (hi - lo) * (frames - 1) / n if periodic else hi - lo
+    raw = lo + span * np.arange(frames) / max(frames - 1, 1)
+    snapped = lo + np.round((raw - lo) / step) * step
+    return [float(v) if not float(v).is_integer() else int(v) for v in snapped]
+
+
+def _label(name, value, unit):
+    unit = unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
+    if unit and name.strip().lower() == unit.strip().lower():  # "rpm = 6 rpm" reads "6 rpm"
+        return f"{value:g} {unit}"
+    return f"{name} = {value:g} {unit}".strip()
+
+
+def _render(fig):
+    """The figure as an RGBA array at its own pixel size."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=_STATIC_DPI, facecolor="white")
+    buf.seek(0)
+    return plt.imread(buf)
+
+
+def _figure_of(result):
+    if result is None:
+        return plt.gcf()
+    if hasattr(result, "savefig"):
+        return result
+    if hasattr(result, "figure"):  # an Axes
+        return result.figure
+    raise TypeError("explore: draw() must return a matplotlib Figure (or an Axes, or None "
+                    f"after drawing on the current figure); it returned {type(result).__name__}")
+
+
+def small_multiples(draw, name, values, fixed, unit="", columns=None, units=None):
+    """One figure: ``draw(name=v, **fixed)`` for each v in ``values``, side by
+    side, each panel at its own resolution and titled with its value."""
+    images = []
+    for v in values:
+        fig = _figure_of(draw(**{name: v}, **fixed))
+        images.append(_render(fig))
+        plt.close(fig)
+    h = max(im.shape[0] for im in images)
+    w = max(im.shape[1] for im in images)
+    if columns is None:  # STATIC_WIDTH px wide at most, rows as full as possible
+        fit = max(1, min(len(images), STATIC_WIDTH // w))
+        columns = math.ceil(len(images) / math.ceil(len(images) / fit))
+    rows = math.ceil(len(images) / columns)
+    band = 30  # px for each panel's caption
+    head = 34
+    W, H = columns * w, rows * (h + band) + head
+    fig = plt.figure(figsize=(W / _STATIC_DPI, H / _STATIC_DPI), dpi=_STATIC_DPI,
+                     layout="none")
+    units = units or {}
+    others = ", ".join(_label(k, v, units.get(k, "")) for k, v in fixed.items())
+    fig.text(0.5, 1 - 17 / H, f"Moving {name}" + (f" (with {others})" if others else "")
+             + ": in a live notebook this is a slider", ha="center", va="center",
+             fontsize=12, color="#333333")
+    for i, im in enumerate(images):
+        r, c = divmod(i, columns)
+        x0 = c * w + (w - im.shape[1]) / 2
+        y_top = head + r * (h + band)
+        fig.text((c * w + w / 2) / W, 1 - (y_top + band / 2) / H,
+                 _label(name, values[i], unit), ha="center", va="center", fontsize=12,
+                 fontweight="bold")
+        y0 = y_top + band
+        ax = fig.add_axes([x0 / W, 1 - (y0 + im.shape[0]) / H, im.shape[1] / W,
+                           im.shape[0] / H])
+        ax.imshow(im, interpolation="none")
+        ax.set_axis_off()
+    return fig
+
+
+def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders):
+    """Sliders for ``draw`` in a live notebook; a static small-multiples figure
+    when executed headless.
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(**values)`` makes one figure (return the Figure) for one value
+        of every slider.
+    frames : int
+        Panels of the static figure (values of the first slider, from its
+        min to its max on its step grid; a full-turn slider skips 360).
+    values : sequence, optional
+        The first slider's values for the static figure, instead of ``frames``.
+    columns : int, optional
+        Panels per row of the static figure (default: as many as fit).
+    **sliders : tuple
+        ``name=(min, max, step, default)`` or ``(min, max, step, default, unit)``
+        for each argument of ``draw``; the first one is the static figure's
+        variable, the others stay at their defaults there.
+    """
+    if not sliders:
+        raise ValueError("explore needs at least one slider, e.g. theta2=(0, 360, 5, 30)")
+    specs = {k: _parse(k, v) for k, v in sliders.items()}
+    if is_static():
+        name, (lo, hi, step, default, unit) = next(iter(specs.items()))
+        fixed = {k: s[3] for k, s in list(specs.items())[1:]}
+        vals = list(values) if values is not None else static_values(lo, hi, step, frames)
+        fig = small_multiples(draw, name, vals, fixed, unit, columns,
+                              units={k: s[4] for k, s in specs.items()})
+        _show(fig)
+        return None
+    import ipywidgets as widgets
+    from IPython.display import display
+
+    controls = {}
+    for k, (lo, hi, step, default, unit) in specs.items():
+        kind = widgets.IntSlider if all(float(x).is_integer() for x in (lo, hi, step, default)) \
+            else widgets.FloatSlider
+        controls[k] = kind(min=lo, max=hi, step=step, value=default,
+                           description=f"{k} [{unit}]" if unit else k,
+                           continuous_update=False, style={"description_width": "initial"},
+                           layout=widgets.Layout(width="420px"))
+
+    def update(**kw):
+        fig = _figure_of(draw(**kw))
+        _show(fig)
+
+    display(widgets.interactive(update, **controls))
+    return None
+
+
+def _show(fig):
+    try:
+        from IPython import get_ipython
+        from IPython.display import display
+    except ImportError:  # plain Python: nothing to show on
+        plt.close(fig)
+        return
+    if get_ipython() is not None:
+        display(fig)
+    plt.close(fig)
+
+
+# ---------------------------------------------------------------- numbers
+def _parts(z, unit=None):
+    """(x, y, magnitude, angle in deg, unit text) of a complex Quantity or number."""
+    if hasattr(z, "to") and unit:
+        z = z.to(unit)
+    if hasattr(z, "magnitude"):
+        mag, u = complex(z.magnitude), f"{z.units:~P}"
+    else:
+        mag, u = complex(z), unit or ""
+    return mag.real, mag.imag, abs(mag), math.degrees(math.atan2(mag.imag, mag.real)), u
+
+
+def cartesian(z, unit=None, digits=4):
+    """``x + j y unit`` of a vector given as a complex Quantity (or number)."""
+    x, y, _, _, u = _parts(z, unit)
+    sign = "+" if y >= 0 else "-"
+    return f"({x:.{digits}g} {sign} j{abs(y):.{digits}g}) {u}".rstrip()
+
+
+def polar(z, unit=None, digits=4):
+    """``r @ angle deg`` of a vector: its magnitude and its angle from +x."""
+    _, _, r, ang, u = _parts(z, unit)
+    return f"{r:.{digits}g} {u} at {ang:.{digits}g} deg".replace("  ", " ")
+
+
+def in_g(a):
+    """A (real) acceleration Quantity, or the magnitude of a vector one, in g."""
+    if np.iscomplexobj(getattr(a, "magnitude", a)):
+        a = abs(a)
+    return (a / G0).to("dimensionless").magnitude
+
+
+def stated(value, text, unit=None, sig=None):
+    """Assert that ``value`` is what the prose says, ``text`` as printed there
+    (``"37"``, ``"-23.47"``, ``"2,100"``, ``"1.5e-6"``): equal to within half
+    a unit of its last written digit, or of its ``sig``-th significant digit
+    when the prose rounds ("about 2100 g" is ``stated(x, "2100", sig=2)``).
+    ``value`` may be a Quantity (then give the ``unit`` the prose uses).
+    Returns ``value``, so that a cell can both check and print it.
+
+    >>> stated(36.96, "37")
+    36.96
+    """
+    v = value.to(unit).magnitude if unit is not None else getattr(value, "magnitude", value)
+    t = text.replace(",", "").replace("\u2009", "").replace(" ", "").replace("\u2212", "-")
+    mant = t.lower().split("e")[0]
+    exp = int(t.lower().split("e")[1]) if "e" in t.lower() else 0
+    decimals = len(mant.split(".")[1]) if "." in mant else 0
+    half = 0.5 * 10.0 ** (exp - decimals)
+    target = float(t)
+    if sig is not None and target != 0:
+        half = 0.5 * 10.0 ** (math.floor(math.log10(abs(target))) - sig + 1)
+    if not abs(float(v) - target) <= half * (1 + 1e-9):
+        raise AssertionError(f"the prose says {text}{' ' + unit if unit else ''} but the "
+                             f"notebook computes {float(v):.6g}: update the prose")
+    return value
+
+
+def measure(functions, repeats=5, min_time=0.01):
+    """Median wall-clock time [s] of each of ``functions`` (no arguments):
+    one warm-up call each, then ``repeats`` rounds in which every function is
+    timed in turn (each run as many times as fill ``min_time``), so that a
+    busy machine slows them all alike."""
+    import time
+    functions = list(functions)
+    for f in functions:
+        f()
+    loops = []
+    for f in functions:
+        n, t = 1, 0.0
+        while True:
+            t0 = time.perf_counter()
+            for _ in range(n):
+                f()
+            t = time.perf_counter() - t0
+            if t >= min_time or n >= 1 << 20:
+                break
+            n *= 2
+        loops.append(n)
+    samples = [[] for _ in functions]
+    for _ in range(repeats):
+        for k, f in enumerate(functions):
+            t0 = time.perf_counter()
+            for _ in range(loops[k]):
+                f()
+            samples[k].append((time.perf_counter() - t0) / loops[k])
+    return [float(np.median(s)) for s in samples]
+
+
+# ---------------------------------------------------------------- drawing
+def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, offset=11, **text):
+    """Draw ``vec`` (complex) as an arrow from ``start`` (complex, drawing units)
+    in the colour and line style of its kind; the arrow is ``scale * vec`` long.
+    ``label`` goes beside the arrow, ``offset`` points to its left (negative:
+    to its right). Returns the tip."""
+    spec = _style.COMPONENT[kind]
+    tip = start + scale * vec
+    ax.annotate("", xy=(tip.real, tip.imag), xytext=(start.real, start.imag),
+                annotation_clip=False, zorder=spec.get("zorder", 4),
+                arrowprops=dict(arrowstyle="-|>,head_length=0.7,head_width=0.3",
+                                color=spec["color"], lw=spec["linewidth"],
+                                linestyle=spec["linestyle"], shrinkA=0, shrinkB=0))
+    if label and vec != 0:
+        mid = start + 0.55 * scale * vec
+        u = 1j * vec / abs(vec)
+        ax.annotate(label, (mid.real, mid.imag), xytext=(offset * u.real, offset * u.imag),
+                    textcoords="offset points", color=spec["color"], ha="center",
+                    va="center", fontsize=text.pop("fontsize", 12), annotation_clip=False,
+                    **text)
+    return tip
