@@ -16,7 +16,9 @@
 #
 # Every linkage analysis in this course starts from one small fact: how a point on a link
 # that turns about a fixed pivot accelerates. This notebook builds that fact, then uses it to
-# separate the two situations in which we subtract one acceleration from another.
+# separate the two situations in which we subtract one acceleration from another. It follows
+# section 7.1 of the chapter this course is built on: Robert L. Norton, *Design of Machinery*,
+# chapter 7, "Acceleration Analysis" (eqs. 7.1 to 7.6, Figures 7-1 to 7-3, problem 7-1).
 #
 # **You will be able to**
 #
@@ -29,11 +31,16 @@
 # - work problem 7-1 by hand, in inches and in metres, and check it with `solver`.
 
 # %%
+# %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, cartesian, explore, in_g, polar, use_style, vector
+from course.animation import animate
+from course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style, vector
+from exercises.practice import practice
 from solver import Q_, RotatingPoint
+from solver.graphical import construct_case
+from solver.graphical.draw import draw_linkage
 
 use_style()
 
@@ -87,42 +94,34 @@ assert np.isclose(by_hand, r.A.to("m/s^2").magnitude, rtol=1e-12)
 print("A_t =", cartesian(r.A_t, "in/s^2"), "=", polar(r.A_t, "in/s^2"))
 print("A_n =", cartesian(r.A_n, "in/s^2"), "=", polar(r.A_n, "in/s^2"))
 print("A   =", cartesian(r.A, "in/s^2"), "=", polar(r.A, "in/s^2"))
+angle = {k: float(np.angle(getattr(r, k).to("in/s^2").magnitude, deg=True)) for k in ("A_t", "A_n")}
+stated(angle["A_n"], "-150"), stated(angle["A_t"], "120");
 
 # %% [markdown]
 # The normal part points at $-150^\circ$ (that is, $210^\circ$), exactly opposite the radius at $30^\circ$; the
 # tangential part at $120^\circ$, a quarter turn counter-clockwise from the radius because
 # $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
-# vectors drawn at the point they belong to:
+# vectors drawn at the point they belong to (the chapter's Figure 7-1):
 
 # %%
-def draw_link(ax, r, scale, title=None, legend=True):
-    """The link O-P and the acceleration components of P, arrows scaled by `scale`."""
-    R = complex(r.R.to("in").magnitude)
-    ax.plot([0, R.real], [0, R.imag], color="#4d4d4d", lw=4, solid_capstyle="round", zorder=2)
-    ax.scatter([0, R.real], [0, R.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
-    ax.annotate("O", (0, 0), xytext=(-14, -12), textcoords="offset points")
-    ax.annotate("P", (R.real, R.imag), xytext=(6, 6), textcoords="offset points")
-    for name, kind, label in (("A_t", "tangential", r"$\mathbf{A}^t$"),
-                              ("A_n", "normal", r"$\mathbf{A}^n$"),
-                              ("A", "resultant", r"$\mathbf{A}$")):
-        vector(ax, R, complex(getattr(r, name).to("in/s^2").magnitude), kind, label, scale)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x [in]")
-    ax.set_ylabel("y [in]")
-    if title:
-        ax.set_title(title)
-    if legend:
-        handles = [plt.Line2D([], [], color=COLORS[k], lw=2, label=k)
-                   for k in ("tangential", "normal", "resultant")]
-        ax.legend(handles=handles, loc="lower right", fontsize=9)
+def rotating(p, theta2, omega2, alpha2):
+    """The graphical construction of a point on a link turning about a fixed pivot
+    (section 7.1), as the solver's drawings take it: inputs as quantity strings."""
+    return construct_case({"mechanism": "rotation", "p": p, "theta2": theta2,
+                           "omega2": omega2, "alpha2": alpha2})
 
 
-fig, ax = plt.subplots(figsize=(5.5, 4.5))
-draw_link(ax, r, scale=4.0 / 2000, title="4 in link, $\\omega$ = -20 rad/s, $\\alpha$ = 150 rad/s$^2$")
-ax.set_xlim(-1.5, 6)
-ax.set_ylim(-1.5, 4.5)
-ax.text(-1.3, 4.1, "arrows: 1 in = 500 in/s$^2$", fontsize=9, color="#555555")
+fig, ax = plt.subplots(figsize=(6.4, 4.6))
+draw_linkage(rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"), ax=ax,
+             names={"O2": "O"}, title="4 in link, $\\omega$ = -20 rad/s, "
+             "$\\alpha$ = 150 rad/s$^2$")
 plt.show()
+
+# %% [markdown]
+# The drawing is the solver's (`solver.graphical`), as every linkage drawing of the course:
+# the link to scale, the acceleration components at the point they belong to, and a scale bar
+# for each (inches for the link, in/s$^2$ for the arrows). The normal part lies along the link,
+# so it is drawn just beside it.
 
 # %% [markdown]
 # ### Two cases of one equation
@@ -167,6 +166,11 @@ omega_B = omega_A + alpha_7_1 * t
 theta_B = (theta_A + omega_A * t + 0.5 * alpha_7_1 * t**2).to("deg")
 print(f"omega_B = {omega_B:.4g~P},  theta_B = {theta_B:.5g~P}")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+turned = theta_B - theta_A
+stated(turned.to("rad"), "0.975", "rad"), stated(turned, "55.86", "deg")
+stated(omega_A - omega_B, "5", "rad/s");
+
 # %% [markdown]
 # The point turned $0.975$ rad ($55.86^\circ$) in those 10 ms and slowed by 5 rad/s.
 #
@@ -180,6 +184,7 @@ print(f"omega_B = {omega_B:.4g~P},  theta_B = {theta_B:.5g~P}")
 # The solver gives both points and the cartesian form:
 
 # %%
+stated(6.5 * -500, "-3250"), stated(6.5 * 100**2, "65000")
 pt = RotatingPoint(p="6.5 in")
 at_A = pt.solve(theta2=theta_A, omega2=omega_A, alpha2=alpha_7_1)
 at_B = pt.solve(theta2=theta_B, omega2=omega_B, alpha2=alpha_7_1)
@@ -191,6 +196,9 @@ for name, res in (("A", at_A), ("B", at_B)):
     print(f"   A   = {cartesian(res.A, 'in/s^2')} = {polar(res.A, 'in/s^2')}")
     print(f"       = {cartesian(res.A, 'm/s^2')} = {polar(res.A, 'm/s^2')}"
           f"  ({in_g(res.A):.0f} g)")
+stated(np.angle(at_A.A_t.magnitude, deg=True), "-45")
+stated(abs(at_A.A_n), "65000", "in/s^2"), stated(abs(at_B.A_n), "58660", "in/s^2", sig=4)
+stated(abs(at_A.A), "1650", "m/s^2", sig=2), stated(in_g(at_A.A), "170", sig=2);
 
 # %% [markdown]
 # Each tangential part points $90^\circ$ *clockwise* from its radius ($45^\circ - 90^\circ =
@@ -227,7 +235,7 @@ for res, label in ((at_A, "A"), (at_B, "B")):
                  fontsize=13, fontweight="bold")
     vector(ax1, z, complex(res.A_t.to("in/s^2").magnitude), "tangential", None, scale)
     vector(ax1, z, complex(res.A.to("in/s^2").magnitude), "resultant",
-           rf"$\mathbf{{A}}_{label}$", scale, offset=-14)
+           rf"$\mathbf{{A}}_{label}$", scale)
 arc = 6.5 * np.exp(1j * np.linspace(np.radians(45), theta_B.to("rad").magnitude, 40))
 ax1.plot(1.12 * arc.real, 1.12 * arc.imag, color="#888888", lw=1)
 ax1.annotate("0.01 s", (1.15 * arc[20].real, 1.15 * arc[20].imag), fontsize=10,
@@ -241,15 +249,15 @@ ax1.legend(handles=handles, loc="lower left", fontsize=9)
 ax1.set_aspect("equal")
 ax1.set_xlabel("x [in]")
 ax1.set_ylabel("y [in]")
-ax1.set_title("Problem 7-1: arrows 1 in = 12 300 in/s$^2$")
+ax1.set_title(f"Problem 7-1: arrows 1 in = {1 / scale:,.0f} in/s$^2$".replace(",", " "))
 ax1.set_xlim(-8, 8)
 ax1.set_ylim(-4, 8.5)
 
 zA = complex(at_A.A.to("in/s^2").magnitude) / 1000
 zB = complex(at_B.A.to("in/s^2").magnitude) / 1000
 vector(ax2, 0j, zA, "resultant", r"$\mathbf{A}_A$")
-vector(ax2, 0j, zB, "known", r"$\mathbf{A}_B$", offset=-14)
-vector(ax2, zA, zB - zA, "tangential", r"$\mathbf{A}_{BA}$", offset=-14)
+vector(ax2, 0j, zB, "known", r"$\mathbf{A}_B$")
+vector(ax2, zA, zB - zA, "tangential", r"$\mathbf{A}_{BA}$")
 ax2.scatter([0], [0], color="k", s=15)
 ax2.set_aspect("equal")
 ax2.set_xlabel("$A_x$ [1000 in/s$^2$]")
@@ -326,7 +334,8 @@ ax1.annotate("P", (P1.real, P1.imag), xytext=(-16, 4), textcoords="offset points
 vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
 vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential",
        r"$\mathbf{A}^t_{PA}$", s1)
-vector(ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1)
+vector(ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1,
+       beside=5)                               # along the link: drawn beside it
 vector(ax1, P1, complex(A_P1.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s1)
 ax1.plot([P1.real, 0], [P1.imag, 0], ls=":", color="#888888")
 ax1.set_aspect("equal")
@@ -356,6 +365,9 @@ ax2.set_ylim(24, 54)
 ax2.set_title("Case 2: two bodies. $\\mathbf{A}_{PA}$ has no such rule")
 plt.show()
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0");
+
 # %% [markdown]
 # In Case 1 the normal part of $\mathbf{A}_{PA}$ lies exactly on the line from $P$ to $A$
 # ($0^\circ$) and has the size $|PA|\,\omega^2 = 0.3 \times 8^2 = 19.2$ m/s$^2$: we could
@@ -372,32 +384,56 @@ plt.show()
 # sign of $\omega$ changes nothing at all.
 
 # %%
-pt_explore = RotatingPoint(p="6.5 in")
+BOX = (-3.0, 10.5, -3.5, 10.5)     # one frame [in] ...
+SCALE = 6.5 / 12_000               # ... and one arrow scale [in per in/s^2] for every panel
 
 
 def draw(alpha2, omega2):
-    res = pt_explore.solve(theta2="45 deg", omega2=Q_(omega2, "rad/s"),
-                           alpha2=Q_(alpha2, "rad/s^2"))
-    fig, ax = plt.subplots(figsize=(4.2, 4.2))
+    con = rotating("6.5 in", "45 deg", f"{omega2} rad/s", f"{alpha2} rad/s^2")
+    A = abs(con.values["A"]) / 0.0254                       # in/s^2
+    phi = np.degrees(np.arctan2(alpha2, omega2**2))
+    fig, ax = plt.subplots(figsize=(4.2, 4.4))
     ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
     ax.plot(ring.real, ring.imag, color="#dddddd", lw=1)
-    draw_link(ax, res, scale=6.5 / 12_000, legend=False)
-    phi = np.degrees(np.arctan2(alpha2, omega2**2))
-    ax.set_title(f"$\\omega$ = {omega2:g} rad/s: |A| = {abs(res.A).to('in/s^2').magnitude:,.0f}"
-                 f" in/s$^2$, $\\varphi$ = {phi:.0f}$^\\circ$", fontsize=10)
-    ax.set_xlim(-3, 10.5)
-    ax.set_ylim(-3, 10.5)
+    draw_linkage(con, ax=ax, scale=SCALE, box=BOX, names={"O2": "O"}, legend=False,
+                 title=f"$\\omega$ = {omega2:g} rad/s: |A| = {A:,.0f} in/s$^2$, "
+                       f"$\\varphi$ = {phi:.0f}$^\\circ$")
+    ax.title.set_fontsize(10)
     return fig
 
 
 explore(draw, alpha2=(-1500, 1500, 50, -500, "rad/s^2"), omega2=(-40, 40, 1, 20, "rad/s"))
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(6.5 * 20**2, "2600")
+stated((100 / 20) ** 2, "25")
+assert abs(np.degrees(np.arctan2(500, 100**2))) < 3      # "only a few degrees"
+
 # %% [markdown]
-# At $\omega = 20$ rad/s the normal part is $6.5 \times 400 = 2600$ in/s$^2$ in every panel;
-# only the tangential part grows, shrinks and swaps sides with $\alpha$. At $\omega = 100$
-# rad/s (problem 7-1) the normal part would be 25 times larger and $\varphi$ only a few
-# degrees: at high speed the acceleration of a point on a crank points almost straight at the
-# pivot.
+# At $\omega = 20$ rad/s the normal part is $6.5 \times 400 = 2600$ in/s$^2$ whatever
+# $\alpha$ is; only the tangential part grows, shrinks and swaps sides with $\alpha$. At
+# $\omega = 100$ rad/s (problem 7-1) the normal part would be 25 times larger and $\varphi$ only
+# a few degrees: at high speed the acceleration of a point on a crank points almost straight at
+# the pivot.
+#
+# ### The point in motion
+#
+# Let the point start slowly ($\omega_0$ = 2 rad/s) and speed up at a constant
+# $\alpha$ = 10 rad/s$^2$ through one turn: then $\omega^2 = \omega_0^2 + 2\alpha\theta$. The
+# tangential part keeps its size, $p\alpha$; the normal part grows with $\omega^2$ and soon
+# dominates, and the total acceleration swings round toward the pivot. The arrows are drawn at
+# one scale; the marker runs along the curves of $\omega$ and of the sizes of the three vectors.
+
+# %%
+def speeding_up(theta2_deg, omega0=2.0, alpha=10.0):
+    """omega at the angle theta2 [deg] for a start at omega0 [rad/s], constant alpha."""
+    return {"omega2": f"{np.sqrt(omega0**2 + 2 * alpha * np.radians(theta2_deg)):.6f} rad/s"}
+
+
+animate({"mechanism": "rotation", "p": "6.5 in", "theta2": "0 deg", "omega2": "2 rad/s",
+         "alpha2": "10 rad/s^2"}, motion=speeding_up,
+        kinds=("tangential", "normal", "resultant"), title="6.5 in link speeding up",
+        names={"O2": "O"})
 
 # %% [markdown]
 # ## Check yourself
@@ -444,6 +480,114 @@ explore(draw, alpha2=(-1500, 1500, 50, -500, "rad/s^2"), omega2=(-40, 40, 1, 20,
 # $|p\alpha| = 3250$ in/s$^2$ is the same at both positions.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# the answers above, checked against the solver
+q = RotatingPoint(p="0.2 m")
+a1 = q.solve(theta2="90 deg", omega2="5 rad/s", alpha2="0 rad/s^2").A.to("m/s^2").magnitude
+assert np.isclose(a1, -5j)
+a2 = q.solve(theta2="90 deg", omega2="-5 rad/s", alpha2="-30 rad/s^2").A.to("m/s^2").magnitude
+assert np.isclose(a2, 6 - 5j)
+stated(abs(a2), "7.81"), stated(np.angle(a2, deg=True), "-39.8")
+stated(0.1 * 10**2, "10")
+stated(100 * (1 - (abs(at_B.A_n) / abs(at_A.A_n)).magnitude), "10", sig=1)
+stated(abs(at_A.A_t), "3250", "in/s^2"), stated(abs(at_B.A_t), "3250", "in/s^2");
+
+# %% [markdown]
+# ## Further problems
+#
+# Problems in the style of the chapter's problem set (its problem 7-1 is worked above). Try
+# them on paper first; the answers are folded.
+#
+# **Problem 1.1.** A point of a flywheel 150 mm from its centre is at $\theta = 210^\circ$. The
+# flywheel turns clockwise at 30 rad/s and is being slowed at 400 rad/s$^2$ (so
+# $\omega = -30$ rad/s, $\alpha = +400$ rad/s$^2$). (a) Find the tangential and normal
+# components of the point's acceleration and the total, in polar and cartesian form. (b) What
+# angle does the acceleration make with the line from the point to the centre? (c) At what
+# speed $|\omega|$, with the same $\alpha$, would the two components be equal?
+#
+# <details><summary>Answer</summary>
+#
+# (a) $A^t = p\alpha = 0.15 \times 400 = 60$ m/s$^2$, perpendicular to the radius and turned
+# counter-clockwise from it ($\alpha > 0$): at $300^\circ$, $(30 - 51.96j)$ m/s$^2$.
+# $A^n = p\omega^2 = 0.15 \times 900 = 135$ m/s$^2$ toward the centre, at $30^\circ$:
+# $(116.91 + 67.5j)$ m/s$^2$. The total is $(146.91 + 15.54j)$ m/s$^2$ $= 147.7$ m/s$^2$ at
+# $6.04^\circ$.
+#
+# (b) $\tan\varphi = \alpha/\omega^2 = 400/900$, $\varphi = 23.96^\circ$ from the inward
+# radius, on the side of $\alpha$.
+#
+# (c) $p\alpha = p\omega^2$ when $\omega^2 = \alpha$: $|\omega| = 20$ rad/s.
+#
+# </details>
+#
+# **Problem 1.2.** Two pins $A$ and $B$ of one rigid link are 120 mm apart, $B$ at $60^\circ$
+# from $A$. The link turns at $\omega = 6$ rad/s and $\alpha = -25$ rad/s$^2$, and pin $A$
+# accelerates at $\mathbf{A}_A = (2 - 4j)$ m/s$^2$. Find $\mathbf{A}_B$ (eq. 7.4).
+#
+# <details><summary>Answer</summary>
+#
+# $B$ turns about $A$ with the link (Case 1): $\mathbf{A}_{BA} = p\alpha\,je^{j60^\circ} -
+# p\omega^2e^{j60^\circ}$ with $p = 0.12$ m: $A^t_{BA} = 3$ m/s$^2$ at $-30^\circ$, $A^n_{BA}
+# = 4.32$ m/s$^2$ at $240^\circ$, so $\mathbf{A}_{BA} = (0.438 - 5.241j)$ m/s$^2$ and
+# $\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA} = (2.438 - 9.241j)$ m/s$^2$, 9.557 m/s$^2$ at
+# $-75.22^\circ$.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# the folded answers, computed
+f = RotatingPoint(p="150 mm").solve(theta2="210 deg", omega2="-30 rad/s", alpha2="400 rad/s^2")
+At, An, A = (complex(getattr(f, k).to("m/s^2").magnitude) for k in ("A_t", "A_n", "A"))
+stated(abs(At), "60"), stated(np.angle(At, deg=True) % 360, "300")
+stated(At.real, "30"), stated(At.imag, "-51.96")
+stated(abs(An), "135"), stated(np.angle(An, deg=True), "30")
+stated(An.real, "116.91"), stated(An.imag, "67.5")
+stated(A.real, "146.91"), stated(A.imag, "15.54"), stated(abs(A), "147.7")
+stated(np.angle(A, deg=True), "6.04")
+stated(np.degrees(np.arctan2(400, 900)), "23.96"), stated(np.sqrt(400), "20")
+BA = RotatingPoint(p="120 mm").solve(theta2="60 deg", omega2="6 rad/s", alpha2="-25 rad/s^2")
+A_BA = complex(BA.A.to("m/s^2").magnitude)
+stated(abs(BA.A_t), "3", "m/s^2"), stated(np.angle(BA.A_t.magnitude, deg=True), "-30")
+stated(abs(BA.A_n), "4.32", "m/s^2"), stated(np.angle(BA.A_n.magnitude, deg=True) % 360, "240")
+stated(A_BA.real, "0.438"), stated(A_BA.imag, "-5.241")
+A_B = 2 - 4j + A_BA
+stated(A_B.real, "2.438"), stated(A_B.imag, "-9.241"), stated(abs(A_B), "9.557")
+stated(np.angle(A_B, deg=True), "-75.22");
+
+# %% [markdown]
+# ## Practice
+#
+# Problems like problem 7-1 with instant feedback, for self-study: not graded, and never one
+# of a graded assignment's. Each run of the next cell draws a fresh problem (or give it a
+# seed, e.g. `practice("rotation", seed=12)`, to come back to one; `p.seed` tells you the
+# seed of the one you have). Work it out, then hand each answer to `p.check`: it says at once
+# whether it is right and, if not, what to look at (the unit, the sign, the size). A bare number
+# is read in the unit the problem asks for; a Quantity may be in any unit of the right kind.
+#
+# The graded exercise family that practises this notebook is `rotation` (problem 7-1 style);
+# the instructor's guide lists every family with the notebooks that teach it.
+
+# %%
+p = practice("rotation")
+p
+
+# %%
+# your answers, e.g.:  p.check("A_A_x", Q_(-48500, "in/s^2"))
+
+# %% [markdown]
+# **What a check looks like.** The problem of seed 2, solved with the solver (`RotatingPoint`,
+# as in the worked example) and checked; then the same answer with its sign flipped, and in the
+# wrong kind of unit:
+
+# %%
+p = practice("rotation", seed=2)
+g = p.given
+point = RotatingPoint(p=g["p"])
+at_A = point.solve(theta2=g["theta_A"], omega2=g["omega"], alpha2=g["alpha"])
+p.check("A_A_x", at_A.A.real.to("in/s^2"))             # right
+p.check("A_A_x", -at_A.A.real.to("in/s^2"))            # a sign error
+p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s"))   # a velocity unit
 
 # %% [markdown]
 # ## Common mistakes

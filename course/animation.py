@@ -47,6 +47,11 @@ SYMBOLS = {"alpha3": r"$\alpha_3$", "alpha4": r"$\alpha_4$", "alpha5": r"$\alpha
 #: the colours of the curves, in order (Okabe-Ito, as the drawings)
 CURVE_COLOURS = ["#000000", _style.OKABE_ITO["vermillion"], _style.OKABE_ITO["blue"],
                  _style.OKABE_ITO["green"]]
+#: curves of a vector component take the colour of its kind in the drawings
+KIND_COLOURS = {"A_t": _style.COMPONENT["tangential"]["color"],
+                "A_n": _style.COMPONENT["normal"]["color"],
+                "A_coriolis": _style.COMPONENT["coriolis"]["color"],
+                "A_slip": _style.COMPONENT["slip"]["color"]}
 
 
 class Animation:
@@ -121,7 +126,8 @@ def _value(con, name, motion_values):
 
 
 def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitudes=None,
-            kinds=("resultant",), title=None, fps=10, dpi=96, size=(7.4, 3.5)):
+            kinds=("resultant",), title=None, names=None, fps=10, dpi=96,
+            size=(7.4, 3.5)):
     """Animate ``case`` (a batch case, CONVENTIONS format) through its cycle.
 
     Parameters
@@ -145,6 +151,8 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         Which vectors to draw on the linkage (``"resultant"``, ``"normal"``,
         ``"tangential"``, ``"coriolis"``, ``"slip"``).
     title : str, optional
+    names : dict, optional
+        New names for the linkage's points, e.g. ``{"O2": "O"}``.
     fps, dpi, size :
         Frames per second, resolution and figure size [in].
 
@@ -208,8 +216,10 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         ax_m = fig.add_subplot(grid[1, 1], sharex=ax_c)
         markers = []
         for ax, data, unit in ((ax_c, curve_data, None), (ax_m, mag_data, aname)):
-            for k, (name, y) in enumerate(data.items()):
-                colour = CURVE_COLOURS[k % len(CURVE_COLOURS)]
+            free = iter(c for c in CURVE_COLOURS if c not in
+                        [KIND_COLOURS.get(n) for n in data])
+            for name, y in data.items():
+                colour = KIND_COLOURS.get(name) or next(free)
                 ax.plot(fine, y, color=colour, lw=1.5, label=SYMBOLS.get(name, name))
                 markers.append((ax.plot([], [], "o", color=colour, ms=6, zorder=5)[0], y))
             if data:
@@ -239,6 +249,7 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
             i = picks[k]
             ax_l.clear()
             draw_linkage(cons[i], ax=ax_l, scale=scale, box=box, kinds=kinds, lines=False,
+                         names=names,
                          inset=False, legend=False, scale_bars=True,
                          title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$")
             for mk, y in markers:

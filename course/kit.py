@@ -315,23 +315,12 @@ def measure(functions, repeats=5, min_time=0.01):
 
 
 # ---------------------------------------------------------------- drawing
-def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, offset=11, **text):
+def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, beside=0.0, **_):
     """Draw ``vec`` (complex) as an arrow from ``start`` (complex, drawing units)
-    in the colour and line style of its kind; the arrow is ``scale * vec`` long.
-    ``label`` goes beside the arrow, ``offset`` points to its left (negative:
-    to its right). Returns the tip."""
-    spec = _style.COMPONENT[kind]
-    tip = start + scale * vec
-    ax.annotate("", xy=(tip.real, tip.imag), xytext=(start.real, start.imag),
-                annotation_clip=False, zorder=spec.get("zorder", 4),
-                arrowprops=dict(arrowstyle="-|>,head_length=0.7,head_width=0.3",
-                                color=spec["color"], lw=spec["linewidth"],
-                                linestyle=spec["linestyle"], shrinkA=0, shrinkB=0))
-    if label and vec != 0:
-        mid = start + 0.55 * scale * vec
-        u = 1j * vec / abs(vec)
-        ax.annotate(label, (mid.real, mid.imag), xytext=(offset * u.real, offset * u.imag),
-                    textcoords="offset points", color=spec["color"], ha="center",
-                    va="center", fontsize=text.pop("fontsize", 12), annotation_clip=False,
-                    **text)
-    return tip
+    in the colour and line style of its kind, ``scale * vec`` long, as the
+    graphical constructions draw them (:func:`solver.graphical.draw.arrow`).
+    ``label`` is placed when the figure is drawn, clear of the figure's lines,
+    texts and other labels. ``beside`` [pt] shifts the arrow to its left
+    (negative: right), e.g. off a link it lies along. Returns the tip."""
+    from solver.graphical.draw import arrow
+    return arrow(ax, start, vec, kind, label, scale, beside)

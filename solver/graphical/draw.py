@@ -33,7 +33,7 @@ from matplotlib.path import Path
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
 from . import style
-from .labels import LabelLayer
+from .labels import LabelLayer, labels_of
 
 IN = 0.0254  # m per inch
 
@@ -72,7 +72,7 @@ LINK_SYMBOLS = {
     "slotted": {},
 }
 __all__ = ["draw_linkage", "draw_polygon", "draw_polygons", "save", "diagrams", "nice",
-           "fmt", "units_of", "UNIT_SYSTEMS"]
+           "fmt", "units_of", "arrow", "UNIT_SYSTEMS"]
 
 
 # ---------------------------------------------------------------- helpers
@@ -151,6 +151,25 @@ def _arrow(ax, start, vector, kind, ppd, offset=0j, zorder=6):
             marker=MarkerStyle(_HEAD, transform=Affine2D().rotate_deg(angle)),
             markersize=2 * head, color=st["color"], markeredgewidth=0.4)
     return True
+
+
+def arrow(ax, start, vector, kind="resultant", label=None, scale=1.0, beside=0.0):
+    """A vector in the style of its kind, for a hand-made figure: drawn from
+    ``start`` (complex, data units) as ``scale * vector``, its label placed at
+    draw time clear of every line, text and other label of the axes (the
+    axes' :class:`~solver.graphical.labels.LabelLayer`). ``beside`` [pt] draws
+    it that far to its left (negative: right), e.g. beside a link it lies on.
+    Returns the tip (data units)."""
+    start = complex(start)
+    v = complex(vector) * scale
+    off = 1j * v / abs(v) * beside if beside and v else 0j
+    _arrow(ax, start, v, kind, math.inf, off)
+    layer = labels_of(ax)
+    if v:
+        layer.avoid(start, start + v, width=style.component(kind)["linewidth"], offset=off)
+        if label:
+            layer.add_vector(label, start, v, color=_label_colour(kind), offset=off)
+    return start + v
 
 
 def _clip(point, u, box):

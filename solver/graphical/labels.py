@@ -78,9 +78,10 @@ class LabelLayer(Artist):
     a link rather than on it.
     """
 
-    def __init__(self, ax, fontsize=None):
+    def __init__(self, ax, fontsize=None, auto=False):
         super().__init__()
         self.ax = ax
+        self.auto = auto          # also keep clear of every line and text of the axes
         self.fontsize = fontsize or style.LABEL_SIZE
         self.segments = []      # (z0, z1, weight, halfwidth [pt], offset [pt])
         self.pins = []          # (z, radius [pt])
@@ -181,9 +182,28 @@ class LabelLayer(Artist):
         halfw = np.array([s[3] * ppt for s in self.segments])
         pins = [(self._px(z, 0j, ppt), r * ppt) for z, r in self.pins]
         frame = self.ax.bbox
+        fixed_boxes = []
+        if self.auto:  # the figure's own lines and texts (a notebook's hand-made figure)
+            more, widths = [], []
+            for line in self.ax.lines:
+                if not line.get_visible() or line.get_linestyle() in ("None", "", " "):
+                    continue
+                xy = line.get_transform().transform(line.get_xydata())
+                if len(xy) < 2 or not np.isfinite(xy).all():
+                    continue
+                more += [[*a, *b] for a, b in zip(xy[:-1], xy[1:])]
+                widths += [0.5 * line.get_linewidth() * ppt + 1.5 * ppt] * (len(xy) - 1)
+            if more:
+                seg = np.vstack([seg, np.array(more)])
+                halfw = np.concatenate([halfw, widths])
+                weights = np.concatenate([weights, np.full(len(more), 0.6)])
+            for t in self.ax.texts:
+                if t.get_visible() and t.get_text():
+                    bb = t.get_window_extent(renderer)
+                    fixed_boxes.append((bb.x0, bb.y0, bb.x1, bb.y1))
         inner = (frame.x0 + 2, frame.y0 + 2, frame.x1 - 2, frame.y1 - 2)
         pad = 1.5 * ppt
-        self.placed = []
+        self.placed = list(fixed_boxes)
         order = sorted(range(len(self.labels)), key=lambda i: self.labels[i]["priority"])
         for i in order:
             lab = self.labels[i]
@@ -242,6 +262,15 @@ class LabelLayer(Artist):
                                    alpha=0.85))
             text.draw(renderer)
         self.stale = False
+
+
+def labels_of(ax, auto=True):
+    """The LabelLayer of ``ax`` (made on first use, keeping clear of every line
+    and text of the axes when ``auto``)."""
+    for a in ax.artists:
+        if isinstance(a, LabelLayer):
+            return a
+    return LabelLayer(ax, auto=auto)
 
 
 def layers(fig):
