@@ -17,9 +17,10 @@
 # Before computers, accelerations were found by drawing: vectors laid tip to tail at a
 # scale, closed by lines whose direction is known but whose length is not. The method is
 # still the quickest independent check on a program, and it shows *why* the analytic
-# equations look the way they do. Here we build Example 7-1 of the chapter one step at a
-# time with `solver.graphical`, which performs the construction as geometry (it never asks
-# the analytic solver for an answer).
+# equations look the way they do. Here we build Example 7-1 of the chapter (Robert L. Norton,
+# *Design of Machinery*, chapter 7, section 7.2 and its Figure 7-4) one step at a time with
+# `solver.graphical`, which performs the construction as geometry (it never asks the analytic
+# solver for an answer).
 #
 # **You will be able to**
 #
@@ -32,12 +33,15 @@
 # - recognise the positions where the construction breaks down.
 
 # %%
+# %matplotlib inline
 import math
+import textwrap
 
 import matplotlib.pyplot as plt
 
-from coursekit import cartesian, explore, polar, use_style, vector
-from solver import Q_, NotAssemblable, Singular
+from course.kit import cartesian, explore, polar, stated, use_style
+from exercises.practice import practice
+from solver import FourBar, Q_, NotAssemblable, Singular
 from solver.graphical import construct, construct_case
 from solver.graphical.draw import draw_linkage, draw_polygon
 from solver.graphical.gallery import EXAMPLE_7_1
@@ -76,8 +80,17 @@ use_style()
 # $\omega_3$, $\omega_4$ (a velocity analysis). The graphical method is a freeze-frame: one
 # position, one drawing.
 #
-# The linkage of this notebook, used throughout the course as "Example 7-1" (the chapter's
-# example prints no numbers, so the course fixes them):
+# **Two slips of the chapter's text to read past.** Just before Example 7-1 the chapter says
+# the directions of the centripetal and tangential components are "perpendicular to and along
+# the radius of rotation, respectively". That is the wrong way round: the centripetal (normal)
+# component lies *along* the radius and the tangential one is *perpendicular* to it, as eq. 7.2
+# and the example itself draw them. And in the discussion after the example it says we could
+# compute $\mathbf{A}^n_B$ "since we knew $\omega_3$ and the link length": $\mathbf{A}^n_B =
+# c\,\omega_4^2$ needs $\omega_4$, the rocker's. (The course's [errata page](errata.md) lists
+# every misprint it found.)
+#
+# The linkage of this notebook, used throughout the course as "Example 7-1". The chapter's
+# example prints no numbers; **these are the course's own numbers**:
 
 # %%
 EXAMPLE_7_1
@@ -92,10 +105,11 @@ EXAMPLE_7_1
 # %%
 con = construct_case(EXAMPLE_7_1)
 for s in con.steps:
-    print(f"{s.label:>3}  {s.phase:<12} {s.text[:88]}")
+    print(textwrap.fill(s.text, 92, initial_indent=f"{s.label:>3}  {s.phase:<13}",
+                        subsequent_indent=" " * 18))
 
 
-def show(step, diagram=None, figsize=(12, 5.4)):
+def show(step, diagram=None, figsize=(11, 5.2)):
     """The linkage (left) and one polygon (right) as they stand after `step`."""
     if diagram is None:
         fig, ax = plt.subplots(figsize=(7, 5.4))
@@ -134,9 +148,14 @@ print("A_A^t:", polar(Q_(v["A_A_t"], "m/s^2"), "in/s^2"),
       f"  (a |alpha2| = {(a_in * Q_(5, 'rad/s^2')).to('in/s^2'):.4g~P})")
 show("2")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(abs(v["A_A_n"]) / abs(v["A_A_t"]), "20");
+
 # %% [markdown]
 # The tangential part is a twentieth of the normal one ($\alpha_2$ is small next to
-# $\omega_2^2$), so it is hard to see at this scale: a real drawing would magnify it.
+# $\omega_2^2$), too short to see at the scale of the drawing, so the drawing shows it again
+# magnified in an inset (the chapter's Figure 7-4 draws these two components at twice size for
+# the same reason).
 #
 # **Steps 3-5: the directions we know.** $B$ turns about $O_4$, so $\mathbf{A}^t_B$ lies on
 # the line $pp$ through $B$ perpendicular to $O_4B$, and $\mathbf{A}^n_B = c\omega_4^2$ points
@@ -147,12 +166,20 @@ show("2")
 show("5")
 
 # %% [markdown]
-# **Step 6: the polygon.** From the pole $o_A$ lay the fully known vectors tip to tail, in
-# the order the equation adds them: $\mathbf{A}^t_A$, $\mathbf{A}^n_A$ (together
-# $\mathbf{A}_A$), then $\mathbf{A}^n_{BA}$. $\mathbf{A}^n_B$ sits on the *left* of eq. 7.4,
-# so it is subtracted: draw $-\mathbf{A}^n_B$. A line parallel to $qq$ through that tip and a
-# line parallel to $pp$ through the pole cross at one point; it closes the polygon and cuts
-# off $\mathbf{A}^t_{BA}$ and $\mathbf{A}^t_B$.
+# **Step 6: the polygon.** Eq. 7.4 has two sides, and the drawing lays each from the pole
+# $o_A$. The right side, tip to tail in the order the equation adds it: $\mathbf{A}^t_A$,
+# $\mathbf{A}^n_A$ (together $\mathbf{A}_A$), then $\mathbf{A}^n_{BA}$, and through its tip a
+# line parallel to $qq$ (the direction of the unknown $\mathbf{A}^t_{BA}$). The left side:
+# $\mathbf{A}^n_B$, and through its tip a line parallel to $pp$ (the direction of the unknown
+# $\mathbf{A}^t_B$). Both sides equal $\mathbf{A}_B$, so the two lines cross at its tip: the
+# crossing cuts off $\mathbf{A}^t_{BA}$ and $\mathbf{A}^t_B$, and $\mathbf{A}_B$ runs from the
+# pole to it, the sum of either chain.
+#
+# The chapter's step 6 does the same with $\mathbf{A}^n_B$ moved to the right side: it draws
+# $-\mathbf{A}^n_B$ at the end of $\mathbf{A}^n_{BA}$, the line parallel to $qq$ through that
+# tip and the one parallel to $pp$ through the pole. The two lines then cross at the tip of
+# $\mathbf{A}^t_B$ instead, with the same lengths cut off. Laying both sides from the pole shows
+# $\mathbf{A}_B$ as the sum it is.
 
 # %%
 show("6", "acceleration", figsize=(12, 6))
@@ -169,6 +196,7 @@ print("A_A =", cartesian(Q_(v["A_A"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_A"
 print("A_B =", cartesian(Q_(v["A_B"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_B"], "m/s^2"), "in/s^2"))
 c_len = 9 * 0.0254
 assert math.isclose(v["alpha4"], abs(v["A_B_t"]) / c_len, rel_tol=1e-12)  # CCW: positive
+assert v["alpha3"] > 0 and v["alpha4"] > 0 and EXAMPLE_7_1["alpha2"].startswith("-")
 
 # %% [markdown]
 # Both angular accelerations come out counter-clockwise (positive), although $\alpha_2$ is
@@ -186,8 +214,8 @@ print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"
 
 # %% [markdown]
 # Notebook 3 solves the same linkage from the differentiated vector loop, and the two
-# answers agree to better than one part in $10^9$: the drawing is exact geometry, only a
-# ruler makes it approximate.
+# answers agree to better than one part in $10^9$ (it checks this): the drawing is exact
+# geometry, only a ruler makes it approximate.
 #
 # ### When the construction fails
 #
@@ -219,28 +247,21 @@ for t2 in (toggle - 0.05, toggle, toggle + 0.05):
 # The graphical method's cost is that nothing carries over from one crank angle to the
 # next: each position needs its own polygon. Move $\theta_2$ and watch the acceleration
 # polygon of Example 7-1 change shape and size: blue normal components, red dashed tangential
-# ones, black $\mathbf{A}_A$ and $\mathbf{A}_B$ from the pole (the black dot). Every panel has
-# the same scale (the axes grow with $\omega_2^2$ when you move $\omega_2$).
+# ones, black $\mathbf{A}_A$ and $\mathbf{A}_B$ from the pole $o_A$. The positions are all drawn
+# in one frame, at one scale (in a live notebook the frame grows with $\omega_2^2$ when you
+# move $\omega_2$, so that the polygon keeps its size on the screen).
 
 # %%
 def draw(theta2, omega2):
     case = dict(EXAMPLE_7_1, theta2=f"{theta2} deg", omega2=f"{omega2} rad/s")
     case.pop("p"), case.pop("delta3")
     g = construct_case(case)
-    arrows, _, _ = g.items("acceleration")
-    fig, ax = plt.subplots(figsize=(4.4, 4.4))
-    for arr in arrows:             # the finished polygon, one scale for every theta2
-        label = f"${arr.name}$" if arr.name in (r"\mathbf{A}_{A}", r"\mathbf{A}_{B}") else None
-        vector(ax, arr.start, arr.vector, arr.kind, label, offset=-12)
-    ax.scatter([0], [0], color="k", s=25, zorder=9)
-    reach = 8.5 * (omega2 / 10) ** 2     # the axes grow as omega2^2
-    ax.set_xlim(-reach, reach)
-    ax.set_ylim(-reach, reach)
-    ax.set_aspect("equal")
-    ax.set_xlabel("$A_x$ [m/s$^2$]")
-    ax.set_ylabel("$A_y$ [m/s$^2$]")
-    ax.set_title(f"$\\alpha_3$ = {g.values['alpha3']:.3g}, $\\alpha_4$ = "
-                 f"{g.values['alpha4']:.3g} rad/s$^2$", fontsize=10)
+    reach = 380 * (omega2 / 10) ** 2          # in/s^2: the frame grows as omega2^2
+    fig, ax = plt.subplots(figsize=(4.4, 4.6))
+    draw_polygon(g, "acceleration", ax=ax, box=(-reach, reach, -reach, reach), inset=False,
+                 title=f"$\\alpha_3$ = {g.values['alpha3']:.3g}, $\\alpha_4$ = "
+                       f"{g.values['alpha4']:.3g} rad/s$^2$")
+    ax.title.set_fontsize(10)
     return fig
 
 
@@ -250,7 +271,7 @@ explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(1, 20, 1, 10, "rad/s"))
 # The polygon turns with the crank and stretches and shrinks: at some angles
 # $\mathbf{A}^t_B$ is the longest vector, at others almost nothing. Doubling $\omega_2$ (with
 # $\alpha_2$ small) makes every vector four times longer and leaves the shape alone, since
-# every term but $\mathbf{A}^t_A$ scales with $\omega_2^2$: with the axes following
+# every term but $\mathbf{A}^t_A$ scales with $\omega_2^2$: with the frame following
 # $\omega_2^2$, the picture hardly changes.
 
 # %% [markdown]
@@ -298,6 +319,87 @@ explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(1, 20, 1, 10, "rad/s"))
 # $\alpha_4$, i.e. the finished polygon.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(v["alpha3"], "8.77")
+assert 60 < math.degrees(v["theta3"]) < 120 and v["A_BA_t"].real < 0   # B above A, leftward
+
+# %% [markdown]
+# ## Further problems
+#
+# In the style of the chapter's problem set: draw the polygons yourself (on paper or with
+# `construct_case` and `draw_polygon`), then compare. The answers are folded.
+#
+# **Problem 2.1.** The Example 7-1 linkage (the course's numbers: $a$ = 2, $b$ = 6, $c$ = 9,
+# $d$ = 7 in, open circuit) at $\theta_2 = 120^\circ$, $\omega_2$ = 10 rad/s, $\alpha_2$ = -5
+# rad/s$^2$. Find $\omega_3$ and $\omega_4$ from the velocity polygon, then $\alpha_3$,
+# $\alpha_4$ and $\mathbf{A}_B$ from the acceleration polygon.
+#
+# <details><summary>Answer</summary>
+#
+# $\omega_3 = -0.475$ rad/s, $\omega_4 = 2.058$ rad/s. The normal part $A^n_A = a\omega_2^2
+# = 200$ in/s$^2$ is again twenty times $A^t_A$; the polygon closes at $\alpha_3 = 30.50$ and
+# $\alpha_4 = 11.25$ rad/s$^2$ (both counter-clockwise), and $\mathbf{A}_B$ is 108.2 in/s$^2$ at
+# $-122.1^\circ$.
+#
+# </details>
+#
+# **Problem 2.2.** Same linkage and input as Example 7-1, but on the *crossed* circuit. Which
+# of the vectors of the polygon are the same as on the open circuit, and what is $\alpha_4$?
+#
+# <details><summary>Answer</summary>
+#
+# Only $\mathbf{A}^t_A$ and $\mathbf{A}^n_A$ (and their sum $\mathbf{A}_A$): they depend on the
+# crank alone. Everything else changes with the position of B. On the crossed circuit
+# $\alpha_3 = 70.3$ and $\alpha_4 = 39.61$ rad/s$^2$, against 8.77 and 39.43 on the open one:
+# at this angle the two rockers happen to accelerate alike, the couplers do not.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+g120 = construct_case(dict(EXAMPLE_7_1, theta2="120 deg")).values
+stated(g120["omega3"], "-0.475"), stated(g120["omega4"], "2.058")
+stated(abs(g120["A_A_n"]) / 0.0254, "200"), stated(abs(g120["A_A_n"] / g120["A_A_t"]), "20")
+stated(g120["alpha3"], "30.50"), stated(g120["alpha4"], "11.25")
+stated(abs(g120["A_B"]) / 0.0254, "108.2"), stated(math.degrees(math.atan2(g120["A_B"].imag, g120["A_B"].real)), "-122.1")
+crossed = construct_case(dict(EXAMPLE_7_1, circuit="crossed")).values
+assert crossed["A_A"] == v["A_A"] and crossed["A_B"] != v["A_B"]
+stated(crossed["alpha3"], "70.3"), stated(crossed["alpha4"], "39.61")
+stated(v["alpha3"], "8.77"), stated(v["alpha4"], "39.43")
+# the analytic solver agrees (notebook 3 derives it)
+r120 = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="120 deg", omega2="10 rad/s",
+                                                             alpha2="-5 rad/s^2")
+assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9);
+
+# %% [markdown]
+# ## Practice
+#
+# Fourbar problems with instant feedback, for self-study (not graded, and never one of a graded
+# assignment's): each run of the next cell draws a fresh linkage and input (or give a seed to
+# come back to one). Solve it graphically, with `construct_case` and the polygon, or by the
+# equations of notebook 3, then hand each answer to `p.check`, which says at once whether it is
+# right and, if not, what to look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `fourbar` (with `coupler` for
+# step 8).
+
+# %%
+p = practice("fourbar")
+p
+
+# %%
+# your answers, e.g.:  p.check("alpha3", Q_(12.5, "rad/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 3, solved by the graphical construction:
+
+# %%
+p = practice("fourbar", seed=3)
+g = dict(p.problem.given, mechanism="fourbar")
+drawn = construct_case(g).values
+p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2"))      # right
+p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2"))     # the sense read the wrong way
+p.check("alpha4", Q_(drawn["alpha4"], "rad/s"))        # not an angular acceleration
 
 # %% [markdown]
 # ## Common mistakes

@@ -376,6 +376,7 @@ def _magnifier(ax, box, plan, tiny, draw, obstacles):
     inset.set_xticks([])
     inset.set_yticks([])
     for sp in inset.spines.values():
+        sp.set_visible(True)  # all four, whatever the caller's style hides
         sp.set_edgecolor("#777777")
         sp.set_linewidth(0.8)
     inset.patch.set_facecolor("white")
@@ -688,6 +689,8 @@ def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, le
     ends = [0j] + [s for s, _ in every] + [s + v for s, v in every]
     x0, x1, y0, y1 = _extent(ends)
     size = max(x1 - x0, y1 - y0) or 1.0
+    if box is not None:  # a given frame fixes the scale bar too
+        size = 0.7 * max(box[1] - box[0], box[3] - box[2])
     box = _frame(ax, ends, 0.14 * size, strip=0.12 if scale_bar else 0.0, box=box)
     span = max(box[1] - box[0], box[3] - box[2])
     ppd = _pts_per_data(ax)
