@@ -16,7 +16,8 @@
 #
 # A drawing gives one position. To design a linkage we need the accelerations at every crank
 # angle, and that calls for the analytic solution: differentiate the vector loop twice and
-# solve for the two unknown angular accelerations. This notebook derives it, checks it
+# solve for the two unknown angular accelerations. This notebook derives it (Robert L. Norton,
+# *Design of Machinery*, chapter 7, section 7.3: eqs. 7.7 to 7.13 and Figure 7-5), checks it
 # against the graphical answer of notebook 2, then runs a whole cycle on both circuits.
 #
 # **You will be able to**
@@ -30,12 +31,15 @@
 # - recognise toggle and non-assemblable positions and read the solver's `valid` mask.
 
 # %%
+# %matplotlib inline
 import math
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import CIRCUIT_COLORS, cartesian, explore, polar, use_style
+from course.animation import animate
+from course.kit import CIRCUIT_COLORS, cartesian, explore, polar, stated, use_style
+from exercises.practice import practice
 from solver import FourBar, NotAssemblable, Q_, Singular
 from solver.graphical import construct_case
 from solver.graphical.draw import draw_linkage
@@ -109,7 +113,8 @@ print(f"alpha3 = {alpha3:.6f} rad/s^2, alpha4 = {alpha4:.6f} rad/s^2 (eq. 7.12 =
 # ## Worked example 1: Example 7-1 by the equations
 #
 # The same linkage and input as notebook 2: $a = 2$, $b = 6$, $c = 9$, $d = 7$ in,
-# $\theta_2 = 30^\circ$, $\omega_2 = 10$ rad/s, $\alpha_2 = -5$ rad/s$^2$, open circuit. The
+# $\theta_2 = 30^\circ$, $\omega_2 = 10$ rad/s, $\alpha_2 = -5$ rad/s$^2$, open circuit (the
+# chapter's Example 7-1 prints no numbers; **these are the course's own numbers**). The
 # solver returns Quantities; the vectors are complex, as in the chapter's notation.
 
 # %%
@@ -150,7 +155,7 @@ for name, unit in (("alpha3", "rad/s^2"), ("alpha4", "rad/s^2"), ("A_A", "m/s^2"
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
 for ax, circuit in zip(axes, ("open", "crossed")):
     g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
-    draw_linkage(g, step="P", ax=ax)
+    draw_linkage(g, ax=ax, vectors=False)
     ax.set_title(f"{circuit} circuit at $\\theta_2$ = 30$^\\circ$")
 plt.show()
 
@@ -187,6 +192,11 @@ for circuit, res in cycle.items():
     print(f"{circuit:8s} alpha4 from {a4.min():7.2f} to {a4.max():6.2f} rad/s^2;"
           f" |A_B| peaks at {ab.max():5.1f} in/s^2 ({ab.max() * 0.0254:.2f} m/s^2)"
           f" at theta2 = {deg[ab.argmax()]:.1f} deg")
+A_A = abs(cycle["open"].A_A).to("in/s^2").magnitude
+assert np.ptp(A_A) < 1e-9 * A_A[0]                                  # constant size
+stated(A_A[0], "200", sig=2)
+ab = abs(cycle["open"].A_B).to("in/s^2").magnitude
+assert ab.max() > 2 * A_A[0] and ab.min() < 0.3 * A_A[0]            # "more than doubles ..."
 
 # %% [markdown]
 # What to notice:
@@ -206,6 +216,21 @@ mirror = fb.solve(theta2=theta2, omega2="10 rad/s", circuit="crossed", order=2)
 assert np.allclose(mirror.alpha4.magnitude, -flip.alpha4.magnitude, atol=1e-9)
 assert np.allclose(mirror.alpha3.magnitude, -flip.alpha3.magnitude, atol=1e-9)
 print("crossed(theta2) = -open(-theta2) for alpha3 and alpha4 when alpha2 = 0")
+
+# %% [markdown]
+# **The cycle in motion.** The open circuit through one crank turn: the linkage with the
+# accelerations of A, B and the coupler point P (one arrow scale for the whole turn), and a
+# marker running along the curves of $\alpha_3$, $\alpha_4$ and of $|\mathbf{A}_A|$,
+# $|\mathbf{A}_B|$, $|\mathbf{A}_P|$. Watch $\mathbf{A}_B$ swell where the curves peak.
+
+# %%
+animate(EXAMPLE_7_1, title="Example 7-1 linkage")
+
+# %% [markdown]
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+at30 = {c: fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit=c)
+        for c in ("open", "crossed")}
+stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "70.3", "rad/s^2");
 
 # %% [markdown]
 # So for a *given crank angle* the two assemblies can have very different accelerations
@@ -236,6 +261,9 @@ for angle in (limit, 150.0):
         print(f"\ntheta2 = {angle:.4f} deg -> {type(exc).__name__}:\n  {exc}")
 
 # %%
+mu = rocker.solve(theta2="0 deg", omega2="10 rad/s")
+mu = math.degrees(abs(math.remainder(mu.theta4.m_as("rad") - mu.theta3.m_as("rad"), math.pi)))
+stated(mu, "23")                    # the transmission angle at theta2 = 0, quoted below
 fig, ax = plt.subplots(figsize=(9, 3.8))
 a4 = sweep.alpha4.to("rad/s^2").magnitude
 ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
@@ -292,6 +320,19 @@ def draw(c, omega2):
 explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"),
         values=[5, 9, 10.8, 11.5])
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+def rocker_cycle(c):
+    res = FourBar(a="2 in", b="6 in", c=f"{c} in", d="7 in").solve(
+        theta2=theta2, omega2="10 rad/s", order=2)
+    return (np.degrees(np.ptp(np.unwrap(res.theta4.m_as("rad")))),
+            np.nanmax(np.abs(res.alpha4.m_as("rad/s^2"))))
+
+
+swing, peak = zip(*(rocker_cycle(c) for c in (5, 9, 10.8, 10.95)))
+stated(swing[0], "48"), stated(swing[1], "33"), stated(peak[0], "66"), stated(peak[1], "49")
+stated(peak[2], "140"), stated(peak[3], "289")
+assert 2 + 11 == 6 + 7                                     # the change point at c = 11 in
+
 # %% [markdown]
 # A shorter rocker swings through a larger angle ($48^\circ$ for $c = 5$ in against $33^\circ$
 # for 9 in) and needs larger angular accelerations (peaks of 66 against 49 rad/s$^2$).
@@ -345,6 +386,76 @@ explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"),
 # `'not_assemblable'` or `'singular'` for each angle.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+slow, fast = (fb.solve(theta2="30 deg", omega2=w, alpha2="0 rad/s^2") for w in ("10 rad/s", "20 rad/s"))
+stated(fast.alpha4 / slow.alpha4, "4"), stated(fast.alpha3 / slow.alpha3, "4")
+stated(abs(fast.A_B) / abs(slow.A_B), "4");
+
+# %% [markdown]
+# ## Further problems
+#
+# In the style of the chapter's problem set; solve them with eq. 7.12 on paper (a calculator
+# for the trigonometry), then check with `FourBar`. The answers are folded.
+#
+# **Problem 3.1.** A fourbar has $a$ = 3, $b$ = 8, $c$ = 7 and $d$ = 9 in. At $\theta_2 =
+# 45^\circ$ the crank turns clockwise at 20 rad/s and accelerates counter-clockwise at 100
+# rad/s$^2$ ($\omega_2 = -20$ rad/s, $\alpha_2 = 100$ rad/s$^2$). Find $\alpha_3$, $\alpha_4$
+# and $\mathbf{A}_B$ on the open circuit.
+#
+# <details><summary>Answer</summary>
+#
+# $\alpha_3 = 111.0$ rad/s$^2$ and $\alpha_4 = 271.3$ rad/s$^2$ (both counter-clockwise);
+# $\mathbf{A}_B$ = 1899 in/s$^2$ at $-175.3^\circ$, nearly along $-x$.
+#
+# </details>
+#
+# **Problem 3.2.** The same linkage and input on the crossed circuit.
+#
+# <details><summary>Answer</summary>
+#
+# $\alpha_3 = 259.6$ rad/s$^2$, $\alpha_4 = 99.3$ rad/s$^2$, $\mathbf{A}_B$ = 909 in/s$^2$ at
+# $1.5^\circ$: the same crank, a different linkage.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+link = FourBar(a="3 in", b="8 in", c="7 in", d="9 in")
+for circuit, (a3, a4, ab, ang) in (("open", ("111.0", "271.3", "1899", "-175.3")),
+                                   ("crossed", ("259.6", "99.3", "909", "1.5"))):
+    res = link.solve(theta2="45 deg", omega2="-20 rad/s", alpha2="100 rad/s^2", circuit=circuit)
+    stated(res.alpha3, a3, "rad/s^2"), stated(res.alpha4, a4, "rad/s^2")
+    stated(abs(res.A_B), ab, "in/s^2"), stated(np.angle(res.A_B.magnitude, deg=True), ang)
+
+# %% [markdown]
+# ## Practice
+#
+# Fourbar problems with instant feedback, for self-study (not graded, and never one of a graded
+# assignment's): each run of the next cell draws a fresh linkage and input, or give a seed to
+# come back to one. Solve it with eq. 7.12 (or `FourBar`, to check your hand work), then hand
+# each answer to `p.check`: it says at once whether it is right and, if not, what to look at
+# (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `fourbar`.
+
+# %%
+p = practice("fourbar")
+p
+
+# %%
+# your answers, e.g.:  p.check("alpha4", Q_(-31.4, "rad/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `FourBar`:
+
+# %%
+p = practice("fourbar", seed=5)
+g = p.given
+model = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"])
+res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
+p.check("alpha3", res.alpha3)                          # right
+p.check("alpha3", res.alpha4)                          # the rocker's, not the coupler's
+p.check("A_B_mag", abs(res.A_B).to("m/s^2"))           # right, in other units
 
 # %% [markdown]
 # ## Common mistakes

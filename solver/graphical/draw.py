@@ -648,7 +648,7 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         L = nice(0.22 * bar)
         _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.045 * span, L,
                    f"{fmt(L)} {lname}", tick)
-        if arrows_all:
+        if arrows:
             Aval = nice(0.22 * bar / scale)
             _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.11 * span, Aval * scale,
                        f"{fmt(Aval)} {aname}", tick)
