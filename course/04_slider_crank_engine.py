@@ -15,10 +15,11 @@
 # # 4. The slider-crank and the engine
 #
 # The slider-crank turns rotation into straight-line motion, and its best known member is
-# the piston engine. The chapter makes a striking claim: the pistons of a small car engine
-# accelerate at about 40 g at idle and about 2000 g at 6000 rpm. In this notebook we derive the
-# slider-crank's accelerations and then check that claim ourselves, from an engine geometry
-# we make up but could find in a catalogue.
+# the piston engine. The chapter (Robert L. Norton, *Design of Machinery*, chapter 7) makes a
+# striking claim in its section 7.6: the pistons of a small car engine accelerate at about 40 g
+# at idle and about 2000 g at 6000 rpm. In this notebook we derive the slider-crank's
+# accelerations (section 7.3, eqs. 7.14 to 7.16 and Figure 7-6) and then check that claim
+# ourselves, from an engine geometry we make up but could find in a catalogue.
 #
 # **You will be able to**
 #
@@ -31,12 +32,15 @@
 # - recognise slider-cranks that cannot be assembled.
 
 # %%
+# %matplotlib inline
 import math
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, cartesian, explore, in_g, polar, use_style
+from course.animation import animate
+from course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style
+from exercises.practice import practice
 from solver import NotAssemblable, Q_, SliderCrank, Singular
 from solver.graphical import construct_case
 from solver.graphical.draw import draw_linkage, draw_polygon
@@ -71,8 +75,19 @@ use_style()
 # (The chapter labels the second bracket $\mathbf{A}_{BA}$ in eq. 7.15b; by eq. 7.4's own
 # definition it is $\mathbf{A}_{AB}$, the same vector reversed. This course follows eq. 7.4.)
 #
-# The imaginary part of eq. 7.14 has one unknown, $\alpha_3$; the real part then gives
-# $\ddot d$:
+# Split into real and imaginary parts (the chapter's eqs. 7.16b and 7.16c):
+#
+# $$ -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 + b\alpha_3\sin\theta_3
+#    + b\omega_3^2\cos\theta_3 - \ddot d = 0 \tag{7.16b} $$
+#
+# $$ a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 - b\alpha_3\cos\theta_3
+#    + b\omega_3^2\sin\theta_3 = 0 \tag{7.16c} $$
+#
+# (The scanned chapter's eq. 7.16b ends in "$- d = 0$": its two dots are lost in the scan. The
+# term is the slider's acceleration $\ddot d$, as eq. 7.14 says; a plain $d$, a position, would
+# not even have the right dimension.)
+#
+# The imaginary part has one unknown, $\alpha_3$; the real part then gives $\ddot d$:
 #
 # $$ \alpha_3 = \frac{a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 + b\omega_3^2\sin\theta_3}
 #    {b\cos\theta_3} \tag{7.16d} $$
@@ -132,6 +147,7 @@ assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_
 # $b = 4.724$ in) would carry it; pint converts:
 
 # %%
+stated(Q_(40, "mm"), "1.575", "in"), stated(Q_(120, "mm"), "4.724", "in")
 print(f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
       f" = {in_g(r.d_ddot):.3f} g")
 
@@ -155,6 +171,7 @@ displacement = (4 * math.pi / 4 * bore**2 * stroke).to("L")
 engine = SliderCrank(a=stroke / 2, b=rod)
 print(f"displacement {displacement.magnitude:.3f} L, crank radius a = {stroke / 2:~P}, "
       f"rod/crank ratio b/a = {(rod / (stroke / 2)).to(''):.2f~P}")
+stated(displacement, "1.49", "L")
 
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
 speeds = {"idle": Q_(800, "rpm"), "highway": Q_(3500, "rpm"), "top speed": Q_(6000, "rpm")}
@@ -165,6 +182,13 @@ for name, n in speeds.items():
     peaks[name] = peak
     print(f"{name:10s} {n:5.0f~P}: peak |d_ddot| = {peak.to('m/s^2'):8.0f~P}"
           f" = {peak.to('ft/s^2'):7.0f~P} = {in_g(peak):5.0f} g")
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(in_g(peaks["idle"]), "37"), stated(in_g(peaks["highway"]), "720", sig=2)
+stated(in_g(peaks["top speed"]), "2100", sig=2)
+w_top = speeds["top speed"].to("rad/s")
+stated(speeds["top speed"].to("turn/s"), "100"), stated(w_top, "628", "rad/s")
+stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3), stated(in_g((stroke / 2) * w_top**2), "1600", sig=2);
 
 # %% [markdown]
 # About 37 g at 800 rpm, 720 g at 3500 rpm, 2100 g at 6000 rpm: the chapter's figures,
@@ -187,7 +211,9 @@ print(f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
 
 # %% [markdown]
 # Over a revolution, in g at the three speeds. Every curve is the same shape scaled by
-# $\omega_2^2$; the right-hand plot divides it out.
+# $\omega_2^2$; the right-hand plot divides it out, and sets beside it the x acceleration of
+# the crank pin itself, $-a\omega_2^2\cos\theta_2$, the piston's motion if the rod were
+# infinitely long.
 
 # %%
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.3))
@@ -201,9 +227,9 @@ for (name, n), col in zip(speeds.items(), colours):
              lw=4 - 1.2 * colours.index(col))
 ax1.set_ylabel("piston acceleration $\\ddot d$ [g]")
 ax2.set_ylabel("$\\ddot d \\,/\\, a\\omega_2^2$")
-ax2.axhline(-1.0, color="#888888", ls=":")
-ax2.text(180, -0.93, "crank pin alone, $-a\\omega_2^2$", ha="center", fontsize=9,
-         color="#555555")
+ax2.plot(theta2.magnitude, -np.cos(theta2.to("rad").magnitude), color="#888888", ls=":",
+         lw=1.5, label="crank pin's x acceleration,\n$-a\\omega_2^2\\cos\\theta_2$")
+ax2.legend(loc="upper center", fontsize=9)
 ax2.set_title("the same curve at every speed")
 ax1.set_title("1.49 L engine: bore 77, stroke 80, rod 130 mm")
 for ax in (ax1, ax2):
@@ -233,11 +259,31 @@ for stroke_mm in (72, 80, 88):
         print(f"{stroke_mm:6.0f}mm{bore_mm:6.1f}mm{rod_mm:6.0f}mm{ratio:6.1f}"
               f"{abs(g_idle):8.0f} g{abs(g_top):8.0f} g")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+sweep_g = {(s_, k): [abs(in_g(SliderCrank(a=Q_(s_ / 2, "mm"), b=Q_(k * s_ / 2, "mm")).solve(
+    theta2="0 deg", omega2=n, order=2).d_ddot)) for n in ("800 rpm", "6000 rpm")]
+    for s_ in (72, 80, 88) for k in (3.0, 3.5)}
+lo, hi = (min(v[i] for v in sweep_g.values()) for i in (0, 1)), (max(v[i] for v in sweep_g.values()) for i in (0, 1))
+(idle_lo, top_lo), (idle_hi, top_hi) = lo, hi
+stated(top_lo, "1860", sig=3), stated(top_hi, "2360", sig=3)
+stated(idle_lo, "33"), stated(idle_hi, "42")
+stated(peaks["top speed"], "20650", "m/s^2", sig=4)
+stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN");
+
 # %% [markdown]
 # From about 1860 to 2360 g at 6000 rpm, and 33 to 42 g at 800 rpm: the claim holds for any
 # reasonable small engine. Newton's law then says what it costs: a 0.3 kg piston at 2100 g
-# needs $F = m\,\ddot d \approx 0.3 \times 20\,600 \approx 6$ kN from its rod, reversing 100
+# needs $F = m\,\ddot d \approx 0.3 \times 20\,650 \approx 6$ kN from its rod, reversing 100
 # times a second. That is why pistons are made of aluminium alloys and rods are forged.
+#
+# **The engine in motion**, at 6000 rpm: the crank pin's acceleration turns with the crank at a
+# constant size while the piston's swings between its two peaks along the cylinder (one arrow
+# scale for the whole turn; millimetres and m/s$^2$).
+
+# %%
+animate({"mechanism": "slidercrank", "a": "40 mm", "b": "130 mm", "c": "0 mm",
+         "theta2": "0 deg", "omega2": "6000 rpm", "alpha2": "0 rad/s^2"},
+        title="1.5 L engine, 6000 rpm")
 
 # %% [markdown]
 # ### A slider-crank that cannot be assembled
@@ -286,6 +332,12 @@ def draw(rod_mm, rpm):
 explore(draw, rod_mm=(80, 400, 10, 130, "mm"), rpm=(600, 7000, 100, 6000, "rpm"),
         values=[80, 130, 200, 400])
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+for rod_mm, above in ((80, "50"), (400, "10")):
+    res = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm")).solve(theta2=theta2, omega2="6000 rpm", order=2)
+    ratio = np.max(np.abs(res.d_ddot.m_as("m/s^2"))) / (0.040 * w_top.magnitude**2)
+    stated(100 * (ratio - 1), above)
+
 # %% [markdown]
 # With $b = 80$ mm ($b/a = 2$) the peak is 50 % above the crank pin's; with 400 mm it is
 # only 10 % above. Engines use $b/a$ around 3 to 3.5: a longer rod would make a taller,
@@ -333,6 +385,84 @@ explore(draw, rod_mm=(80, 400, 10, 130, "mm"), rpm=(600, 7000, 100, 6000, "rpm")
 # vanishes. The rod has its largest angular *velocity* there instead.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+half = np.max(np.abs(engine.solve(theta2=theta2, omega2="3000 rpm", order=2).d_ddot))
+stated(in_g(half), "530", sig=2), stated(half / peaks["top speed"], "0.25")
+stated(Q_(2100, "standard_gravity"), "67600", "ft/s^2", sig=3)
+stated(Q_(2100, "standard_gravity"), "811000", "in/s^2", sig=3)
+stated(Q_(1, "standard_gravity"), "32.17", "ft/s^2"), stated(Q_(1, "standard_gravity"), "386.1", "in/s^2")
+tdc = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
+assert abs(tdc.alpha3.m_as("rad/s^2")) < 1e-9 and tdc.d_ddot.magnitude < 0
+
+# %% [markdown]
+# ## Further problems
+#
+# In the style of the chapter's problem set; solve by eqs. 7.16d and 7.16e, then check with
+# `SliderCrank`. The answers are folded.
+#
+# **Problem 4.1.** An offset slider-crank has crank $a$ = 1.5 in, rod $b$ = 5 in and offset
+# $c$ = 0.5 in. At $\theta_2 = 120^\circ$ the crank turns at 50 rad/s counter-clockwise and is
+# slowing at 400 rad/s$^2$. Find $\theta_3$, $\alpha_3$ and the slider's acceleration.
+#
+# <details><summary>Answer</summary>
+#
+# $\theta_3 = 170.8^\circ$ (the rod, from the slider back to the crank pin), $\alpha_3 = 587.8$
+# rad/s$^2$, and $\ddot d = 2579$ in/s$^2$ (215.0 ft/s$^2$, 6.68 g) along $+x$.
+#
+# </details>
+#
+# **Problem 4.2.** In the 1.5 L engine above (no offset, steady speed), at which crank angles
+# is the piston's acceleration zero? Is its velocity then largest?
+#
+# <details><summary>Answer</summary>
+#
+# Near $74^\circ$ and $286^\circ$ from top dead centre, not at $90^\circ$ and $270^\circ$: the
+# rod's angle shifts them. There $\ddot d = 0$, so the piston's speed $|\dot d|$ is at its
+# largest (the speed of a smooth motion peaks where its acceleration passes through zero).
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+res = SliderCrank(a="1.5 in", b="5 in", c="0.5 in").solve(theta2="120 deg", omega2="50 rad/s",
+                                                         alpha2="-400 rad/s^2")
+stated(res.theta3, "170.8", "deg"), stated(res.alpha3, "587.8", "rad/s^2")
+stated(res.d_ddot, "2579", "in/s^2"), stated(res.d_ddot, "215.0", "ft/s^2"), stated(in_g(res.d_ddot), "6.68")
+fine = Q_(np.linspace(0, 360, 7201), "deg")
+e_fine = engine.solve(theta2=fine, omega2="6000 rpm", order=2)
+zero = fine.magnitude[np.flatnonzero(np.diff(np.sign(e_fine.d_ddot.magnitude)))]
+stated(zero[0], "74"), stated(zero[1], "286")
+speed = np.abs(e_fine.d_dot.magnitude)
+assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
+
+# %% [markdown]
+# ## Practice
+#
+# Slider-crank problems with instant feedback, for self-study (not graded, and never one of a
+# graded assignment's). Each run of the next cell draws a fresh linkage, or give a seed to come
+# back to one; then hand each answer to `p.check`, which says at once whether it is right and,
+# if not, what to look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `slidercrank`.
+
+# %%
+p = practice("slidercrank")
+p
+
+# %%
+# your answers, e.g.:  p.check("A_slider", Q_(-1200, "in/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `SliderCrank`:
+
+# %%
+p = practice("slidercrank", seed=5)
+g = p.given
+res = SliderCrank(a=g["a"], b=g["b"], c=g["c"]).solve(theta2=g["theta2"], omega2=g["omega2"],
+                                                       alpha2=g["alpha2"])
+p.check("A_slider", res.d_ddot)                # right
+p.check("A_slider", abs(res.A_A))              # the crank pin's, not the slider's
+p.check("alpha3", -res.alpha3)                 # the sign of alpha3 turned
 
 # %% [markdown]
 # ## Common mistakes
