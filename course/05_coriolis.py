@@ -15,7 +15,9 @@
 # # 5. Coriolis acceleration
 #
 # So far every point we followed was fixed on its link. This notebook lets a point *slide along a
-# link that turns*, and a fourth term appears in its acceleration.
+# link that turns*, and a fourth term appears in its acceleration. It follows the chapter's
+# treatment of the Coriolis component and of the inverted slider-crank (Robert L. Norton,
+# *Design of Machinery*, chapter 7, section 7.3: eqs. 7.17 to 7.27, Figures 7-7 and 7-8).
 #
 # **You will be able to**
 #
@@ -70,10 +72,13 @@
 # Coriolis term, and the inverted slider-crank, whose block slides on a turning link, does.
 
 # %%
+# %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, LINESTYLES, explore, in_g, use_style, vector
+from course.animation import animate
+from course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
+from exercises.practice import practice
 from solver import InvertedSliderCrank, Q_, SlottedLink
 from solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
 from solver.graphical.draw import draw_linkage, draw_polygon
@@ -116,6 +121,11 @@ r = slot.solve(**inputs)
 for name in ("A_t", "A_n", "A_coriolis", "A_slip", "A"):
     show(name, getattr(r, name))
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+parts = {k: abs(getattr(r, k)).m_as("m/s^2") for k in ("A_t", "A_n", "A_coriolis", "A_slip")}
+stated(parts["A_coriolis"], "12"), stated(parts["A_coriolis"] / parts["A_n"], "3")
+assert max(parts, key=parts.get) == "A_coriolis"
+
 # %% [markdown]
 # The Coriolis part, 12 m/s², is the largest of the four: three times the centripetal part. A
 # turning slot with a fast slip is exactly where a hand analysis must not drop it.
@@ -142,8 +152,7 @@ print(f"Coriolis is V_slip turned by {turned:+.0f} deg (omega2 < 0: clockwise)")
 # %%
 con = slotted.construct(theta2=theta, omega2=omega, alpha2=15.0, p=0.25, p_dot=1.5, p_ddot=-3.0)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.2, 1]})
-draw_linkage(con, ax=ax1)
-ax1.get_legend().remove()
+draw_linkage(con, ax=ax1, legend=False)
 draw_polygon(con, "acceleration", ax=ax2)
 legend_of(ax2, ("tangential", "normal", "coriolis", "slip", "resultant"))
 plt.show()
@@ -223,11 +232,15 @@ ax2.legend()
 ax2.set_title("Size of each part during the walk")
 plt.show()
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(in_g(walk.A_coriolis[0]), "0.15")
+assert np.ptp(in_g(walk.A_coriolis)) < 1e-12                     # the same all the way
+
 # %% [markdown]
 # At the rim the floor must supply both parts; near the centre only the Coriolis part is left,
 # and it is as large there as anywhere. About 0.15 g sideways is well below the 0.5 g of hard
-# acceleration in a car (Table 7-1, notebook 8), but it arrives *sideways* and unexpectedly, which
-# is why children stumble.
+# acceleration in a car (the chapter's Table 7-1, notebook 8), but it arrives *sideways* and
+# unexpectedly, which is why children stumble.
 #
 # ### 3. The inverted slider-crank (eqs. 7.20-7.27)
 #
@@ -277,6 +290,15 @@ plt.show()
 # pins' accelerations (the chapter's eqs. 7.27); the solver reports them as `A_A`, `A_B`, `A_BA`,
 # and the Coriolis term alone as `A_coriolis`.
 #
+# (Two more slips of the scan, both lost dots on $b$. The Coriolis term of eq. 7.24a, the
+# loop written out with $j(\cos\theta + j\sin\theta)$, prints as $-2b\omega_3 j(\ldots)$: it
+# is $-2\dot b\omega_3 j(\ldots)$, as eq. 7.20b above and the next line, eq. 7.24b, have it. And
+# eq. 7.27b, $\mathbf{A}_{BA}$ in cartesian form, prints its last two terms as
+# $2b\omega_3(\sin\theta_3 - j\cos\theta_3) - b(\cos\theta_3 + j\sin\theta_3)$: they are
+# $2\dot b\omega_3(\ldots)$ and $\ddot b(\ldots)$, the Coriolis and slip terms of eq. 7.21 with
+# the sign of $\mathbf{A}_{BA} = -\mathbf{A}_{AB}$. Without the dots neither term has the
+# dimension of an acceleration. The cell below checks the corrected eq. 7.27b.)
+#
 # Our linkage: crank $a$ = 4 in, $O_4B$ = $c$ = 3 in, ground $d$ = 8 in, slide at $\gamma$ = 90°
 # to $O_4B$. The crank turns clockwise and is being slowed down, as in the chapter's Figure 7-8.
 
@@ -324,6 +346,11 @@ A_AB = (b * (1j * r.alpha3.magnitude - w3**2) + 2j * bd * w3 + bdd) * e3   # eq.
 assert np.isclose(A_AB, (r.A_A - r.A_B).to("in/s^2").magnitude, rtol=1e-12)
 # the solver also splits A_A into the point of link 4 under A, the slip and the Coriolis parts
 assert np.isclose((r.A_A4 + r.A_slip + r.A_coriolis - r.A_A).to("in/s^2").magnitude, 0, atol=1e-9)
+# eq. 7.27b with its dots restored: A_BA in cartesian form
+s3, c3 = np.sin(t3), np.cos(t3)
+A_BA_727b = (b * r.alpha3.magnitude * (s3 - 1j * c3) + b * w3**2 * (c3 + 1j * s3)
+             + 2 * bd * w3 * (s3 - 1j * c3) - bdd * (c3 + 1j * s3))
+assert np.isclose(A_BA_727b, r.A_BA.to("in/s^2").magnitude, rtol=1e-12)
 
 # %% [markdown]
 # The graphical construction of `solver.graphical` does the same analysis by geometry alone (it
@@ -338,9 +365,8 @@ con = invertedslidercrank.construct(a=a_m, c=c_m, d=d_m, gamma=np.pi / 2, theta2
                                     omega2=w2, alpha2=al2)
 assert np.isclose(con.values["alpha4"], r.alpha4.magnitude, rtol=1e-9)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.4), gridspec_kw={"width_ratios": [1.3, 1]})
-draw_linkage(con, ax=ax1)
-ax1.get_legend().remove()
-draw_polygon(con, "acceleration", ax=ax2)
+draw_linkage(con, ax=ax1, units="US", legend=False)   # the linkage was given in inches
+draw_polygon(con, "acceleration", ax=ax2, units="US")
 legend_of(ax2, ("tangential", "normal", "coriolis", "slip", "resultant"), lines=True)
 plt.show()
 
@@ -386,9 +412,9 @@ step.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, v["A_A_t"], "tangential", "acce
 step.lines += [Line("rr", v["A_A4_n"], e3, "acceleration"), Line("pp", v["A_A"], pp, "acceleration")]
 wrong.steps.append(step)
 fig, axes = plt.subplots(1, 2, figsize=(11, 5))
-draw_polygon(con, "acceleration", ax=axes[0])
+draw_polygon(con, "acceleration", ax=axes[0], units="US")
 axes[0].set_title("Right: with the Coriolis vector")
-draw_polygon(wrong, "acceleration", ax=axes[1])
+draw_polygon(wrong, "acceleration", ax=axes[1], units="US")
 axes[1].set_title("Wrong: Coriolis forgotten\n(the polygon still closes)")
 plt.show()
 
@@ -429,6 +455,12 @@ print(f"largest error in alpha4: {err[worst]:+.1f} rad/s^2 at theta2 = {deg[wors
 print(f"Coriolis term: up to {np.abs(cycle.A_coriolis.to('m/s^2').magnitude).max():.1f} m/s^2; "
       f"|A_A| is {abs(cycle.A_A[0].to('m/s^2').magnitude):.1f} m/s^2 all the time")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+cor_max = np.abs(cycle.A_coriolis.to("m/s^2").magnitude).max()
+pin = abs(cycle.A_A[0].to("m/s^2").magnitude)
+stated(cor_max, "21"), stated(pin, "10"), stated(cor_max / pin, "2")
+assert np.abs(err).max() >= 0.9 * np.abs(right_a4).max()       # "as much as its own largest value"
+
 # %% [markdown]
 # The forgotten Coriolis term is not a small correction: for this linkage it reaches twice the
 # crank pin's own acceleration (21 against 10 m/s²), and the angular acceleration of link 4 comes out wrong
@@ -436,23 +468,51 @@ print(f"Coriolis term: up to {np.abs(cycle.A_coriolis.to('m/s^2').magnitude).max
 # where the block momentarily stops sliding ($\dot b = 0$, at the ends of its travel) or link 4
 # momentarily stops turning ($\omega_4 = 0$, at its extreme angles).
 #
-# ## Explore
-#
-# Move the crank and watch the parts of the acceleration at A. The Coriolis vector (green,
-# dash-dot) is always perpendicular to the slide; it shrinks to nothing where the block reverses
-# along the slide ($\dot b = 0$) or link 4 reverses ($\omega_4 = 0$), as at 85°, and it grows with
-# the square of the crank speed, like the other parts (every drawing uses one scale).
+# **In motion.** The linkage through one crank turn at a steady 10 rad/s, with the
+# accelerations of A and B and the Coriolis component at A (one arrow scale for the whole
+# turn), and a marker on the curves of $\alpha_4$ and of the three sizes: watch the green
+# Coriolis arrow vanish twice as the block stops on the slide, and twice as link 4 stops.
 
 # %%
+animate({"mechanism": "invertedslidercrank", "a": "4 in", "c": "3 in", "d": "8 in",
+         "gamma": "90 deg", "theta2": "0 deg", "omega2": "10 rad/s", "alpha2": "0 rad/s^2"},
+        kinds=("resultant", "coriolis"), title="Inverted slider-crank")
+
+# %% [markdown]
+# ## Explore
+#
+# Move the crank and watch the acceleration of A with its Coriolis and slip parts (the other
+# parts are left out, to keep the drawing clear). The Coriolis vector (green,
+# dash-dot) is always perpendicular to the slide; it shrinks to nearly nothing where the block
+# reverses along the slide ($\dot b = 0$) or link 4 reverses ($\omega_4 = 0$), as at 85°, and it
+# grows with the square of the crank speed, like the other parts. Every position is drawn in
+# one frame at one scale (in/s$^2$, set for 10 rad/s).
+
+# %%
+frames = [invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, t, 10.0, 0.0)
+          for t in np.radians(np.arange(0, 360, 10))]
+KINDS = ("resultant", "coriolis", "slip")
+shown = [a for f in frames for a in f.items("linkage")[0] if a.kind in KINDS]
+big = max(abs(a.vector) for a in shown) / 0.0254   # in/s^2
+SCALE = 4.0 / big                                  # the longest arrow at 10 rad/s: 4 in
+ends = [z / 0.0254 for f in frames for z in f.linkage.points.values()]
+ends += [a.start / 0.0254 + SCALE * a.vector / 0.0254 for a in shown]
+BOX = (min(z.real for z in ends) - 0.5, max(z.real for z in ends) + 0.5,
+       min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
+at85 = invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, np.radians(85), 10.0, 0.0)
+assert abs(at85.values["A_coriolis"]) < 0.02 * cor_max        # "nearly nothing" at 85 deg
+
+
 def draw(theta2=60, omega2=10):
     con = invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, np.radians(theta2), omega2, 0.0)
     v = con.values
-    fig, ax = plt.subplots(figsize=(6.2, 4.6))
-    draw_linkage(con, ax=ax, scale=0.006)  # one drawing scale for every position and speed
-    ax.get_legend().remove()
-    ax.set_title(rf"$|\mathbf{{A}}_{{coriolis}}|$ = {abs(v['A_coriolis']):.1f} m/s$^2$"
-                 rf"  ($\dot b$ = {v['b_dot']:.2f} m/s, $\omega_4$ = {v['omega4']:.2f} rad/s)",
-                 fontsize=10)
+    fig, ax = plt.subplots(figsize=(4.4, 4.6))
+    draw_linkage(con, ax=ax, units="US", scale=SCALE, box=BOX, legend=False, lines=False,
+                 kinds=KINDS,
+                 title=rf"$|\mathbf{{A}}_{{cor}}|$ = {abs(v['A_coriolis']) / 0.0254:.0f} in/s$^2$"
+                       f"\n($\\dot b$ = {v['b_dot'] / 0.0254:.1f} in/s, "
+                       f"$\\omega_4$ = {v['omega4']:.2f} rad/s)")
+    ax.title.set_fontsize(10)
     return fig
 
 
@@ -513,7 +573,90 @@ explore(draw, theta2=(0, 360, 5, 60, "deg"), omega2=(1, 20, 1, 10, "rad/s"), val
 # the slot turns.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+q1 = slot.solve(theta2="0 deg", omega2="-30 rpm", alpha2=0, p="200 mm", p_dot="2 m/s", p_ddot=0)
+stated(abs(q1.A_coriolis), "12.6", "m/s^2"), stated(Q_(30, "rpm"), "3.1416", "rad/s")
+assert np.isclose(np.angle(q1.A_coriolis.magnitude, deg=True), -90)   # along -y
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set (its Figure 7-7 is the model); work them with eq.
+# 7.19, then check with `SlottedLink` or `InvertedSliderCrank`. The answers are folded.
+#
+# **Problem 5.1.** A slotted arm lies along $+x$ and turns counter-clockwise at a steady 60 rpm.
+# A block in its slot is 200 mm from the pivot, sliding *inward* at 2 m/s, and its inward slip
+# is speeding up at 5 m/s$^2$. Find each part of the block's acceleration and the total.
+#
+# <details><summary>Answer</summary>
+#
+# $\omega_2 = 2\pi$ rad/s, $\dot p = -2$ m/s, $\ddot p = -5$ m/s$^2$, $\alpha_2 = 0$. Tangential:
+# 0. Normal: $p\omega_2^2 = 7.896$ m/s$^2$ toward the pivot ($-x$). Coriolis: $2\dot p\omega_2 =
+# 25.13$ m/s$^2$, the inward slip velocity turned 90° counter-clockwise: along $-y$. Slip: 5
+# m/s$^2$ along $-x$. Total: $(-12.90 - 25.13j)$ m/s$^2$, 28.25 m/s$^2$ at $-117.2^\circ$: the
+# Coriolis part is the largest.
+#
+# </details>
+#
+# **Problem 5.2.** For the inverted slider-crank of example 3 (4, 3, 8 in, $\gamma = 90^\circ$)
+# at a steady 10 rad/s, at which crank angles is the Coriolis term zero, and why there?
+#
+# <details><summary>Answer</summary>
+#
+# Where $2\dot b\,\omega_3 = 0$: where the block stops on the slide, $\dot b = 0$, at
+# $\theta_2 = 0^\circ$ and $180^\circ$ (the crank pin on the ground line, where $b$ is longest and
+# shortest), and where link 4 stops turning, $\omega_4 = 0$, at its two extreme angles,
+# $\theta_2 = 82.8^\circ$ and $331.0^\circ$.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+f1 = slot.solve(theta2="0 deg", omega2="60 rpm", alpha2=0, p="200 mm", p_dot="-2 m/s", p_ddot="-5 m/s^2")
+parts = {k: complex(getattr(f1, k).m_as("m/s^2")) for k in ("A_t", "A_n", "A_coriolis", "A_slip", "A")}
+assert abs(parts["A_t"]) < 1e-12
+stated(-parts["A_n"].real, "7.896"), stated(-parts["A_coriolis"].imag, "25.13"), stated(-parts["A_slip"].real, "5")
+stated(parts["A"].real, "-12.90"), stated(parts["A"].imag, "-25.13"), stated(abs(parts["A"]), "28.25")
+stated(np.angle(parts["A"], deg=True), "-117.2")
+
+fine = Q_(np.linspace(0, 2 * np.pi, 7201), "rad")
+turn = isc.solve(theta2=fine, omega2="10 rad/s", alpha2=0)
+stops = {}
+for name, rate in (("b_dot", turn.b_dot.magnitude), ("omega4", turn.omega4.magnitude)):
+    stops[name] = np.degrees(fine.magnitude[np.flatnonzero(np.diff(np.sign(rate)))])
+stated(stops["b_dot"][0], "0"), stated(stops["b_dot"][1], "180")
+stated(stops["omega4"][0], "82.8"), stated(stops["omega4"][1], "331.0");
+
+# %% [markdown]
+# ## Practice
+#
+# Inverted slider-crank problems with their Coriolis term, with instant feedback, for self-study
+# (not graded, and never one of a graded assignment's). Each run of the next cell draws a fresh
+# linkage, or give a seed to come back to one; hand each answer to `p.check`, which says at once
+# whether it is right and, if not, what to look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `coriolis`.
+
+# %%
+p = practice("coriolis")
+p
+
+# %%
+# your answers, e.g.:  p.check("A_cor_mag", Q_(850, "in/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `InvertedSliderCrank`:
+
+# %%
+p = practice("coriolis", seed=5)
+g = p.given
+model = InvertedSliderCrank(a=g["a"], c=g["c"], d=g["d"], gamma=g["gamma"])
+res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
+p.check("A_cor_mag", abs(res.A_coriolis))       # right
+p.check("A_cor_mag", abs(res.A_coriolis) / 2)   # the factor 2 of eq. 7.19b forgotten
+p.check("alpha4", res.alpha4)                   # right
+
+# %% [markdown]
 # ## Common mistakes
 #
 # - **Leaving the Coriolis vector out of a graphical polygon.** The polygon still closes and gives a
