@@ -17,7 +17,8 @@
 # Five links in one loop have two degrees of freedom. Gear the second crank to the first and one
 # input drives them both: the **geared fivebar**. Its gear ratio and the phase at which the gears
 # are meshed are two design knobs a fourbar does not have, and they change the coupler's
-# accelerations a great deal.
+# accelerations a great deal. This notebook follows section 7.4 of the chapter (Robert L.
+# Norton, *Design of Machinery*, chapter 7, eqs. 7.28 and 7.29).
 #
 # **You will be able to**
 #
@@ -29,6 +30,7 @@
 #   accelerations and the acceleration of the coupler pin B.
 
 # %%
+# %matplotlib inline
 from fractions import Fraction
 
 import matplotlib.pyplot as plt
@@ -36,7 +38,9 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
-from coursekit import COLORS, explore, in_g, polar, use_style
+from course.animation import animate
+from course.kit import COLORS, explore, in_g, polar, stated, use_style
+from exercises.practice import practice
 from solver import FourBar, GearedFiveBar, Q_
 from solver.graphical import fivebar as fivebar_construction
 from solver.graphical.draw import draw_linkage
@@ -151,17 +155,19 @@ print(f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both a
 # pitch radius of 8/3 in and gear 5 of 4/3 in.
 
 # %%
+pitch2, pitch5 = 4 * 2 / 3, 4 * 1 / 3        # in: r2 + r5 = 4 in and r2 / r5 = |lambda| = 2
+stated(pitch2, "2.667"), stated(pitch5, "1.333")
 m = Q_(1, "in").to("m").magnitude
 con = fivebar_construction.construct(a * m, b * m, c * m, d * m, 4 * m, -2, np.radians(30),
                                      t2, w2, al2)
 assert np.isclose(con.values["alpha3"], r.alpha3.magnitude, rtol=1e-9)
 fig, ax = plt.subplots(figsize=(9, 6))
-draw_linkage(con, ax=ax)
-for centre, radius in ((0, 8 / 3 * m), (4 * m, 4 / 3 * m)):
+draw_linkage(con, ax=ax, units="US")           # the linkage was given in inches
+for centre, radius in ((0, pitch2), (4, pitch5)):             # drawn in inches
     ax.add_patch(plt.Circle((centre, 0), radius, fill=False, color="#999999", ls=":", lw=1.2))
 (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-ax.set_xlim(min(x0, -0.08), max(x1, (4 + 4 / 3) * m + 0.01))   # room for the pitch circles
-ax.set_ylim(min(y0, -0.1), y1)
+ax.set_xlim(min(x0, -pitch2 - 0.3), max(x1, 4 + pitch5 + 0.3))   # room for the pitch circles
+ax.set_ylim(min(y0, -pitch2 - 0.3), y1)
 plt.show()
 
 # %% [markdown]
@@ -222,10 +228,15 @@ ax1.set_title(r"Coupler 3's angular acceleration ($\phi$ = 30°)")
 ax2.set_title(r"Acceleration of the coupler pin B ($\phi$ = 30°)")
 plt.show()
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+peak_of = {lam: np.nanmax(in_g(sweep(lam, 30)[1].A_B)) for lam in (-1, -2, 2)}
+stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3");
+
 # %% [markdown]
 # With $\lambda = -1$ the two cranks mirror each other and the coupler moves gently; at
 # $\lambda = \pm 2$ crank 5 turns twice per input turn and the couplers are whipped round twice as
-# often: the peaks of $|\mathbf{A}_B|$ are three to four times higher. Positive and negative ratios of the same size
+# often: the peaks of $|\mathbf{A}_B|$ are 3.4 ($\lambda = -2$) and 4.3 ($\lambda = +2$) times
+# higher. Positive and negative ratios of the same size
 # give quite different motions, because the cranks then turn the same way or opposite ways.
 #
 # ### 4. The phase
@@ -241,6 +252,7 @@ fig, ax = plt.subplots(figsize=(8, 4.2))
 for lam, colour in ((-1, COLORS["normal"]), (-1.5, COLORS["slip"]), (-2, COLORS["tangential"]),
                     (2, COLORS["coriolis"])):
     peak = [np.nanmax(in_g(sweep(lam, p, points_per_turn=180)[1].A_B)) for p in phis]
+    spread = {**globals().get("spread", {}), lam: max(peak) / min(peak)}
     ax.plot(phis, peak, "o-", ms=3, color=colour, label=rf"$\lambda$ = {lam:+g}")
 ax.set_xlabel(r"phase $\phi$ [deg]")
 ax.set_ylabel(r"largest $|\mathbf{A}_B|$ in a cycle [g]")
@@ -249,6 +261,9 @@ ax.set_yscale("log")
 ax.set_title(r"Peak acceleration of B at $\omega_2$ = 20 rad/s: the phase matters")
 ax.legend()
 plt.show()
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(spread[2], "6", sig=1), stated(spread[-2], "1.7");
 
 # %% [markdown]
 # For $\lambda = +2$ the worst phase gives six times the peak acceleration of the best one; for
@@ -387,7 +402,91 @@ explore(draw, phi=(0, 360, 15, 30, "deg"), lam=(-3, 3, 0.5, -2.0))
 # A fourbar: crank 5 stays at $\phi$, so C is a fixed pivot (worked example 2 checks this).
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert Fraction(-2.5) == Fraction(-5, 2) and cycle_turns(-2.5) == 2
+steady, doubled = (fivebar.solve(theta2="60 deg", omega2=w, alpha2=0) for w in ("20 rad/s", "40 rad/s"))
+stated(doubled.alpha3 / steady.alpha3, "4"), stated(abs(doubled.A_B) / abs(steady.A_B), "4")
+stated(GearedFiveBar(**geometry, lam=-2, phi="30 deg").solve(
+    theta2="60 deg", omega2="20 rad/s", alpha2="10 rad/s^2").alpha5, "-20", "rad/s^2");
+
+# %% [markdown]
+# **In motion.** Example 1's linkage ($\lambda = -2$, $\phi = 30^\circ$) through one input turn
+# at a steady 20 rad/s: crank 5 turns twice, the other way, and the coupler pin B is whipped
+# round twice. The arrows (one scale for the whole turn) are the accelerations of A, B and C;
+# the marker runs along the curves of $\alpha_3$, $\alpha_4$ and the three sizes.
+
+# %%
+animate({"mechanism": "fivebar", **geometry, "lam": -2, "phi": "30 deg", "theta2": "0 deg",
+         "omega2": "20 rad/s", "alpha2": "0 rad/s^2"}, title="Geared fivebar, $\\lambda$ = -2")
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set; solve them with eqs. 7.28 and 7.29, then check
+# with `GearedFiveBar`. The answers are folded.
+#
+# **Problem 6.1.** The linkage of example 1 ($a = d = 1.5$ in, $b = c = 4$ in, $f = 4$ in) with
+# external gears of ratio $\lambda = -3$ meshed at $\phi = 0$. At $\theta_2 = 0$ the input
+# turns at 15 rad/s and speeds up at 40 rad/s$^2$. Find $\theta_5$, $\alpha_5$, $\alpha_3$,
+# $\alpha_4$ and $\mathbf{A}_B$.
+#
+# <details><summary>Answer</summary>
+#
+# $\theta_5 = \lambda\theta_2 + \phi = 0$, $\alpha_5 = \lambda\alpha_2 = -120$ rad/s$^2$;
+# $\alpha_3 = 37.43$ and $\alpha_4 = -157.43$ rad/s$^2$; $\mathbf{A}_B$ = 2193 in/s$^2$ at
+# $-132.4^\circ$.
+#
+# </details>
+#
+# **Problem 6.2.** How many input turns make one cycle for $\lambda = -2/3$, and how many
+# turns does crank 5 make in it?
+#
+# <details><summary>Answer</summary>
+#
+# $-2/3$ in lowest terms: three input turns, during which crank 5 makes two (the other way).
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+r61 = GearedFiveBar(**geometry, lam=-3, phi="0 deg").solve(theta2="0 deg", omega2="15 rad/s",
+                                                          alpha2="40 rad/s^2")
+stated(r61.theta5, "0", "deg"), stated(r61.alpha5, "-120", "rad/s^2")
+stated(r61.alpha3, "37.43", "rad/s^2"), stated(r61.alpha4, "-157.43", "rad/s^2")
+stated(abs(r61.A_B), "2193", "in/s^2"), stated(np.angle(r61.A_B.magnitude, deg=True), "-132.4")
+assert cycle_turns(-2 / 3) == 3
+
+# %% [markdown]
+# ## Practice
+#
+# Geared fivebar problems with instant feedback, for self-study (not graded, and never one of
+# a graded assignment's). Each run of the next cell draws a fresh linkage, or give a seed to
+# come back to one; hand each answer to `p.check`, which says at once whether it is right and,
+# if not, what to look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `fivebar`.
+
+# %%
+p = practice("fivebar")
+p
+
+# %%
+# your answers, e.g.:  p.check("alpha3", Q_(-410, "rad/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `GearedFiveBar`:
+
+# %%
+p = practice("fivebar", seed=5)
+g = p.given
+model = GearedFiveBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"], f=g["f"], lam=g["lam"],
+                      phi=g["phi"])
+res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
+p.check("alpha3", res.alpha3)          # right
+p.check("alpha4", res.alpha3)          # link 3's, not link 4's
+p.check("alpha4", res.alpha4)          # right
+
+# %% [markdown]
 # ## Common mistakes
 #
 # - **Plotting one input turn when $\lambda$ is not an integer.** The curve does not close and
