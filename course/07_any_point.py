@@ -16,7 +16,8 @@
 #
 # Once every link's $\omega$ and $\alpha$ are known, the acceleration of *any* point of *any* link
 # follows from one equation. This notebook uses it for coupler points, whose paths a designer
-# shapes, and for centres of gravity, where Newton's second law will act.
+# shapes, and for centres of gravity, where Newton's second law will act. It follows section 7.5
+# of the chapter (Robert L. Norton, *Design of Machinery*, chapter 7, eqs. 7.30 to 7.32).
 #
 # **You will be able to**
 #
@@ -29,12 +30,15 @@
 #   dynamic force analysis needs, in lbf and in newtons.
 
 # %%
+# %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
-from coursekit import COLORS, explore, in_g, polar, use_style, vector
+from course.animation import animate
+from course.kit import COLORS, explore, in_g, polar, stated, use_style, vector
+from exercises.practice import practice
 from solver import FourBar, Q_
 
 use_style()
@@ -76,13 +80,15 @@ use_style()
 #
 # The fourbar $a$ = 2 in, $b$ = 6 in, $c$ = 9 in, $d$ = 7 in at $\theta_2 = 30°$, $\omega_2$ = 10 rad/s,
 # $\alpha_2$ = -5 rad/s². The coupler is a triangular plate with the point P at $p$ = 3 in,
-# $\delta_3$ = 40°. Its centre of gravity $G_3$ is the centroid of the triangle A, B, P; the crank's
+# $\delta_3$ = 30°: the linkage, input and coupler point of the course's Example 7-1
+# (notebook 2; the chapter's example prints no numbers, **these are the course's own
+# numbers**). Its centre of gravity $G_3$ is the centroid of the triangle A, B, P; the crank's
 # and rocker's centres of gravity are at their middles.
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
 motion = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
-r = fourbar.solve(**motion, p="3 in", delta3="40 deg")
+r = fourbar.solve(**motion, p="3 in", delta3="30 deg")
 print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
 print(f"A_A = {polar(r.A_A, 'in/s^2')}")
 print(f"A_P = {polar(r.A_P, 'in/s^2')} = {polar(r.A_P, 'm/s^2')}")
@@ -91,7 +97,7 @@ print(f"A_P = {polar(r.A_P, 'in/s^2')} = {polar(r.A_P, 'm/s^2')}")
 # Eq. 7.32 written out by hand, checked against the solver:
 
 # %%
-p, delta3 = 3.0, np.radians(40)                                # in, rad
+p, delta3 = 3.0, np.radians(30)                                # in, rad
 t3, w3, a3 = r.theta3.magnitude, r.omega3.magnitude, r.alpha3.magnitude
 A_PA = p * a3 * 1j * np.exp(1j * (t3 + delta3)) - p * w3**2 * np.exp(1j * (t3 + delta3))   # eq. 7.32b
 A_P = r.A_A.to("in/s^2").magnitude + A_PA                                                  # eq. 7.32a
@@ -114,7 +120,7 @@ print(f"G3: {abs(g3):.4f} in from A at {np.degrees(np.angle(g3)):.3f} deg from A
 for name, pm in points.items():
     print(f"{name:7} A = {polar(pm.A, 'in/s^2')}   ({in_g(pm.A):.3f} g)")
 # the solver's coupler point and Result.point agree
-assert np.isclose(r.point(3, "3 in", "40 deg").si("A"), r.si("A_P"))
+assert np.isclose(r.point(3, "3 in", "30 deg").si("A"), r.si("A_P"))
 
 # %% [markdown]
 # The drawing puts each acceleration at its point (one scale for all). Points of one link
@@ -157,7 +163,7 @@ ax.set_ylim(min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
 ax.set_aspect("equal")
 ax.set_xlabel("x [in]")
 ax.set_ylabel("y [in]")
-ax.set_title("Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = 125 in/s$^2$)")
+ax.set_title(f"Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = {1 / scale:.0f} in/s$^2$)")
 plt.show()
 
 # %% [markdown]
@@ -172,9 +178,9 @@ plt.show()
 
 # %%
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
-cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="40 deg")
+cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="30 deg")
 assert cycle.valid.all()
-choices = {r"P: $p$ = 3 in, $\delta_3$ = 40°": ("3 in", "40 deg"),
+choices = {r"P: $p$ = 3 in, $\delta_3$ = 30°": ("3 in", "30 deg"),
            r"$G_3$, the centroid": (f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
            r"$p$ = 8 in, $\delta_3$ = -30°": ("8 in", "-30 deg")}
 norm = Normalize(0, 500)
@@ -236,12 +242,31 @@ ax.set_title("Force needed to accelerate each link's mass, 300 rpm")
 ax.legend()
 plt.show()
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+force = {name: np.abs((masses[name] * fast.point(*spec).A).m_as("lbf")) for name, spec in cg.items()}
+accel = {name: np.abs(fast.point(*spec).A.m_as("in/s^2")) for name, spec in cg.items()}
+stated(force["S = G2"].max(), "0.5", sig=1), stated(np.ptp(force["S = G2"]), "0")
+stated(force["G3"].max() / force["S = G2"].max(), "10", sig=1)
+stated(force["U = G4"].max() / force["S = G2"].max(), "9", sig=1)
+for name in ("G3", "U = G4"):
+    stated(np.degrees(theta.magnitude[np.argmax(force[name])]), "50", sig=1)
+assert accel["U = G4"].max() < accel["G3"].max() and masses["U = G4"] > masses["G3"]
+
 # %% [markdown]
-# At 300 rpm the crank's centre of gravity needs half a pound-force all the time; the coupler and
-# the rocker need ten times as much, both near $\theta_2 \approx 50°$, where the crank pulls the
-# coupler round fastest. The rocker's centre of gravity accelerates less than the coupler's, but
-# it is heavier: force is mass times acceleration, and both matter. These curves are the inputs
-# the dynamic force analysis (a later chapter) starts from.
+# At 300 rpm the crank's centre of gravity needs half a pound-force all the time; the coupler
+# and the rocker need nine to ten times as much, both near $\theta_2 \approx 50°$, where the
+# crank pulls the coupler round fastest. The rocker's centre of gravity accelerates less than
+# the coupler's, but it is heavier: force is mass times acceleration, and both matter. These
+# curves are the inputs the dynamic force analysis (a later chapter) starts from.
+#
+# **The coupler point in motion**: the linkage through one turn at a steady 10 rad/s, the
+# coupler curve of P dashed, the accelerations of A, B and P at one scale, and a marker on the
+# curves of $\alpha_3$, $\alpha_4$ and of the three sizes.
+
+# %%
+animate({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
+         "p": "3 in", "delta3": "30 deg", "theta2": "0 deg", "omega2": "10 rad/s",
+         "alpha2": "0 rad/s^2"}, trace=("P",), title="Coupler point P")
 #
 # ## Explore
 #
@@ -253,7 +278,7 @@ plt.show()
 NORM = Normalize(0, 600)
 
 
-def draw(delta3=40, p=3.0):
+def draw(delta3=30, p=3.0):
     res = fourbar.solve(theta2=theta, omega2="10 rad/s", p=f"{p} in", delta3=f"{delta3} deg")
     z = res.R_P.to("in").magnitude
     A = np.abs(res.A_P.to("in/s^2").magnitude)
@@ -274,7 +299,7 @@ def draw(delta3=40, p=3.0):
     return fig
 
 
-explore(draw, delta3=(0, 360, 10, 40, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
+explore(draw, delta3=(0, 360, 10, 30, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
 
 # %% [markdown]
 # ## Check yourself
@@ -327,7 +352,88 @@ explore(draw, delta3=(0, 360, 10, 40, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
 # $\alpha_4$ are not zero.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+f4 = Q_(0.6, "lb") * Q_(2, "standard_gravity")
+stated(f4, "1.2", "lbf"), stated(f4, "5.3", "N"), stated(f4, "463", "lb*in/s^2")
+stated(Q_(1, "lbf"), "386", "lb*in/s^2"), stated(Q_(1, "lbf"), "386.09", "lb*in/s^2")
+assert np.isclose(r.point(3, "0 in", "0 deg").si("A"), r.si("A_A"))          # p = 0 is A
+crank_cg = fast.point(2, "1 in", "0 deg")
+assert np.allclose(np.abs(crank_cg.A_t.magnitude), 0, atol=1e-9)            # steady crank
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set; solve them with eqs. 7.30 to 7.32 on paper, then
+# check with `FourBar` and `Result.point`. The answers are folded.
+#
+# **Problem 7.1.** In the Example 7-1 linkage at its position (the course's numbers: $\theta_2 =
+# 30^\circ$, $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s$^2$), a point U of the rocker lies
+# 6 in from $O_4$, at $\delta_4 = 20^\circ$ from the line $O_4B$. Find $\mathbf{A}_U$.
+#
+# <details><summary>Answer</summary>
+#
+# Eq. 7.31 with $u$ = 6 in and link 4's $\omega_4 = -3.461$ rad/s and $\alpha_4 = 39.43$
+# rad/s$^2$: $\mathbf{A}_U$ = 247.2 in/s$^2$ at $-104.0^\circ$.
+#
+# </details>
+#
+# **Problem 7.2.** Same linkage and input. Of the points of the coupler on the line AB
+# ($\delta_3 = 0$, $0 \le p \le 6$ in), which accelerates least, and how much?
+#
+# <details><summary>Answer</summary>
+#
+# Along AB, $\mathbf{A}_P = \mathbf{A}_A + p\,(\alpha_3 j - \omega_3^2)e^{j\theta_3}$ is linear in
+# $p$, so $|\mathbf{A}_P|$ is least at the foot of the perpendicular dropped on that line from
+# the pole of the acceleration plane. That foot is at $p = -4.12$ in, beyond A, off the
+# coupler: on AB the size only grows from A to B, and A itself accelerates least, 200.2
+# in/s$^2$ (B: 370.8 in/s$^2$).
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+U = r.point(4, "6 in", "20 deg")
+stated(r.omega4, "-3.461", "rad/s"), stated(r.alpha4, "39.43", "rad/s^2")
+stated(abs(U.A), "247.2", "in/s^2"), stated(np.angle(U.A.magnitude, deg=True), "-104.0")
+A0 = complex(r.A_A.m_as("in/s^2"))
+k = (r.alpha3.magnitude * 1j - r.omega3.magnitude**2) * np.exp(1j * r.theta3.magnitude)
+p_min = -((A0 * np.conj(k)).real) / abs(k) ** 2                   # in
+stated(p_min, "-4.12"), stated(abs(r.A_A), "200.2", "in/s^2"), stated(abs(r.A_B), "370.8", "in/s^2")
+along = np.abs(A0 + np.linspace(0, 6, 61) * k)
+assert np.all(np.diff(along) > 0)                              # grows from A to B
+
+# %% [markdown]
+# ## Practice
+#
+# Coupler-point problems with instant feedback, for self-study (not graded, and never one of a
+# graded assignment's). Each run of the next cell draws a fresh linkage and point, or give a seed
+# to come back to one; hand each answer to `p.check`, which says at once whether it is right and,
+# if not, what to look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `coupler` (with `fourbar` for
+# the pins).
+
+# %%
+p = practice("coupler")
+p
+
+# %%
+# your answers, e.g.:  p.check("A_P_mag", Q_(730, "in/s^2"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `FourBar`:
+
+# %%
+p = practice("coupler", seed=5)
+g = p.given
+res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
+    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"],
+    p=g["p"], delta3=g["delta3"])
+p.check("A_P_mag", abs(res.A_P))                # right
+p.check("A_P_mag", abs(res.A_A))                # the pin's acceleration, not the point's
+p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))   # right, a bare number in deg
+
+# %% [markdown]
 # ## Common mistakes
 #
 # - **Measuring $\delta_3$ from the wrong line.** It is the angle from line AB (the direction of

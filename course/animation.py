@@ -126,7 +126,7 @@ def _value(con, name, motion_values):
 
 
 def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitudes=None,
-            kinds=("resultant",), title=None, names=None, fps=10, dpi=96,
+            kinds=("resultant",), title=None, names=None, trace=(), fps=10, dpi=96,
             size=(7.4, 3.5)):
     """Animate ``case`` (a batch case, CONVENTIONS format) through its cycle.
 
@@ -153,6 +153,8 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
     title : str, optional
     names : dict, optional
         New names for the linkage's points, e.g. ``{"O2": "O"}``.
+    trace : sequence of str
+        Points whose paths over the cycle are drawn (e.g. ``("P",)``: a coupler curve).
     fps, dpi, size :
         Frames per second, resolution and figure size [in].
 
@@ -200,6 +202,7 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
     size_l = max(max(z.real for z in pts) - min(z.real for z in pts),
                  max(z.imag for z in pts) - min(z.imag for z in pts))
     scale = 0.45 * size_l / big if big > 0 else 1.0
+    paths = {n: np.array([con.linkage.points[n] * lf for con in cons]) for n in trace}
     ends = pts + [s + v * scale for s, v in vecs]
     m = 0.06 * size_l
     box = (min(z.real for z in ends) - m, max(z.real for z in ends) + m,
@@ -252,6 +255,9 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
                          names=names,
                          inset=False, legend=False, scale_bars=True,
                          title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$")
+            for path in paths.values():
+                ax_l.plot(path.real, path.imag, color="#9a9a9a", lw=1.0, ls=(0, (4, 2)),
+                          zorder=0)
             for mk, y in markers:
                 mk.set_data([fine[i]], [y[i]])
             for c in cursors:
