@@ -17,7 +17,9 @@
 # Machines that carry people have a limit that machines carrying parts do not: the passenger.
 # This notebook puts a linkage's accelerations in the unit people feel them in, the $g$, sets
 # them beside accelerations everyone knows, and asks whether a ride driven by a fourbar is
-# tolerable, and for how long.
+# tolerable, and for how long. It follows section 7.6 of the chapter (Robert L. Norton,
+# *Design of Machinery*, chapter 7: Table 7-1, and Figure 7-10, whose tolerance data the
+# chapter takes from Sanders and McCormick, *Human Factors in Engineering and Design*).
 #
 # **You will be able to**
 #
@@ -29,10 +31,12 @@
 # - say what such a comparison can and cannot establish.
 
 # %%
+# %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, G0, explore, in_g, use_style
+from course.kit import COLORS, G0, explore, in_g, stated, use_style
+from exercises.practice import practice
 from solver import FourBar, Q_
 
 use_style()
@@ -47,7 +51,7 @@ use_style()
 # $$ 1\,g \approx 386\ \text{in/s}^2 \approx 32.2\ \text{ft/s}^2 \approx 9.81\ \text{m/s}^2 , $$
 #
 # standardised as exactly 9.80665 m/s². (pint calls it `standard_gravity` or `g_0`; its `g` is the
-# gram. `coursekit.G0` is one standard gravity.)
+# gram. `course.kit.G0` is one standard gravity.)
 #
 # **What a rider feels.** A seat must push its rider with the force $m(\mathbf{A} - \mathbf{g})$:
 # $m\mathbf{A}$ to accelerate them and $-m\mathbf{g}$ to hold them up. Divided by $m$ this is the
@@ -57,7 +61,10 @@ use_style()
 #
 # so a rider at rest feels $1\,g$ upward (their weight), an extra $1\,g$ upward acceleration is
 # felt as twice their weight, and a free fall ($\mathbf{A} = \mathbf{g}$) as weightlessness.
-# The chapter's Table 7-1 lists everyday accelerations, *in addition to* the 1 g we live in:
+# The chapter's Table 7-1 gives approximate levels of acceleration people meet in everyday
+# life, as a feel for the numbers a design produces. It says nothing of gravity: read them as
+# the size of the acceleration $\mathbf{A}$ of the car, the seat or the aircraft, not as the
+# load felt (which adds $-\mathbf{g}$):
 #
 # | activity (Table 7-1) | acceleration |
 # |---|---|
@@ -126,6 +133,8 @@ def ride_cycle(rpm):
 
 
 t, r, A, felt, head, fore = ride_cycle(12)
+loop = r.R_P.to("m").magnitude
+stated(np.ptp(loop.real), "5", sig=1), stated(np.ptp(loop.imag), "7", sig=1), stated(t[-1], "5")
 print(f"largest |A_P|:        {np.abs(A).max():.2f} g")
 print(f"felt load |f|:        {np.abs(felt).min():.2f} g to {np.abs(felt).max():.2f} g")
 print(f"along the spine:      {head.min():+.2f} g to {head.max():+.2f} g (1 g = sitting still)")
@@ -169,6 +178,11 @@ ax2.set_title("The ride at 12 rpm")
 ax2.legend(fontsize=9, loc="upper left")
 plt.show()
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(np.abs(A).max(), "0.8"), stated(np.abs(felt).min(), "0.5"), stated(np.abs(felt).max(), "1.7")
+stated(heavy.mean() * t[-1], "1")
+assert np.abs(A).max() < 3.5 and head.mean() > np.abs(fore).mean()     # mostly along the spine
+
 # %% [markdown]
 # **Is it tolerable?** At 12 rpm the car's acceleration peaks at about 0.8 g, the level of fast
 # cornering in a car; with gravity the rider feels between about half and 1.7 times their weight,
@@ -205,6 +219,22 @@ for rpm, (peak, fmax, hmin, above) in zip(speeds, rows):
         print(f"{rpm:2d} rpm: peak |A| {peak:.2f} g, felt up to {fmax:.2f} g, spine load down to "
               f"{hmin:+.2f} g, above 2 g for {above:.2f} s per cycle")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+peak_of = dict(zip(speeds, rows[:, 0]))
+stated(peak_of[24] / peak_of[12], "4"), stated(peak_of[24], "3.2")
+
+
+def least_spine(rpm):
+    return ride_cycle(rpm)[4].min()
+
+
+lo, hi = 12.0, 24.0                                   # the speed where the spine load reaches 0
+for _ in range(30):
+    mid = 0.5 * (lo + hi)
+    lo, hi = (mid, hi) if least_spine(mid) > 0 else (lo, mid)
+floating = 0.5 * (lo + hi)
+stated(floating, "16", sig=2)
+
 # %% [markdown]
 # Doubling the speed from 12 to 24 rpm multiplies the peak acceleration by four (about 3.2 g,
 # roller-coaster level). Already near 16 rpm the load along the spine falls to zero at the top
@@ -225,6 +255,7 @@ seat = s.point(4, "600 mm", "165 deg")
 print(f"swing arc: {np.degrees(np.ptp(s.theta4.magnitude)):.0f} deg")
 print(f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
       f"(tangential up to {in_g(seat.A_t).max():.2f} g, normal up to {in_g(seat.A_n).max():.2f} g)")
+stated(np.degrees(np.ptp(s.theta4.magnitude)), "36"), stated(in_g(seat.A).max(), "0.25", sig=1)
 
 # %% [markdown]
 # Up to about a quarter of a $g$: between gentle and hard acceleration in a car. By Table 7-1 this
@@ -252,7 +283,8 @@ print(f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
 # crosses zero.
 
 # %%
-def draw(rpm=12):
+def draw(speed=12):
+    rpm = speed
     t, _, A, felt, head, fore = ride_cycle(rpm)
     turns = int(np.ceil(10 / t[-1]))                  # repeat the cycle to fill 10 s
     T = np.concatenate([t[:-1] + k * t[-1] for k in range(turns)])
@@ -272,7 +304,7 @@ def draw(rpm=12):
     return fig
 
 
-explore(draw, rpm=(6, 24, 1, 12, "rpm"))
+explore(draw, speed=(6, 24, 1, 12, "rpm"))
 
 # %% [markdown]
 # ## Check yourself
@@ -327,10 +359,81 @@ explore(draw, rpm=(6, 24, 1, 12, "rpm"))
 # rider down: they lift off the seat. A restraint (lap bar, harness) must hold them.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+stated(2000 * G0, "19600", "m/s^2", sig=3), stated(2000 * G0, "772000", "in/s^2", sig=3)
+stated(1 + 0.1, "1.1"), stated((18 / 12) ** 2, "2.25"), stated(60 / 18, "3.3")
+assert least_spine(20) < 0
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set; the answers are folded.
+#
+# **Problem 8.1.** A Ferris wheel of radius 20 m turns at a steady 2 rpm. What does a rider feel
+# at the top and at the bottom of the wheel, in g? Does the wheel belong in Table 7-1's company?
+#
+# <details><summary>Answer</summary>
+#
+# The seat accelerates toward the hub at $R\omega^2 = 20 \times (2\pi/30)^2 = 0.877$ m/s$^2$,
+# 0.0895 g. At the top that acceleration points down, so the rider feels $1 - 0.0895 = 0.911$ g;
+# at the bottom $1.089$ g. Less than the gentlest entry of Table 7-1 (0.1 g): a Ferris wheel is a
+# slow ride.
+#
+# </details>
+#
+# **Problem 8.2.** At what crank speed would the fourbar ride of example 2 first lift its
+# riders off their seats?
+#
+# <details><summary>Answer</summary>
+#
+# Where the least load along the spine reaches zero: the cell above example 3 finds it by
+# bisection, at 15.7 rpm. Below that the seat always pushes; above it the top of the loop needs a
+# restraint.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+wheel = (Q_(20, "m") * Q_(2, "rpm").to("rad/s") ** 2 / Q_(1, "rad") ** 2).to("m/s^2")
+stated(wheel, "0.877", "m/s^2"), stated(in_g(wheel), "0.0895")
+stated(1 - in_g(wheel), "0.911"), stated(1 + in_g(wheel), "1.089")
+assert in_g(wheel) < 0.1
+stated(floating, "15.7")
+
+# %% [markdown]
+# ## Practice
+#
+# Amusement-ride problems with instant feedback, for self-study (not graded, and never one of
+# a graded assignment's). Each run of the next cell draws a fresh ride, or give a seed to come
+# back to one; hand each answer to `p.check`, which says at once whether it is right and, if not,
+# what to look at (the unit, the size).
+#
+# The graded exercise family that practises this notebook is `tolerance`.
+
+# %%
+p = practice("tolerance")
+p
+
+# %%
+# your answers, e.g.:  p.check("A_g", Q_(1.2, "standard_gravity"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5: the passenger is a point on an arm
+# turning about a fixed axis, as in notebook 1:
+
+# %%
+from solver import RotatingPoint
+
+p = practice("tolerance", seed=5)
+g = p.given
+A = RotatingPoint(p=g["R"]).solve(theta2="0 deg", omega2=g["omega"], alpha2=g["alpha"]).A
+p.check("A_g", abs(A).to("standard_gravity"))       # right
+p.check("A_g", abs(A).to("m/s^2").magnitude)       # m/s^2 handed in where g was asked
+
+# %% [markdown]
 # ## Common mistakes
 #
-# - **Writing `Q_(3, "g")`.** That is three grams. Use `standard_gravity`, `g_0` or `coursekit.G0`.
+# - **Writing `Q_(3, "g")`.** That is three grams. Use `standard_gravity`, `g_0` or `course.kit.G0`.
 # - **Forgetting gravity.** The rider feels $\mathbf{A} - \mathbf{g}$, not $\mathbf{A}$; at rest
 #   $\mathbf{A} = 0$ and they still feel 1 g.
 # - **Quoting only the peak.** Tolerance depends on direction (along the spine is worst) and
