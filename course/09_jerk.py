@@ -28,10 +28,12 @@
 #   explain, with a small vibration model, why limiting jerk reduces vibration.
 
 # %%
+# %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, explore, polar, use_style
+from course.kit import COLORS, explore, polar, stated, use_style
+from exercises.practice import practice
 from solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
 
 use_style()
@@ -83,7 +85,7 @@ use_style()
 #
 # (The chapter writes the numerator out as fourteen products, $KN - KL - \ldots + KS + KT$; above
 # they are gathered by $K$ and $R$, and the cell below evaluates the chapter's form.) The
-# denominator $KU - HR = bc\sin(\theta_4 - \theta_3)$ vanishes at the toggle, as the
+# denominator $KU - HR = bc\sin(\theta_3 - \theta_4)$ vanishes at the toggle, as the
 # acceleration's did. The pins' linear jerks follow from the same rotating-vector derivative:
 #
 # $$ \begin{split}
@@ -97,6 +99,10 @@ use_style()
 # point of the same link, as for acceleration:
 #
 # $$ \mathbf{J}_P = \mathbf{J}_A + \mathbf{J}_{PA} \tag{7.41} $$
+#
+# (Just before eq. 7.41 the chapter sends the reader to "Section 7.4 (p. 319)" for the
+# acceleration of any point; that is section 7.5, the subject of notebook 7. Section 7.4 is the
+# geared fivebar.)
 
 # %% [markdown]
 # ## Worked examples
@@ -104,12 +110,14 @@ use_style()
 # ### 1. The fourbar at one position
 #
 # The fourbar of notebooks 3 and 7 ($a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in) at $\theta_2 = 30°$,
-# $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s², and a driving jerk $\varphi_2$ = 20 rad/s³.
+# $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s² with its coupler point P ($p$ = 3 in, $\delta_3$ =
+# 30°): the course's Example 7-1 (the chapter's example prints no numbers; **these are the
+# course's own numbers**), here with a driving jerk $\varphi_2$ = 20 rad/s³ added.
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
 r = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="20 rad/s^3",
-                  p="3 in", delta3="40 deg")
+                  p="3 in", delta3="30 deg")
 print(f"phi3 = jerk3 = {r.jerk3:.2f~P}, phi4 = jerk4 = {r.jerk4:.2f~P}")
 for name in ("J_A", "J_B", "J_P"):
     z = getattr(r, name)
@@ -133,12 +141,13 @@ S, T, U = c * w4**3 * np.cos(t4), 3 * c * w4 * al4 * np.sin(t4), c * np.cos(t4)
 phi4 = (K * N - K * L - K * M - K * P - K * Q + A * R - B * R - C * R + D * R - E * R - F * R
         + G * R + K * S + K * T) / (K * U - H * R)                                    # eq. 7.39
 phi3 = (A - B - C + D - E - F + G + H * phi4) / K                                      # eq. 7.36b
+assert np.isclose(K * U - H * R, b * c * np.sin(t3 - t4), rtol=1e-12)                 # KU - HR
 assert np.isclose(phi3, r.jerk3.magnitude, rtol=1e-12)
 assert np.isclose(phi4, r.jerk4.magnitude, rtol=1e-12)
 e4 = np.exp(1j * t4)
 J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4                # eq. 7.40
 assert np.isclose(J_B, r.J_B.to("in/s^3").magnitude, rtol=1e-12)
-J_PA = r.point(3, "3 in", "40 deg").J - r.J_A                                          # eq. 7.41
+J_PA = r.point(3, "3 in", "30 deg").J - r.J_A                                          # eq. 7.41
 assert np.isclose((r.J_A + J_PA - r.J_P).to("in/s^3").magnitude, 0, atol=1e-9)
 print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as the solver says")
 
@@ -177,6 +186,10 @@ plt.show()
 print(f"largest difference: {error.max() / np.abs(jerk3).max():.1e} of the largest jerk "
       f"(step {np.degrees(h)} deg); halving the step divides it by about 4")
 assert error.max() < 1e-3 * np.abs(jerk3).max()
+coarse = cyc.alpha3.magnitude[::2]                                 # the same check at step 2h
+numeric2 = 10.0 * (np.roll(coarse, -1) - np.roll(coarse, 1)) / (4 * h)
+numeric2[[0, -1]] = 10.0 * (coarse[1] - coarse[-2]) / (4 * h)
+stated(np.abs(numeric2 - jerk3[::2]).max() / error.max(), "4", sig=1)
 
 # %% [markdown]
 # The check above is at steady speed, where $\varphi_2 = 0$. The next cell checks one instant of
@@ -216,7 +229,7 @@ assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_
 # %%
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 deg = np.degrees(theta.magnitude)
-cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="40 deg")
+cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="30 deg")
 engine = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="3000 rpm", alpha2=0)
 isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg").solve(
     theta2=theta, omega2="10 rad/s", alpha2=0)
@@ -248,6 +261,8 @@ for ax in axes.flat:
 plt.show()
 print(f"piston: largest |d'''| = {np.abs(engine.d_dddot.to('m/s^3').magnitude).max():.3g} m/s^3 "
       f"at 3000 rpm; at 6000 rpm it would be 8 times that")
+twice = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
+stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).max(), "8")
 
 # %% [markdown]
 # The curves are smooth wherever the linkage is far from a toggle: a linkage driven at steady speed
@@ -383,7 +398,85 @@ explore(draw, theta2=(0, 360, 5, 60, "deg"), values=(30, 100, 200, 300))
 # vibration, as example 4 shows.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+steady = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2=0)
+J_A = steady.J_A.to("in/s^3").magnitude
+assert np.isclose(J_A, -2 * 10**3 * 1j * np.exp(1j * np.radians(30)))     # -a omega2^3 j e^{j theta2}
+assert np.isclose(np.angle(J_A / steady.V_A.magnitude, deg=True) % 360, 180)  # opposite the velocity
+e2 = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
+stated(np.abs(e2.d_ddot.magnitude).max() / np.abs(SliderCrank(a="40 mm", b="130 mm").solve(
+    theta2=theta, omega2="3000 rpm", alpha2=0).d_ddot.magnitude).max(), "4")
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set; solve them with eqs. 7.35 to 7.40, then check
+# with `FourBar`. The answers are folded.
+#
+# **Problem 9.1.** The Example 7-1 fourbar (the course's numbers) runs at a steady 10 rad/s.
+# At $\theta_2 = 120^\circ$ find $\varphi_3$, $\varphi_4$ and $\mathbf{J}_B$.
+#
+# <details><summary>Answer</summary>
+#
+# With $\alpha_2 = \varphi_2 = 0$: $\varphi_3 = -103.4$ rad/s$^3$, $\varphi_4 = -269.1$
+# rad/s$^3$, and $\mathbf{J}_B$ = 2592 in/s$^3$ at $22.0^\circ$.
+#
+# </details>
+#
+# **Problem 9.2.** The 40 mm crank, 130 mm rod engine of example 3 at a steady 3000 rpm: what
+# is the piston's jerk at top dead centre, and where in the cycle is it largest?
+#
+# <details><summary>Answer</summary>
+#
+# Zero at top dead centre: by symmetry the piston's acceleration is at its extreme there, so its
+# rate of change passes through zero. It is largest, about $1.8 \times 10^6$ m/s$^3$, near
+# $\theta_2 = 59^\circ$ (and $301^\circ$), where the acceleration climbs fastest from its peak
+# at TDC toward its zero near $74^\circ$ (notebook 4).
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+r91 = fourbar.solve(theta2="120 deg", omega2="10 rad/s", alpha2=0)
+stated(r91.jerk3, "-103.4", "rad/s^3"), stated(r91.jerk4, "-269.1", "rad/s^3")
+stated(abs(r91.J_B), "2592", "in/s^3"), stated(np.angle(r91.J_B.magnitude, deg=True), "22.0")
+tdc = SliderCrank(a="40 mm", b="130 mm").solve(theta2="0 deg", omega2="3000 rpm", alpha2=0)
+assert abs(tdc.d_dddot.m_as("m/s^3")) < 1e-6
+stated(np.abs(engine.d_dddot.m_as("m/s^3")).max(), "1.8e6")
+where = np.degrees(theta.magnitude[np.argmax(np.abs(engine.d_dddot.m_as("m/s^3")))])
+stated(min(where, 360 - where), "59")
+
+# %% [markdown]
+# ## Practice
+#
+# Jerk problems with instant feedback, for self-study (not graded, and never one of a graded
+# assignment's). Each run of the next cell draws a fresh fourbar, or give a seed to come back to
+# one; hand each answer to `p.check`, which says at once whether it is right and, if not, what to
+# look at (the unit, the sign, the size).
+#
+# The graded exercise family that practises this notebook is `jerk`.
+
+# %%
+p = practice("jerk")
+p
+
+# %%
+# your answers, e.g.:  p.check("jerk4", Q_(-2.1e4, "rad/s^3"))
+
+# %% [markdown]
+# **What a check looks like**, on the problem of seed 5, modelled with `FourBar` (the input's
+# jerk $\varphi_2$ is zero unless the problem gives one):
+
+# %%
+p = practice("jerk", seed=5)
+g = p.given
+res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
+    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
+p.check("jerk4", res.jerk4)                     # right
+p.check("jerk4", res.alpha4)                    # an angular acceleration, not a jerk
+p.check("J_B_mag", abs(res.J_B))                # right
+
+# %% [markdown]
 # ## Common mistakes
 #
 # - **Differentiating $\omega^2$ as $2\omega$.** The derivative of $-L\omega^2 e^{j\theta}$ is
