@@ -17,7 +17,9 @@
 # The fourbar, the slider-crank and the geared fivebar each had a closed form. A sixbar in
 # general does not: its loop equations must be solved numerically. This notebook writes any
 # linkage as vectors and the loops they close, solves the positions by Newton-Raphson, and gets
-# velocities, accelerations and jerks from the same matrix with no further iteration.
+# velocities, accelerations and jerks from the same matrix with no further iteration: what the
+# chapter's section 7.8 sketches in a paragraph (Robert L. Norton, *Design of Machinery*,
+# chapter 7, "Linkages of N Bars"), worked out.
 #
 # **You will be able to**
 #
@@ -30,12 +32,13 @@
 #   and near a limit (toggle) position, and read the solver's answer there.
 
 # %%
+# %matplotlib inline
 import copy
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from coursekit import COLORS, explore, use_style, vector
+from course.kit import COLORS, explore, stated, use_style, vector
 from solver import AccelabError, FourBar, Q_, VectorLoopLinkage
 from solver.vectorloops.examples import sixbar_slider, watt2_sixbar
 
@@ -119,6 +122,10 @@ assert np.allclose(np.exp(1j * q), np.exp(1j * np.array([closed.theta3.magnitude
 print(f"theta3 = {np.degrees(q[0]) % 360:.6f} deg, theta4 = {np.degrees(q[1]) % 360:.6f} deg "
       f"(closed form: {closed.theta3.to('deg').magnitude:.6f}, {closed.theta4.to('deg').magnitude:.6f})")
 
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert history[4] < 1e-12 < history[3] and history[0] > 0.1        # round-off after four steps
+assert all(history[k + 1] < 10 * history[k] ** 2 for k in range(3))  # each about squaring
+
 # %% [markdown]
 # The residual falls from inches to round-off in four steps, each about squaring the last: that
 # is quadratic convergence. Then the same Jacobian gives the velocities in one linear solve,
@@ -171,6 +178,10 @@ ax.set_title("Where plain Newton-Raphson ends:\nopen (blue), crossed (vermillion
 plt.show()
 print(f"open: {np.mean(ended == 0):.0%} of the guesses, crossed: {np.mean(ended == 1):.0%}, "
       f"neither after 30 steps: {np.mean(ended == 2):.1%}")
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert g3.size == 40_000
+stated(np.mean(ended == 2), "0.3", sig=1)
 
 # %% [markdown]
 # Near each solution lies a smooth basin; further away the basins interleave in thin,
@@ -407,6 +418,7 @@ sw = reach.solve(theta2=fine, omega2="12 rad/s", alpha2=0)
 ok = sw.valid
 C_y = linkage.solve(theta2=fine, omega2="12 rad/s").points["C"].R.to("in").magnitude.imag
 can = np.abs(1.0 - C_y) <= 4.0                                   # the geometric check
+stated(-C_y.max(), "1.7"), stated(-C_y.min(), "3.4")                # C below the ground line
 limits = fdeg[np.flatnonzero(np.diff(can.astype(int)))]
 print(f"geometry: the rod reaches the slide except between {limits[0]:.1f} and {limits[1]:.1f} deg")
 print(f"sweep:    valid at {ok.sum()} of {ok.size} positions, status names {sorted(set(sw.status))}")
