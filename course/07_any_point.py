@@ -267,7 +267,8 @@ assert accel["U = G4"].max() < accel["G3"].max() and masses["U = G4"] > masses["
 animate({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
          "p": "3 in", "delta3": "30 deg", "theta2": "0 deg", "omega2": "10 rad/s",
          "alpha2": "0 rad/s^2"}, trace=("P",), title="Coupler point P")
-#
+
+# %% [markdown]
 # ## Explore
 #
 # Move the coupler point around the coupler: the angle $\delta_3$ from AB turns it about A (and,

@@ -16,7 +16,8 @@
 #
 # Force follows acceleration ($F = ma$), so a quickly changing acceleration is a quickly changing
 # force: a jolt. The rate of change of acceleration is called **jerk** (also pulse or shock). This
-# notebook computes it for linkages and shows why a designer cares.
+# notebook computes it for linkages and shows why a designer cares, following section 7.7 of the
+# chapter (Robert L. Norton, *Design of Machinery*, chapter 7, eqs. 7.33 to 7.41).
 #
 # **You will be able to**
 #

@@ -422,6 +422,7 @@ for name, row in table.items():
         print(f"{name[14:]:10s}: {row['iterations']:.2f} iterations per position, "
               f"{row['us']:.1f} us/position, worst error {row['jerk']:.1e}")
 
+# %% [markdown]
 # ### 2. Finite differences: truncation against round-off
 #
 # At one position, $\theta_2 = 30°$, estimate the first three derivatives of $\theta_4$ with
