@@ -585,9 +585,9 @@ p = practice("rotation", seed=2)
 g = p.given
 point = RotatingPoint(p=g["p"])
 at_A = point.solve(theta2=g["theta_A"], omega2=g["omega"], alpha2=g["alpha"])
-p.check("A_A_x", at_A.A.real.to("in/s^2"))             # right
-p.check("A_A_x", -at_A.A.real.to("in/s^2"))            # a sign error
-p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s"))   # a velocity unit
+assert p.check("A_A_x", at_A.A.real.to("in/s^2"))      # right
+assert not p.check("A_A_x", -at_A.A.real.to("in/s^2")) # a sign error
+assert not p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s")) # a velocity unit
 
 # %% [markdown]
 # ## Common mistakes

@@ -397,9 +397,9 @@ p
 p = practice("fourbar", seed=3)
 g = dict(p.problem.given, mechanism="fourbar")
 drawn = construct_case(g).values
-p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2"))      # right
-p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2"))     # the sense read the wrong way
-p.check("alpha4", Q_(drawn["alpha4"], "rad/s"))        # not an angular acceleration
+assert p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2")) # right
+assert not p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2")) # the sense read the wrong way
+assert not p.check("alpha4", Q_(drawn["alpha4"], "rad/s")) # not an angular acceleration
 
 # %% [markdown]
 # ## Common mistakes

@@ -453,9 +453,9 @@ p = practice("fourbar", seed=5)
 g = p.given
 model = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-p.check("alpha3", res.alpha3)                          # right
-p.check("alpha3", res.alpha4)                          # the rocker's, not the coupler's
-p.check("A_B_mag", abs(res.A_B).to("m/s^2"))           # right, in other units
+assert p.check("alpha3", res.alpha3)                   # right
+assert not p.check("alpha3", res.alpha4)               # the rocker's, not the coupler's
+assert p.check("A_B_mag", abs(res.A_B).to("m/s^2"))    # right, in other units
 
 # %% [markdown]
 # ## Common mistakes

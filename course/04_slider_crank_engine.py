@@ -460,9 +460,9 @@ p = practice("slidercrank", seed=5)
 g = p.given
 res = SliderCrank(a=g["a"], b=g["b"], c=g["c"]).solve(theta2=g["theta2"], omega2=g["omega2"],
                                                        alpha2=g["alpha2"])
-p.check("A_slider", res.d_ddot)                # right
-p.check("A_slider", abs(res.A_A))              # the crank pin's, not the slider's
-p.check("alpha3", -res.alpha3)                 # the sign of alpha3 turned
+assert p.check("A_slider", res.d_ddot)         # right
+assert not p.check("A_slider", abs(res.A_A))   # the crank pin's, not the slider's
+assert not p.check("alpha3", -res.alpha3)      # the sign of alpha3 turned
 
 # %% [markdown]
 # ## Common mistakes

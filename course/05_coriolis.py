@@ -652,9 +652,9 @@ p = practice("coriolis", seed=5)
 g = p.given
 model = InvertedSliderCrank(a=g["a"], c=g["c"], d=g["d"], gamma=g["gamma"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-p.check("A_cor_mag", abs(res.A_coriolis))       # right
-p.check("A_cor_mag", abs(res.A_coriolis) / 2)   # the factor 2 of eq. 7.19b forgotten
-p.check("alpha4", res.alpha4)                   # right
+assert p.check("A_cor_mag", abs(res.A_coriolis)) # right
+assert not p.check("A_cor_mag", abs(res.A_coriolis) / 2) # the factor 2 of eq. 7.19b forgotten
+assert p.check("alpha4", res.alpha4)            # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -482,9 +482,9 @@ g = p.given
 model = GearedFiveBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"], f=g["f"], lam=g["lam"],
                       phi=g["phi"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-p.check("alpha3", res.alpha3)          # right
-p.check("alpha4", res.alpha3)          # link 3's, not link 4's
-p.check("alpha4", res.alpha4)          # right
+assert p.check("alpha3", res.alpha3)   # right
+assert not p.check("alpha4", res.alpha3) # link 3's, not link 4's
+assert p.check("alpha4", res.alpha4)   # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -430,9 +430,9 @@ g = p.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
     theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"],
     p=g["p"], delta3=g["delta3"])
-p.check("A_P_mag", abs(res.A_P))                # right
-p.check("A_P_mag", abs(res.A_A))                # the pin's acceleration, not the point's
-p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))   # right, a bare number in deg
+assert p.check("A_P_mag", abs(res.A_P))         # right
+assert not p.check("A_P_mag", abs(res.A_A))     # the pin's acceleration, not the point's
+assert p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True)) # right, a bare number in deg
 
 # %% [markdown]
 # ## Common mistakes

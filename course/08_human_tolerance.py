@@ -427,8 +427,8 @@ from solver import RotatingPoint
 p = practice("tolerance", seed=5)
 g = p.given
 A = RotatingPoint(p=g["R"]).solve(theta2="0 deg", omega2=g["omega"], alpha2=g["alpha"]).A
-p.check("A_g", abs(A).to("standard_gravity"))       # right
-p.check("A_g", abs(A).to("m/s^2").magnitude)       # m/s^2 handed in where g was asked
+assert p.check("A_g", abs(A).to("standard_gravity")) # right
+assert not p.check("A_g", abs(A).to("m/s^2").magnitude) # m/s^2 handed in where g was asked
 
 # %% [markdown]
 # ## Common mistakes

@@ -473,9 +473,9 @@ p = practice("jerk", seed=5)
 g = p.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
     theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-p.check("jerk4", res.jerk4)                     # right
-p.check("jerk4", res.alpha4)                    # an angular acceleration, not a jerk
-p.check("J_B_mag", abs(res.J_B))                # right
+assert p.check("jerk4", res.jerk4)              # right
+assert not p.check("jerk4", res.alpha4)         # an angular acceleration, not a jerk
+assert p.check("J_B_mag", abs(res.J_B))         # right
 
 # %% [markdown]
 # ## Common mistakes
