@@ -20,10 +20,11 @@ CONFIG = '''\
 import os
 
 from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPreprocessor
-from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
-                                    LimitOutput, SaveAutoGrades)
+from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, ClearOutput,
+                                    GetGrades, LimitOutput, OverwriteCells,
+                                    OverwriteKernelspec, SaveAutoGrades)
 
-from exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission
+from exercises.grader.nbgrader_step import CleanFeedback, DropDuplicateIds, JudgeSubmission
 
 c = get_config()  # noqa: F821
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -33,6 +34,8 @@ c.CourseDirectory.db_url = "sqlite:///" + os.path.join(HERE, "gradebook.db")
 c.Exchange.root = os.path.join(HERE, "exchange")
 c.CourseDirectory.ignore = [".ipynb_checkpoints", "*.pyc", "__pycache__", "feedback", ".accelab"]
 
+c.Autograde.sanitize_preprocessors = [ClearOutput, DropDuplicateIds, OverwriteKernelspec,
+                                      OverwriteCells, CheckCellMetadata]
 # autograde: each submission runs in a sandbox; its answers are judged outside it,
 # against the submitter's key (JudgeSubmission takes the place of Execute)
 c.Autograde.autograde_preprocessors = [JudgeSubmission, ClearMetadataPreprocessor, LimitOutput,

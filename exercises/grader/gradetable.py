@@ -7,6 +7,7 @@ from the grading (whose values a notebook showed, cells that failed, damage).
 import csv
 import json
 import os
+import warnings
 
 import nbformat
 
@@ -44,7 +45,7 @@ def damage(course_dir, assignment, student):
             seen[gid] = seen.get(gid, 0) + 1
     for gid, count in seen.items():
         if count > 1:
-            notes.append(f"cell {gid} appears {count} times (the first one was graded)")
+            notes.append(f"cell {gid} appears {count} times (the last one was graded)")
     got = {c.metadata.get("nbgrader", {}).get("grade_id"): c for c in nb.cells}
     for cell in ref.cells:
         meta = cell.metadata.get("nbgrader", {})
@@ -79,7 +80,8 @@ def rows_of(course_dir, assignment):
                                                                            assignment)))
     students = list(dict.fromkeys([*roster, *submitters]))
     rows = []
-    with gradebook(course_dir, course_id_of(course_dir)) as gb:
+    with warnings.catch_warnings(), gradebook(course_dir, course_id_of(course_dir)) as gb:
+        warnings.simplefilter("ignore")
         for student in students:
             row = {n: 0.0 for n in names}
             notes, penalty = [], 0.0

@@ -128,6 +128,28 @@ def save_outcome(course_dir, assignment, outcome):
         json.dump(outcome.to_dict(), fh, indent=1)
 
 
+class DropDuplicateIds(NbGraderPreprocessor):
+    """nbgrader's DeduplicateIds, mended: of cells that share a grade id the last
+    one keeps it, and the others lose their nbgrader metadata entirely (nbgrader
+    0.9 leaves an empty dict, on which its OverwriteCells fails with a
+    KeyError and the whole submission is lost)."""
+
+    def preprocess(self, nb, resources):
+        seen = set()
+        for cell in reversed(nb.cells):
+            meta = cell.get("metadata", {})
+            gid = meta.get("nbgrader", {}).get("grade_id") if "nbgrader" in meta else None
+            if "nbgrader" in meta and not gid:
+                del meta["nbgrader"]
+            elif gid in seen:
+                del meta["nbgrader"]
+                meta.pop("deletable", None)
+                meta.pop("editable", None)
+            elif gid:
+                seen.add(gid)
+        return nb, resources
+
+
 class CleanFeedback(NbGraderPreprocessor):
     """Feedback only: every error shown as its message, without a traceback."""
 
