@@ -520,7 +520,9 @@ def test_feedback_never_shows_an_expected_value(graded):
                 value = float(line.split("Q_(")[1].split(",")[0])
                 for text in (repr(value), f"{value:.6g}", f"{value:.5g}", f"{value:.4g}"):
                     pattern = r"(?<![\d.])" + re.escape(text) + r"(?![\d])"
-                    assert not re.search(pattern, html), (student, name, text)
+                    found = re.search(pattern, html)
+                    assert not found, (student, name, text,
+                                       html[max(0, found.start() - 300):found.end() + 100])
 
 
 def test_grading_again_gives_the_same_grades_and_one_student_can_be_regraded(graded):
