@@ -21,6 +21,7 @@ from pathlib import Path
 
 from docutils import nodes
 from docutils.parsers.rst import Directive, directives
+from sphinx import addnodes
 from sphinx.util import logging
 from sphinx.util.osutil import relative_uri
 
@@ -136,6 +137,199 @@ def link_images(app, doctree, docname):
         ref["reftitle"] = "Open the image at full size"
         image.replace_self(ref)
         ref.append(image)
+
+
+# ---------------------------------------------------------------- API pages
+#: the packages the API reference documents, every public module of each
+API_PACKAGES = ("solver", "exercises")
+
+
+def _modules(package):
+    """``[(module name, is a package)]`` of ``package`` and everything below it
+    (private modules, whose name starts with ``_``, left out)."""
+    import importlib
+    import pkgutil
+    top = importlib.import_module(package)
+    out = [(package, True)]
+    for info in pkgutil.walk_packages(top.__path__, package + "."):
+        if any(part.startswith("_") for part in info.name.split(".")):
+            continue
+        out.append((info.name, info.ispkg))
+    return out
+
+
+def _ours(module_name):
+    return bool(module_name) and module_name.split(".")[0] in API_PACKAGES
+
+
+def _assigned_here(module, attr):
+    """True when ``attr`` is assigned at the top level of ``module``'s source
+    (``ureg = pint.UnitRegistry()``): an object of another library that this
+    module defines for the package."""
+    import inspect
+    try:
+        source = inspect.getsource(module)
+    except (OSError, TypeError):
+        return False
+    return re.search(rf"^{re.escape(attr)}\s*=", source, re.M) is not None
+
+
+def _exports(name):
+    """``(defined, reexported)`` of a module's ``__all__``: the foreign objects
+    it defines itself (documented here as data), and ``[(public name,
+    canonical target)]`` of what it brings in from the package's other modules
+    (documented where they are defined)."""
+    import importlib
+    mod = importlib.import_module(name)
+    defined, out = [], []
+    for attr in getattr(mod, "__all__", []):
+        obj = getattr(mod, attr, None)
+        home = getattr(obj, "__module__", None) if not isinstance(obj, (int, float, str, dict,
+                                                                          list, tuple)) else None
+        qual = getattr(obj, "__qualname__", None)
+        if home == name or home is None:
+            continue
+        if _ours(home) and qual and not any(p.startswith("_") for p in home.split(".")):
+            out.append((attr, f"{home}.{qual}"))
+        elif _assigned_here(mod, attr):
+            defined.append(attr)
+        else:                       # a foreign object defined by one of our modules
+            owner = _definer(name, attr)
+            if owner:
+                out.append((attr, f"{owner}.{attr}"))
+    return defined, out
+
+
+def _definer(package, attr):
+    import importlib
+    for modname, _ in _modules(package.split(".")[0]):
+        try:
+            mod = importlib.import_module(modname)
+        except Exception:
+            continue
+        if modname != package and attr in getattr(mod, "__all__", []) and \
+                _assigned_here(mod, attr):
+            return modname
+    return None
+
+
+def api_pages():
+    """``{page name: reST text}``: one page per (sub)package, each module of it
+    with its members, from the docstrings."""
+    pages = {}
+    for package in API_PACKAGES:
+        groups = {}
+        for name, ispkg in _modules(package):
+            parts = name.split(".")
+            key = ".".join(parts[:2]) if (len(parts) > 2 or ispkg) else package
+            groups.setdefault(key, []).append((name, ispkg))
+        for key, members in groups.items():
+            title = f"``{key}``"
+            lines = [title, "=" * len(title), ""]
+            for name, ispkg in members:
+                import importlib
+                try:
+                    importlib.import_module(name)
+                except Exception as exc:   # reported, never hidden
+                    logger.warning(f"API reference: cannot import {name}: {exc}")
+                    continue
+                if name != key:
+                    sub = f"``{name}``"
+                    lines += [sub, "-" * len(sub), ""]
+                defined, exported = _exports(name)
+                lines += [f".. automodule:: {name}", "   :members:", "   :undoc-members:"]
+                skip = [a for a, _ in exported] + defined
+                if skip:         # each object is documented once, in its own module
+                    lines.append("   :exclude-members: " + ", ".join(skip))
+                lines.append("")
+                for attr in defined:
+                    lines += [f".. autodata:: {name}.{attr}", "   :no-value:", ""]
+                if ispkg:
+                    if exported:
+                        lines += [f"``{name}`` also offers, documented where they are defined:",
+                                  ""]
+                        lines += [f"* :py:obj:`{name}.{attr} <{target}>`"
+                                  for attr, target in exported]
+                        lines.append("")
+            pages[key] = "\n".join(lines)
+    return pages
+
+
+PIPE = re.compile(r"(?<!\\)\|")
+
+
+def _indent(line):
+    return len(line) - len(line.lstrip())
+
+
+SECTION_RULE = re.compile(r"^\s*-{3,}\s*$")
+TABLE_RULE = re.compile(r"^\s*=+(\s+=+)+\s*$")
+
+
+def _table_end(lines, i):
+    """Index after the simple table whose top border is line ``i``."""
+    j = i + 1
+    while j < len(lines):
+        if TABLE_RULE.match(lines[j]) and (j + 1 == len(lines) or not lines[j + 1].strip()):
+            return j + 1
+        j += 1
+    return j
+
+
+def plain_docstring(app, what, name, obj, options, lines):
+    """The docstrings are written to read as plain text too; make that text
+    valid reStructuredText before numpydoc parses it:
+
+    * ``|x|`` means an absolute value there, not a substitution: such bars are
+      escaped (not in grid tables or line blocks, whose lines start ``| `` or
+      ``+``);
+    * in the prose before the numpydoc sections, an indented block under a line
+      (a formula, the loop equation) is shown as it is written, as a literal
+      block, with or without a colon or a blank line before it.
+    """
+    for i, line in enumerate(lines):
+        stripped = line.lstrip()
+        if "|" in line and not stripped.startswith(("| ", "+")) and stripped != "|":
+            lines[i] = PIPE.sub(r"\\|", line)
+    i = 0
+    while i < len(lines) - 1:
+        if SECTION_RULE.match(lines[i + 1]) and lines[i].strip():
+            break                                  # numpydoc sections from here on
+        if TABLE_RULE.match(lines[i]):
+            i = _table_end(lines, i)
+            continue
+        head = lines[i].rstrip()
+        j = i + 1
+        while j < len(lines) and not lines[j].strip():
+            j += 1
+        if (head.strip() and j < len(lines) and _indent(lines[j]) > _indent(head)
+                and not head.lstrip().startswith((":", "..", ">>>", "``", "*", "-"))
+                and not head.endswith("::") and _indent(head) == 0):
+            end = j
+            while end < len(lines) and (not lines[end].strip()
+                                        or _indent(lines[end]) > _indent(head)):
+                end += 1
+            while end > j and not lines[end - 1].strip():
+                end -= 1
+            block = lines[j:end]
+            lines[i] = head + (":" if head.endswith(":") else " ::")
+            tail = [""] if end < len(lines) and lines[end].strip() else []
+            lines[i + 1:end] = [""] + block + tail
+            i = i + 1 + len(block) + len(tail)
+        i += 1
+
+
+def write_api_pages(app):
+    out = Path(app.srcdir) / "api" / "generated"
+    out.mkdir(parents=True, exist_ok=True)
+    pages = api_pages()
+    for old in out.glob("*.rst"):
+        if old.stem not in pages:
+            old.unlink()
+    for key, text in pages.items():
+        path = out / f"{key}.rst"
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
 
 
 # ---------------------------------------------------------------- MathJax, served locally
@@ -257,29 +451,76 @@ class FamiliesTable(Directive):
         return result
 
 
-def family_notebooks():
+#: the docs' own reading of the notebooks, for a family that no notebook names
+#: yet as one that practises it (the family, its chapter section, the notebook
+#: that teaches that section)
+TAUGHT_IN = {"rotation": ["01_rotating_point"], "fourbar": ["03_analytic_fourbar"],
+             "coupler": ["07_any_point"], "slidercrank": ["04_slider_crank_engine"],
+             "coriolis": ["05_coriolis"], "fivebar": ["06_geared_fivebar"],
+             "jerk": ["09_jerk"], "tolerance": ["08_human_tolerance"]}
+
+
+def family_notebooks(course):
     """``{family: [notebook stems]}``: the notebooks whose text names a family
-    as one that practises them (``family `name` ``, or a families line)."""
+    (a line that says "famil..." and has the family's name in backticks), else
+    :data:`TAUGHT_IN`."""
     from exercises import families
     names = list(families.FAMILIES)
     found = {n: [] for n in names}
-    course = Path(__file__).resolve().parents[2] / "course"
-    for path in sorted(course.glob("[0-9][0-9]_*.py")):
-        text = path.read_text()
-        for line in text.splitlines():
+    for path in sorted(Path(course).glob("[0-9][0-9]_*.py")):
+        for line in path.read_text().splitlines():
             if "famil" not in line.lower():
                 continue
             for n in names:
-                if re.search(rf"`{n}`", line) and path.stem not in found[n]:
+                if f"`{n}`" in line and path.stem not in found[n]:
                     found[n].append(path.stem)
+    for n in names:
+        if not found[n]:
+            found[n] = [s for s in TAUGHT_IN.get(n, [])
+                        if (Path(course) / f"{s}.py").exists()]
     return found
 
 
+class FamilyNotebooks(Directive):
+    """Which course notebook teaches each problem family."""
+    has_content = False
+
+    def run(self):
+        env = self.state.document.settings.env
+        course = Path(env.srcdir) / "course"
+        try:
+            from exercises import families
+            mapping = family_notebooks(course)
+        except Exception as exc:
+            logger.warning(f"accelab-family-notebooks: {exc}")
+            return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
+        rows = []
+        for name, generator in families.FAMILIES.items():
+            import importlib
+            module = importlib.import_module(generator.__module__)
+            cell = nodes.paragraph()
+            for k, stem in enumerate(mapping.get(name, [])):
+                if k:
+                    cell += nodes.Text(", ")
+                ref = addnodes.pending_xref("", refdomain="std", reftype="doc",
+                                            reftarget=f"/course/{stem}", refexplicit=False,
+                                            refdoc=env.docname)
+                ref += nodes.inline(text=stem)
+                cell += ref
+            if not mapping.get(name):
+                cell += nodes.Text("(none yet)")
+            rows.append([_literal(name), getattr(module, "TITLE", name), cell])
+        return [_table(["family", "what the student solves", "taught in"], rows)]
+
+
 def setup(app):
+    app.connect("builder-inited", write_api_pages)
+    app.connect("autodoc-process-docstring", plain_docstring, priority=400)  # before numpydoc
     app.connect("source-read", source_read)
     app.connect("doctree-read", number_equations)
     app.connect("doctree-resolved", link_images)
     app.connect("build-finished", write_notebooks)
     app.connect("build-finished", copy_mathjax)
     app.add_directive("accelab-families", FamiliesTable)
+    app.add_directive("accelab-family-notebooks", FamilyNotebooks)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
