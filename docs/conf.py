@@ -80,6 +80,7 @@ numpydoc_validation_checks = set()
 html_theme = "sphinx_book_theme"
 html_title = "accelab"
 html_static_path = ["_static"]
+html_favicon = "_static/favicon.svg"
 html_css_files = ["accelab.css"]
 html_js_files = ["accelab.js"]
 html_last_updated_fmt = None

@@ -117,6 +117,21 @@ def number_equations(app, doctree):
 
 
 # ---------------------------------------------------------------- figures
+def caption_images(app, doctree):
+    """A picture standing alone in its paragraph (``![what it shows](file.png)``
+    in Markdown) becomes a figure whose caption is its alt text."""
+    for para in list(doctree.findall(nodes.paragraph)):
+        kids = [k for k in para.children if not (isinstance(k, nodes.Text) and not k.strip())]
+        if len(kids) != 1 or not isinstance(kids[0], nodes.image):
+            continue
+        image = kids[0]
+        alt = image.get("alt", "").strip()
+        if not alt or isinstance(para.parent, nodes.figure):
+            continue
+        figure = nodes.figure("", image.deepcopy(), nodes.caption(alt, alt))
+        para.replace_self(figure)
+
+
 def link_images(app, doctree, docname):
     """Wrap every image that is not already a link in a link to its file."""
     if app.builder.format != "html":
@@ -518,6 +533,7 @@ def setup(app):
     app.connect("autodoc-process-docstring", plain_docstring, priority=400)  # before numpydoc
     app.connect("source-read", source_read)
     app.connect("doctree-read", number_equations)
+    app.connect("doctree-read", caption_images)
     app.connect("doctree-resolved", link_images)
     app.connect("build-finished", write_notebooks)
     app.connect("build-finished", copy_mathjax)
