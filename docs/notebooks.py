@@ -169,3 +169,33 @@ def cached(source):
     except KeyError:
         return None
     return nb
+
+
+#: figures the README shows: file name -> (notebook, n-th figure of its executed outputs)
+README_FIGURES = {"course-piston-acceleration.png": ("04_slider_crank_engine", 2)}
+
+
+def readme_figures(outdir):
+    """Write the course figures the README shows (:data:`README_FIGURES`) into
+    ``outdir``, from the executed notebooks (executing those not in the cache);
+    returns the paths written."""
+    import base64
+    written = []
+    for name, (stem, k) in README_FIGURES.items():
+        source = COURSE / f"{stem}.py"
+        nb = cached(source)
+        if nb is None:
+            nb = execute(source)
+            store(source, nb)
+        pngs = [o["data"]["image/png"] for c in nb.cells if c.cell_type == "code"
+                for o in c.get("outputs", []) if "image/png" in o.get("data", {})]
+        target = Path(outdir) / name
+        target.write_bytes(base64.b64decode(pngs[k - 1]))
+        written.append(target)
+    return written
+
+
+if __name__ == "__main__":     # python -m docs.notebooks figures/
+    import sys
+    for path in readme_figures(sys.argv[1] if len(sys.argv) > 1 else ROOT / "figures"):
+        print(f"wrote {path}")
