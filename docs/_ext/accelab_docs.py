@@ -130,6 +130,7 @@ def caption_images(app, doctree):
             continue
         figure = nodes.figure("", image.deepcopy(), nodes.caption(alt, alt))
         para.replace_self(figure)
+        doctree.set_id(figure)
 
 
 def link_images(app, doctree, docname):
@@ -281,6 +282,19 @@ SECTION_RULE = re.compile(r"^\s*-{3,}\s*$")
 TABLE_RULE = re.compile(r"^\s*=+(\s+=+)+\s*$")
 
 
+def _table_ok(lines, start, end):
+    """True when every row of the simple table ``lines[start:end]`` keeps its
+    text inside the columns its top border marks (the last column may run on)."""
+    border = lines[start]
+    gaps = [k for k in range(len(border.rstrip())) if border[k] == " "]
+    for line in lines[start:end]:
+        if TABLE_RULE.match(line):
+            continue
+        if any(k < len(line) and line[k] != " " for k in gaps):
+            return False
+    return True
+
+
 def _table_end(lines, i):
     """Index after the simple table whose top border is line ``i``."""
     j = i + 1
@@ -311,14 +325,18 @@ def plain_docstring(app, what, name, obj, options, lines):
         if SECTION_RULE.match(lines[i + 1]) and lines[i].strip():
             break                                  # numpydoc sections from here on
         if TABLE_RULE.match(lines[i]):
-            i = _table_end(lines, i)
+            end = _table_end(lines, i)
+            if not _table_ok(lines, i, end):     # show it as written, in a literal block
+                lines[i:end] = ["::", ""] + ["    " + line for line in lines[i:end]] + [""]
+                end += 3
+            i = end
             continue
         head = lines[i].rstrip()
         j = i + 1
         while j < len(lines) and not lines[j].strip():
             j += 1
         if (head.strip() and j < len(lines) and _indent(lines[j]) > _indent(head)
-                and not head.lstrip().startswith((":", "..", ">>>", "``", "*", "-"))
+                and not head.lstrip().startswith((":", "..", ">>>"))
                 and not head.endswith("::") and _indent(head) == 0):
             end = j
             while end < len(lines) and (not lines[end].strip()
@@ -327,6 +345,11 @@ def plain_docstring(app, what, name, obj, options, lines):
             while end > j and not lines[end - 1].strip():
                 end -= 1
             block = lines[j:end]
+            if head.lstrip().startswith(("``", "*", "-")):   # a list or a definition term
+                if end < len(lines) and lines[end].strip():
+                    lines.insert(end, "")       # it must end with a blank line
+                i = end
+                continue
             lines[i] = head + (":" if head.endswith(":") else " ::")
             tail = [""] if end < len(lines) and lines[end].strip() else []
             lines[i + 1:end] = [""] + block + tail
