@@ -41,6 +41,7 @@ exclude_patterns = ["_build", "*.py", "**/__pycache__", "**/.ipynb_checkpoints",
 templates_path = ["_templates"]
 suppress_warnings = ["myst.header", "mystnb.unknown_mime_type"]
 nitpicky = False
+highlight_language = "text"     # literal blocks of the docstrings are formulas, not Python
 
 # ---------------------------------------------------------------- MyST and notebooks
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".py": "myst-nb"}
