@@ -177,22 +177,28 @@ wait();
 """
 
 STATE = """
-const W = window.innerWidth;
+const W = document.documentElement.clientWidth;   // the screen (innerWidth grows when a phone zooms out)
 const box = e => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; };
 const main = document.querySelector('main') || document.body;
 const maths = [...document.querySelectorAll('div.math, span.math')]
     .filter(m => m.checkVisibility());        // not the print-only table of contents
-const clips = el => { for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
-    const o = getComputedStyle(a).overflowX; if (o !== 'visible') return true; } return false; };
+// an element may pass the screen's edge only inside a box of its own that scrolls
+// sideways and itself fits on the screen (a table, a code block, an equation)
+const scrollsInBox = el => { for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
+    if (a.matches('.bd-main, .bd-content, .bd-article-container, .bd-article, article')) break;
+    const o = getComputedStyle(a).overflowX;
+    if ((o === 'auto' || o === 'scroll') && a.getBoundingClientRect().right <= W + 1) return true; }
+  return false; };
 const sticking = [...main.querySelectorAll('*')].filter(e => {
     const r = e.getBoundingClientRect();
-    return r.width > 0 && r.right > W + 1 && r.left < W && !clips(e); })
+    return r.width > 0 && r.right > W + 1 && r.left < W && !scrollsInBox(e); })
   .slice(0, 5).map(e => e.tagName.toLowerCase() + '.' + [...e.classList].join('.') + ' right='
                   + Math.round(e.getBoundingClientRect().right));
 const article = document.querySelector('article') || main;
 return {
   title: document.title,
   width: W,
+  innerWidth: window.innerWidth,
   scrollWidth: document.documentElement.scrollWidth,
   bodyScrollWidth: document.body.scrollWidth,
   sticking: sticking,
@@ -278,7 +284,7 @@ def _problems(page, st, base, width):
             if len(img["caption"]) < 12:
                 say(f"figure without a caption: {img['src']} (alt {alt[:60]!r})")
     if width < 500:
-        if max(st["scrollWidth"], st["bodyScrollWidth"]) > st["width"] + 1:
+        if max(st["scrollWidth"], st["bodyScrollWidth"], st["innerWidth"]) > width + 1:
             say(f"page scrolls sideways at {width} px: {st['scrollWidth']} px wide")
         for what in st["sticking"]:
             say(f"wider than the screen at {width} px: {what}")
