@@ -7,7 +7,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv test test-fast demo figures site bench clean
+.PHONY: venv test test-fast demo figures docs bench clean
 
 venv: $(STAMP)
 
@@ -34,8 +34,11 @@ demo: $(STAMP)
 figures: $(STAMP)
 	$(BIN)/accelab figures --out figures
 
-site: $(STAMP)
-	$(BIN)/python -m course.build_site
+# the documentation site in build/docs: course (notebooks executed, with a cache), instructor's
+# guide, API reference, conventions, benchmark; warnings are errors
+docs: $(STAMP)
+	$(BIN)/python -m sphinx -W --keep-going -q -b html -d build/docs-doctrees docs build/docs
+	@echo "the site is in build/docs/index.html"
 
 bench: $(STAMP)
 	$(BIN)/accelab bench --out build/bench

@@ -94,7 +94,7 @@ print("A   =", cartesian(r.A, "in/s^2"), "=", polar(r.A, "in/s^2"))
 # $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
 # vectors drawn at the point they belong to:
 
-# %%
+# %% mystnb={"figure": {"caption": "A point on a link rotating about a fixed pivot, with its tangential and normal acceleration drawn at the point."}, "image": {"alt": "Drawing of a link turning about its pivot with the tangential and normal acceleration arrows at its tip."}}
 def draw_link(ax, r, scale, title=None, legend=True):
     """The link O-P and the acceleration components of P, arrows scaled by `scale`."""
     R = complex(r.R.to("in").magnitude)
@@ -214,7 +214,7 @@ assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
 # Drawn to scale, as the problem asks: the two positions on their circle with their
 # accelerations, and the vector triangle $\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Problem 7-1: the accelerations at positions A and B (left) and the vector triangle A_B = A_A + A_BA of eq. 7.4 (right)."}, "image": {"alt": "Two panels: the rotating link at two positions with acceleration arrows, and the triangle adding A_A and A_BA to give A_B."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2))
 ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
 ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
@@ -313,7 +313,7 @@ print("Case 2: A_P    =", polar(A_P2, "m/s^2"), "  A_A =", polar(A_A2, "m/s^2"))
 print("        A_PA   =", polar(A_PA2, "m/s^2"),
       f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special")
 
-# %%
+# %% mystnb={"figure": {"caption": "Acceleration difference on one body (its normal part lies along PA) against relative acceleration of two bodies (no such rule)."}, "image": {"alt": "Two panels comparing a point pair on one rotating body with a point on each of two bodies, with their acceleration vectors."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
 # case 1: carriage, link, vectors at P (drawing scale 0.3 m per 40 m/s^2)
 s1 = 0.3 / 40
@@ -371,7 +371,7 @@ plt.show()
 # \alpha/\omega^2$. The tangential part swaps sides when $\alpha$ changes sign; flipping the
 # sign of $\omega$ changes nothing at all.
 
-# %%
+# %% mystnb={"figure": {"caption": "The acceleration of the rotating point for several values of omega: its size changes, the sign of omega does not matter."}, "image": {"alt": "Small multiples of the rotating link, one per angular velocity, each with the tangential, normal and total acceleration arrows."}}
 pt_explore = RotatingPoint(p="6.5 in")
 
 

@@ -116,7 +116,7 @@ def show(step, diagram=None, figsize=(12, 5.4)):
 # to $O_4B$ and $\mathbf{V}_{BA}$ perpendicular to $AB$. Their lengths give $\omega_4 =
 # V_B/c$ and $\omega_3 = V_{BA}/b$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, velocity polygon: V_A, then V_B and V_BA found where their known directions cross."}, "image": {"alt": "Velocity polygon of the fourbar with the vectors V_A, V_B and V_BA drawn from the pole."}}
 show("V3", "velocity")
 v = con.values
 print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both clockwise)")
@@ -126,7 +126,7 @@ print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both
 # acceleration are known from eq. 7.6 and drawn at $A$: $A^n_A = a\omega_2^2$ toward $O_2$,
 # $A^t_A = a|\alpha_2|$ perpendicular to $O_2A$, clockwise here because $\alpha_2 < 0$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, first steps of the acceleration polygon: the crank pin's tangential and normal accelerations."}, "image": {"alt": "Linkage and the start of the acceleration polygon with the two components of A_A."}}
 a_in = Q_(2, "in")
 print("A_A^n:", polar(Q_(v["A_A_n"], "m/s^2"), "in/s^2"),
       f"  (a omega2^2 = {(a_in * Q_(10, 'rad/s')**2).to('in/s^2'):.4g~P})")
@@ -143,7 +143,7 @@ show("2")
 # at $O_4$. Relative to $A$, $B$ turns with link 3: $\mathbf{A}^n_{BA} = b\omega_3^2$ points
 # from $B$ to $A$ and $\mathbf{A}^t_{BA}$ lies on the line $qq$ perpendicular to $AB$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the known normal components of A_B and A_BA added, and the construction lines for the unknown tangential ones."}, "image": {"alt": "Acceleration polygon under construction with normal components and dashed construction lines."}}
 show("5")
 
 # %% [markdown]
@@ -154,7 +154,7 @@ show("5")
 # line parallel to $pp$ through the pole cross at one point; it closes the polygon and cuts
 # off $\mathbf{A}^t_{BA}$ and $\mathbf{A}^t_B$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the closed acceleration polygon: the tangential components found where the construction lines cross."}, "image": {"alt": "Linkage beside its completed acceleration polygon, with every component labelled."}}
 show("6", "acceleration", figsize=(12, 6))
 
 # %% [markdown]
@@ -180,7 +180,7 @@ assert math.isclose(v["alpha4"], abs(v["A_B_t"]) / c_len, rel_tol=1e-12)  # CCW:
 # reference: $\mathbf{A}_P = \mathbf{A}_A + \mathbf{A}^t_{PA} + \mathbf{A}^n_{PA}$, all three
 # fully known now. No construction lines are needed.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the acceleration of coupler point P found from A_A and the acceleration difference A_PA."}, "image": {"alt": "Acceleration polygon extended to the coupler point P."}}
 show("8", "point")
 print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"], "m/s^2"), "in/s^2"))
 
@@ -222,7 +222,7 @@ for t2 in (toggle - 0.05, toggle, toggle + 0.05):
 # ones, black $\mathbf{A}_A$ and $\mathbf{A}_B$ from the pole (the black dot). Every panel has
 # the same scale (the axes grow with $\omega_2^2$ when you move $\omega_2$).
 
-# %%
+# %% mystnb={"figure": {"caption": "The graphical construction at several crank angles, all at the same scale: the polygon changes shape over the cycle."}, "image": {"alt": "Small multiples of the fourbar's acceleration polygon at several crank angles."}}
 def draw(theta2, omega2):
     case = dict(EXAMPLE_7_1, theta2=f"{theta2} deg", omega2=f"{omega2} rad/s")
     case.pop("p"), case.pop("delta3")

@@ -146,7 +146,7 @@ for name, unit in (("alpha3", "rad/s^2"), ("alpha4", "rad/s^2"), ("A_A", "m/s^2"
 # The same linkage has two assemblies for every crank angle: **open** and **crossed**
 # (coupler and rocker reflected about the line $AO_4$).
 
-# %%
+# %% mystnb={"figure": {"caption": "The open and the crossed circuit of the Example 7-1 fourbar at theta2 = 30 deg, with the accelerations of A and B."}, "image": {"alt": "Two drawings of the same fourbar assembled two ways, coupler and rocker reflected about the line A O4."}}
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
 for ax, circuit in zip(axes, ("open", "crossed")):
     g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
@@ -154,7 +154,7 @@ for ax, circuit in zip(axes, ("open", "crossed")):
     ax.set_title(f"{circuit} circuit at $\\theta_2$ = 30$^\\circ$")
 plt.show()
 
-# %%
+# %% mystnb={"figure": {"caption": "The Example 7-1 linkage over a whole crank cycle: angular accelerations of links 3 and 4 for both circuits."}, "image": {"alt": "Line plots of alpha3 and alpha4 against crank angle from 0 to 360 degrees, open and crossed circuits."}}
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
 cycle = {circuit: fb.solve(theta2=theta2, omega2="10 rad/s", alpha2="-5 rad/s^2",
                            circuit=circuit, order=2)
@@ -235,7 +235,7 @@ for angle in (limit, 150.0):
     except (Singular, NotAssemblable) as exc:
         print(f"\ntheta2 = {angle:.4f} deg -> {type(exc).__name__}:\n  {exc}")
 
-# %%
+# %% mystnb={"figure": {"caption": "A non-Grashof fourbar (5, 5, 5, 7 in): the crank cannot turn round; the solver stops at the toggle positions and says so."}, "image": {"alt": "Plot of an output against crank angle that ends at two toggle positions, with the refused range marked."}}
 fig, ax = plt.subplots(figsize=(9, 3.8))
 a4 = sweep.alpha4.to("rad/s^2").magnitude
 ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
@@ -270,7 +270,7 @@ plt.show()
 # while $a + c \le b + d$, that is $c \le 11$ in; at $c = 11$ it can fold flat (a change point)
 # and beyond that the crank can no longer turn round.
 
-# %%
+# %% mystnb={"figure": {"caption": "The fourbar for several rocker lengths c: Grashof or not, and how far the crank can turn."}, "image": {"alt": "Small multiples of fourbar linkages with different rocker lengths, labelled Grashof or non-Grashof."}}
 def draw(c, omega2):
     link = FourBar(a="2 in", b="6 in", c=Q_(c, "in"), d="7 in")
     res = link.solve(theta2=theta2, omega2=Q_(omega2, "rad/s"), order=2)

@@ -117,7 +117,7 @@ print("A_B  =", cartesian(r.A_B, "m/s^2"), " (along the slide only)")
 # (perpendicular to the rod) and $\mathbf{A}_B$ a known direction (along the slide). Two lines,
 # one crossing: the same recipe as the fourbar, with the slide in the place of the rocker.
 
-# %%
+# %% mystnb={"figure": {"caption": "The slider-crank's graphical solution: linkage and acceleration polygon, with the slide taking the rocker's place."}, "image": {"alt": "Slider-crank linkage beside its velocity and acceleration polygons."}}
 con = construct_case(SLIDER_CRANK)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), width_ratios=[1.2, 1])
 draw_linkage(con, ax=ax1)
@@ -189,7 +189,7 @@ print(f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
 # Over a revolution, in g at the three speeds. Every curve is the same shape scaled by
 # $\omega_2^2$; the right-hand plot divides it out.
 
-# %%
+# %% mystnb={"figure": {"caption": "Piston acceleration of a 1.49 L engine over a crank revolution at idle, highway speed and 6000 rpm (left), and the same curves divided by omega squared (right)."}, "image": {"alt": "Two line plots of piston acceleration against crank angle, in g, for three engine speeds; on the right the three curves coincide."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.3))
 colours = ["#56B4E9", "#E69F00", "#D55E00"]
 for (name, n), col in zip(speeds.items(), colours):
@@ -264,7 +264,7 @@ except (NotAssemblable, Singular) as exc:
 # splits the positive lobe at BDC; a long rod brings the curve toward the pure cosine of the
 # crank pin (dotted).
 
-# %%
+# %% mystnb={"figure": {"caption": "Piston acceleration for several connecting-rod lengths: a shorter rod gives a higher peak."}, "image": {"alt": "Small multiples of piston acceleration against crank angle, one per rod-to-crank ratio."}}
 def draw(rod_mm, rpm):
     eng = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm"))
     res = eng.solve(theta2=theta2, omega2=Q_(rpm, "rpm"), order=2)

@@ -139,7 +139,7 @@ print(f"Coriolis is V_slip turned by {turned:+.0f} deg (omega2 < 0: clockwise)")
 # resultant closes the polygon (the chapter's Figure 7-7b and c). The block's motion is given
 # here, so no construction lines are needed: every part is known in size and direction.
 
-# %%
+# %% mystnb={"figure": {"caption": "A block sliding in a turning slot (Figure 7-7): the tangential, normal, Coriolis and slip parts of its acceleration."}, "image": {"alt": "Slotted link with the block and four acceleration arrows: tangential, normal, Coriolis and slip."}}
 con = slotted.construct(theta2=theta, omega2=omega, alpha2=15.0, p=0.25, p_dot=1.5, p_ddot=-3.0)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.2, 1]})
 draw_linkage(con, ax=ax1)
@@ -184,7 +184,7 @@ print(f"sideways push the floor must give a {m_child:~P} child: "
 # The figure draws her path over the ground (a spiral, although she walks a straight line on
 # the floor) with the two parts of her acceleration at a few instants.
 
-# %%
+# %% mystnb={"figure": {"caption": "A walk across a turning roundabout: the path over the floor with the accelerations at a few instants (left) and the size of each part during the walk (right)."}, "image": {"alt": "Left, a curved path seen from above with acceleration arrows; right, line plots of the Coriolis and centripetal parts against time."}}
 R = walk.R.to("m").magnitude
 A_cor = walk.A_coriolis.to("m/s^2").magnitude
 A_n = walk.A_n.to("m/s^2").magnitude
@@ -332,7 +332,7 @@ assert np.isclose((r.A_A4 + r.A_slip + r.A_coriolis - r.A_A).to("in/s^2").magnit
 # perpendicular to $O_4A$ (line pp). The Coriolis vector is known in size and direction from the
 # velocity analysis and sits between them.
 
-# %%
+# %% mystnb={"figure": {"caption": "The inverted slider-crank and its acceleration polygon, with the Coriolis component included."}, "image": {"alt": "Inverted slider-crank linkage beside its acceleration polygon."}}
 a_m, c_m, d_m = (Q_(x, "in").to("m").magnitude for x in (4, 3, 8))
 con = invertedslidercrank.construct(a=a_m, c=c_m, d=d_m, gamma=np.pi / 2, theta2=t2,
                                     omega2=w2, alpha2=al2)
@@ -370,7 +370,7 @@ wrong_alpha4, wrong_bdd, X = forgetful(con)
 print(f"alpha4: right {con.values['alpha4']:8.2f} rad/s^2, without Coriolis {wrong_alpha4:8.2f} rad/s^2")
 print(f"b'':    right {con.values['b_ddot']:8.3f} m/s^2,   without Coriolis {wrong_bdd:8.3f} m/s^2")
 
-# %%
+# %% mystnb={"figure": {"caption": "The acceleration polygon with the Coriolis vector (right) and without it (wrong): the wrong polygon still closes."}, "image": {"alt": "Two acceleration polygons of the same position, one including the Coriolis vector and one leaving it out."}}
 v = con.values
 wrong = Construction("invertedslidercrank", con.linkage, [], {}, "open",
                      title="Polygon closed without the Coriolis vector")
@@ -397,7 +397,7 @@ plt.show()
 # right $\alpha_4$ (from the solver, a vectorized call) with the forgetful construction at every
 # 2°.
 
-# %%
+# %% mystnb={"figure": {"caption": "Over a whole cycle: the angular acceleration of link 4 with and without the Coriolis term, and the error the omission makes."}, "image": {"alt": "Line plots of alpha4 against crank angle for the right and the wrong construction, and of their difference."}}
 theta_cycle = np.radians(np.arange(0, 360, 2.0))
 cycle = isc.solve(theta2=Q_(theta_cycle, "rad"), omega2="10 rad/s", alpha2=0)
 assert cycle.valid.all()
@@ -443,7 +443,7 @@ print(f"Coriolis term: up to {np.abs(cycle.A_coriolis.to('m/s^2').magnitude).max
 # along the slide ($\dot b = 0$) or link 4 reverses ($\omega_4 = 0$), as at 85°, and it grows with
 # the square of the crank speed, like the other parts (every drawing uses one scale).
 
-# %%
+# %% mystnb={"figure": {"caption": "The inverted slider-crank at several crank angles, drawn at one scale: the Coriolis vector vanishes where the slip or omega4 does."}, "image": {"alt": "Small multiples of the inverted slider-crank with its acceleration components at several crank angles."}}
 def draw(theta2=60, omega2=10):
     con = invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, np.radians(theta2), omega2, 0.0)
     v = con.values

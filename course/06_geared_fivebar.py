@@ -150,7 +150,7 @@ print(f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both a
 # gears' pitch circles: with external gears of ratio $-2$ on centres 4 in apart, gear 2 has a
 # pitch radius of 8/3 in and gear 5 of 4/3 in.
 
-# %%
+# %% mystnb={"figure": {"caption": "The geared fivebar of the worked example, with the accelerations of its joints."}, "image": {"alt": "Drawing of a geared fivebar linkage with two gears and acceleration arrows at its pins."}}
 m = Q_(1, "in").to("m").magnitude
 con = fivebar_construction.construct(a * m, b * m, c * m, d * m, 4 * m, -2, np.radians(30),
                                      t2, w2, al2)
@@ -192,7 +192,7 @@ print(f"lambda = 0: alpha3 and A_B agree with the fourbar at {both.sum()} positi
 # A steady 20 rad/s input ($\alpha_2 = 0$), the same phase $\phi = 30°$, three gear ratios. Each
 # curve is one solver call on an array of crank angles.
 
-# %%
+# %% mystnb={"figure": {"caption": "Over a cycle for several gear ratios: the coupler's angular acceleration and the acceleration of pin B (phase 30 deg)."}, "image": {"alt": "Two line plots against crank angle, one curve per gear ratio."}}
 def cycle_turns(lam):
     """Crank turns in one cycle: the denominator of lam as a fraction in lowest terms."""
     return Fraction(lam).limit_denominator(100).denominator
@@ -235,7 +235,7 @@ plt.show()
 # shapes. The chart shows the largest $|\mathbf{A}_B|$ over a cycle against $\phi$, for four gear
 # ratios.
 
-# %%
+# %% mystnb={"figure": {"caption": "The peak acceleration of B at omega2 = 20 rad/s against the phase angle phi, for several gear ratios: the phase matters."}, "image": {"alt": "Line plot of peak acceleration against phase angle from 0 to 360 degrees, one curve per gear ratio."}}
 phis = np.arange(0, 361, 10)
 fig, ax = plt.subplots(figsize=(8, 4.2))
 for lam, colour in ((-1, COLORS["normal"]), (-1.5, COLORS["slip"]), (-2, COLORS["tangential"]),
@@ -261,7 +261,7 @@ plt.show()
 # turn it is half a turn away from where it started and the coupler pin B is on a different
 # part of its path. One cycle needs two input turns (and three turns of crank 5).
 
-# %%
+# %% mystnb={"figure": {"caption": "With lambda = -1.5 the path of B takes two input turns to close: the path and the acceleration over one full cycle."}, "image": {"alt": "Left, the closed coupler path of B; right, acceleration of B against crank angle over two turns."}}
 deg, s = sweep(-1.5, 30)
 B = s.R_B.to("in").magnitude
 half = len(deg) // 2
@@ -295,7 +295,7 @@ print(f"lambda = -1.5 = {Fraction(-1.5)}: one cycle is {cycle_turns(-1.5)} turns
 # acceleration on one fixed colour scale, so a hot path is a fast-changing one; the title gives
 # the peaks over the whole cycle, however many input turns it takes.
 
-# %%
+# %% mystnb={"figure": {"caption": "The path of coupler pin B at four phase angles phi (lambda = -2), coloured by the size of its acceleration in g; the peak changes with the phase."}, "image": {"alt": "Four panels of the geared fivebar, each with the closed path of pin B coloured from dark (low) to yellow (high) acceleration."}}
 NORM = Normalize(vmin=0, vmax=30)   # g
 
 

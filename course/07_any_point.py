@@ -121,7 +121,7 @@ assert np.isclose(r.point(3, "3 in", "40 deg").si("A"), r.si("A_P"))
 # share $\alpha$ and $\omega$ but not their accelerations: the farther from the link's
 # instantaneous centre of zero acceleration, the larger.
 
-# %%
+# %% mystnb={"figure": {"caption": "The accelerations of the crank pin, coupler point and centres of gravity at theta2 = 30 deg, drawn at their points."}, "image": {"alt": "Fourbar drawing with acceleration arrows at A, B, the coupler point and the three centres of gravity."}}
 def linkage_points(res, i=None):
     """Pin positions [in] (complex) of a result, at index i of a sweep."""
     pick = (lambda z: z) if i is None else (lambda z: z[i])
@@ -170,7 +170,7 @@ plt.show()
 # link 3, as if the plate were larger. One sweep solves the linkage; `Result.point` then gives
 # every other point of the coupler without solving again.
 
-# %%
+# %% mystnb={"figure": {"caption": "The coupler curve of P and the size of its acceleration over a cycle."}, "image": {"alt": "Coupler curve of point P with the acceleration magnitude against crank angle."}}
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="40 deg")
 assert cycle.valid.all()
@@ -211,7 +211,7 @@ plt.show()
 # 300 rpm. pint carries the units, including the US trap that a pound of *mass* at 1 g needs a
 # pound of *force*: it knows $g_c$ and converts lb·in/s² to lbf.
 
-# %%
+# %% mystnb={"figure": {"caption": "The force needed to accelerate each link, F = m A of its centre of gravity, over a cycle."}, "image": {"alt": "Line plots of force against crank angle for the crank, coupler and rocker."}}
 masses = {"S = G2": Q_(0.2, "lb"), "G3": Q_(0.6, "lb"), "U = G4": Q_(0.8, "lb")}
 fast = fourbar.solve(theta2=theta, omega2="300 rpm", alpha2=0)
 assert fast.valid.all()
@@ -249,7 +249,7 @@ plt.show()
 # live, $p$ moves it away from A). Watch the shape of the coupler curve and where its hottest
 # stretch is.
 
-# %%
+# %% mystnb={"figure": {"caption": "Coupler points at several places on the coupler: their paths coloured by the size of their acceleration."}, "image": {"alt": "Small multiples of coupler curves coloured from low to high acceleration."}}
 NORM = Normalize(0, 600)
 
 

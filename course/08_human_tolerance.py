@@ -138,7 +138,7 @@ print(f"felt above 1.5 g for {heavy.mean() * t[-1]:.2f} s of each {t[-1]:.0f} s 
 # of the seat on the rider, per unit mass), and, over one cycle, the size of $\mathbf{A}_P$ and the
 # two body components of $\mathbf{f}$ with the Table 7-1 levels for comparison.
 
-# %%
+# %% mystnb={"figure": {"caption": "A fairground ride at 12 rpm: the car's path with the load the rider feels (left), and its two components in g against time with the Table 7-1 levels (right)."}, "image": {"alt": "Left, the car's path with arrows of felt load; right, line plots of the load in g against time with horizontal reference levels."}}
 R = r.R_P.to("m").magnitude
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8), gridspec_kw={"width_ratios": [1, 1.4]})
 ax1.plot(R.real, R.imag, color="#555555", lw=1.5)
@@ -180,7 +180,7 @@ plt.show()
 # **Speed matters quadratically.** At a steady crank speed every acceleration scales with
 # $\omega_2^2$, while each cycle gets shorter. The next cell runs the same ride from 6 to 24 rpm.
 
-# %%
+# %% mystnb={"figure": {"caption": "The same ride from 6 to 24 rpm: the peak load grows with the square of the speed."}, "image": {"alt": "Line plots of the load in g against time for ride speeds from 6 to 24 rpm."}}
 speeds = np.arange(6, 25, 2)
 rows = []
 for rpm in speeds:
@@ -251,7 +251,7 @@ print(f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
 # the square of the speed while the cycles come faster, and watch for the moment the spine load
 # crosses zero.
 
-# %%
+# %% mystnb={"figure": {"caption": "The ride at several speeds: the load over one cycle and its peak."}, "image": {"alt": "Small multiples of felt load against time, one per ride speed."}}
 def draw(rpm=12):
     t, _, A, felt, head, fore = ride_cycle(rpm)
     turns = int(np.ceil(10 / t[-1]))                  # repeat the cycle to fill 10 s

@@ -300,7 +300,7 @@ assert table["finite differences, h = 0.001 rad"]["jerk"] > 1e3 * max(closed["je
 if HAVE_MPMATH:
     assert closed["jerk"] < 1e-13 and table["graphical construction"]["acc"] < 1e-13
 
-# %%
+# %% mystnb={"figure": {"caption": "Time per position against error for each method on the 2-6-9-7 in fourbar, measured when the page was built."}, "image": {"alt": "Scatter plot on log axes of time per position against relative error, one point per method."}}
 LABEL_AT = {"kernels": (-4, -15, "right"), "units": (4, 14, "left"), "scalar": (-4, 14, "right"),
             "graphical": (4, 14, "left")}     # where each label sits [points], so none overlap
 fig, ax = plt.subplots(figsize=(9, 5.2))
@@ -367,7 +367,7 @@ for name, row in table.items():
 # equal the $\theta_2$ derivatives, so the reference is simply $\omega_4$, $\alpha_4$,
 # $\varphi_4$ at that input.
 
-# %%
+# %% mystnb={"figure": {"caption": "Central differences of theta4 at theta2 = 30 deg: the error against the step h, truncation on the right and round-off on the left."}, "image": {"alt": "Log-log plot of finite-difference error against step size, a V shape."}}
 at30 = np.radians([30.0])
 unit_motion = dict(omega2=1.0, alpha2=0.0, jerk2=0.0)
 if HAVE_MPMATH:
@@ -453,7 +453,7 @@ for i in (8, 10, 12, 16, 24):
     print(f"  delta = {delta[i]:.0e} rad: roundoff estimate {kern.roundoff[i]:.1e}, "
           f"{'refused' if refused[i] else 'answered'} {got}")
 
-# %%
+# %% mystnb={"figure": {"caption": "The triple rocker approaching its toggle: the closed forms' error grows like one over the distance until they refuse."}, "image": {"alt": "Log-log plot of error against distance to the toggle position for several methods."}}
 fig, ax = plt.subplots(figsize=(9, 5))
 ax.loglog(delta, kern.roundoff, color="#444444", ls="--", lw=1.5,
           label="the solver's estimate, roundoff")
@@ -521,7 +521,7 @@ print("alpha4  ", np.array2string(sweep.alpha4.m_as("rad/s^2"), precision=3), "r
 # over `Q_(x, "m")` builds). Then the solver itself, at 100 crank angles: one call with an array
 # against 100 calls with one angle each.
 
-# %%
+# %% mystnb={"figure": {"caption": "Where the units go: one unit conversion per call, or one per position."}, "image": {"alt": "Bar chart of the time spent with and without units, for one call over many angles and many calls with one angle."}}
 x, y = np.linspace(0.1, 0.2, 1000), np.linspace(0.3, 0.4, 1000)
 qx, qy = Q_(x, "m"), Q_(y, "in")
 ex = np.array([Q_(v, "m") for v in x], dtype=object)
@@ -582,7 +582,7 @@ print(f"FourBar: 100 calls cost {t_call['FourBar, 100 calls'] / t_call['FourBar,
 # charts in `figures/` (the README's *Speed and accuracy* section lists the numbers). First,
 # time against error for every method and setting on the fourbar of example 1, to jerk:
 
-# %%
+# %% mystnb={"figure": {"caption": "Benchmark chart 1: time per position against worst relative error, per method and setting."}, "image": {"alt": "Scatter plot on log axes of time per position against worst relative error for every method."}}
 display(Image(filename="../figures/bench-speed-accuracy.png"))
 
 # %% [markdown]
@@ -593,7 +593,7 @@ display(Image(filename="../figures/bench-speed-accuracy.png"))
 # toggle (left, the study of example 3 with more methods) and Newton-Raphson's starting guess
 # (right):
 
-# %%
+# %% mystnb={"figure": {"caption": "Benchmark chart 2: error against distance to a toggle position, and Newton-Raphson's outcomes against its starting guess."}, "image": {"alt": "Two panels: error against distance to a toggle, and converged assembly against the error of the starting guess."}}
 display(Image(filename="../figures/bench-stability.png"))
 
 # %% [markdown]
@@ -604,7 +604,7 @@ display(Image(filename="../figures/bench-stability.png"))
 # 0.005 rad off start to land on the other one, and at 0.1 rad off nearly half of them do. Last,
 # how the cost per position falls with the work done in one call:
 
-# %%
+# %% mystnb={"figure": {"caption": "Benchmark chart 3: time per position against the number of positions and of loops."}, "image": {"alt": "Log-log plot of time per position against the number of positions for several methods."}}
 display(Image(filename="../figures/bench-scaling.png"))
 
 # %% [markdown]
@@ -636,7 +636,7 @@ display(Image(filename="../figures/bench-scaling.png"))
 # $10^{-15}$, is far below anything on this plot). Find the step where the jerk is best, and see
 # what it does to the velocity.
 
-# %%
+# %% mystnb={"figure": {"caption": "Finite-difference velocities at several steps h against the exact curve."}, "image": {"alt": "Small multiples of velocity against crank angle for several finite-difference steps."}}
 exact_cycle = from_motion(closed_form.solve(**geometry, theta2=theta2, **motion))
 cycle_scale = accuracy.scales(exact_cycle)
 degrees = np.degrees(theta2)

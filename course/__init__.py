@@ -2,7 +2,7 @@
 
 The notebooks are kept as jupytext percent-format scripts (``NN_slug.py``) with
 no outputs in git; ``tests/test_course.py`` executes every one of them, and
-``python -m course.build_site`` turns the executed notebooks into the
-self-study site in ``build/site/``. :mod:`course.coursekit` holds the little
+``make docs`` publishes them as the course section of the documentation
+site in ``build/docs/`` (see ``docs/``). :mod:`course.coursekit` holds the little
 the notebooks share (the ``explore`` control, number formatting, plot style).
 """

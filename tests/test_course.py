@@ -2,9 +2,11 @@
 executed with nbclient (working directory ``course/``, ``ACCELAB_STATIC=1``),
 one test per notebook, failing on any error or any output on stderr.
 
-Each notebook is executed once per test session: :func:`executed` keeps the
-executed notebook in ``build/course/NN_slug.ipynb`` and remembers it, so the
-site test (``tests/test_site.py``) reuses it instead of executing again.
+Each notebook is executed once per test session (``docs/notebooks.py`` says
+how): :func:`executed` keeps the executed notebook in ``build/course/NN_slug.ipynb``
+and in the documentation build's execution cache, so the site test that runs
+after it (``tests/test_docs.py``) builds the course pages without executing the
+notebooks again.
 
 The fast tests check each notebook's shape against the course conventions
 (title cell, section order, folded answers, numbered equations, next link).
@@ -23,7 +25,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:  # the course package lives at the top of the repository
     sys.path.insert(0, str(ROOT))
 
-from course.build_site import NotebookFailed, execute, sources  # noqa: E402
+from docs.notebooks import NotebookFailed, execute, sources, store  # noqa: E402
 
 COURSE = ROOT / "course"
 BUILD = ROOT / "build" / "course"
@@ -37,13 +39,20 @@ _executed = {}   # stem -> (path of the executed notebook, seconds) or the excep
 def executed(source):
     """The executed notebook of ``source``, executing it the first time this
     session asks. Returns ``(path, seconds)``; re-raises a failure."""
+    import nbformat
     key = Path(source).stem
     if key not in _executed:
         t0 = time.perf_counter()
+        BUILD.mkdir(parents=True, exist_ok=True)
+        path = BUILD / f"{key}.ipynb"
         try:
-            path = execute(Path(source), BUILD)
-            _executed[key] = (path, time.perf_counter() - t0)
-        except NotebookFailed as exc:  # remembered so the site test does not re-run it
+            nb = execute(Path(source))
+            seconds = time.perf_counter() - t0
+            nbformat.write(nb, path)
+            store(source, nb, seconds)      # the docs build takes it from the cache
+            _executed[key] = (path, seconds)
+        except NotebookFailed as exc:  # remembered so that it is not run again
+            nbformat.write(exc.notebook, path)
             _executed[key] = exc
     value = _executed[key]
     if isinstance(value, Exception):
@@ -159,7 +168,7 @@ def test_explore_shows_sliders_in_a_live_kernel(tmp_path):
     (one per keyword, with their ranges) and draws through them."""
     import nbformat
     from nbclient import NotebookClient
-    from course.build_site import kernel_env
+    from docs.notebooks import kernel_env
 
     code = '''
 import matplotlib.pyplot as plt
