@@ -7,11 +7,16 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv test test-fast demo figures site bench clean
+.PHONY: venv test test-fast demo figures docs bench clean
 
 venv: $(STAMP)
 
 $(STAMP): pyproject.toml
+	@command -v bwrap >/dev/null 2>&1 || { \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    apt-get install -y -q bubblewrap >/dev/null 2>&1 || \
+	    { apt-get update -q >/dev/null && apt-get install -y -q bubblewrap >/dev/null; }; \
+	  else echo "accelab: grading runs submissions in bubblewrap: sudo apt-get install bubblewrap" >&2; fi; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e ".[test]"
@@ -29,8 +34,11 @@ demo: $(STAMP)
 figures: $(STAMP)
 	$(BIN)/accelab figures --out figures
 
-site: $(STAMP)
-	$(BIN)/python -m course.build_site
+# the documentation site in build/docs: course (notebooks executed, with a cache), instructor's
+# guide, API reference, conventions, benchmark; warnings are errors
+docs: $(STAMP)
+	$(BIN)/python -m sphinx -W --keep-going -q -b html -d build/docs-doctrees docs build/docs
+	@echo "the site is in build/docs/index.html"
 
 bench: $(STAMP)
 	$(BIN)/accelab bench --out build/bench

@@ -103,7 +103,7 @@ stated(angle["A_n"], "-150"), stated(angle["A_t"], "120");
 # $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
 # vectors drawn at the point they belong to (the chapter's Figure 7-1):
 
-# %%
+# %% mystnb={"figure": {"caption": "A point 4 in from its pivot (the chapter's Figure 7-1): tangential, normal and total acceleration drawn at the point, with scale bars in inches and in/s^2."}, "image": {"alt": "A link from O to P with three acceleration arrows at P: tangential, normal (beside the link) and the total."}}
 def rotating(p, theta2, omega2, alpha2):
     """The graphical construction of a point on a link turning about a fixed pivot
     (section 7.1), as the solver's drawings take it: inputs as quantity strings."""
@@ -222,7 +222,7 @@ assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
 # Drawn to scale, as the problem asks: the two positions on their circle with their
 # accelerations, and the vector triangle $\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Problem 7-1: the accelerations at positions A and B (left) and the vector triangle A_B = A_A + A_BA of eq. 7.4 (right)."}, "image": {"alt": "Two panels: the rotating link at two positions with acceleration arrows, and the triangle adding A_A and A_BA to give A_B."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2))
 ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
 ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
@@ -321,7 +321,7 @@ print("Case 2: A_P    =", polar(A_P2, "m/s^2"), "  A_A =", polar(A_A2, "m/s^2"))
 print("        A_PA   =", polar(A_PA2, "m/s^2"),
       f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special")
 
-# %%
+# %% mystnb={"figure": {"caption": "Acceleration difference on one body (its normal part lies along PA) against relative acceleration of two bodies (no such rule)."}, "image": {"alt": "Two panels comparing a point pair on one rotating body with a point on each of two bodies, with their acceleration vectors."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
 # case 1: carriage, link, vectors at P (drawing scale 0.3 m per 40 m/s^2)
 s1 = 0.3 / 40
@@ -383,7 +383,7 @@ stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0");
 # \alpha/\omega^2$. The tangential part swaps sides when $\alpha$ changes sign; flipping the
 # sign of $\omega$ changes nothing at all.
 
-# %%
+# %% mystnb={"figure": {"caption": "The rotating point at four values of alpha (omega = 20 rad/s), all in one frame at one arrow scale: only the tangential part changes."}, "image": {"alt": "Four drawings of the same link with its acceleration components for alpha from -1500 to 1500 rad/s^2."}}
 BOX = (-3.0, 10.5, -3.5, 10.5)     # one frame [in] ...
 SCALE = 6.5 / 12_000               # ... and one arrow scale [in per in/s^2] for every panel
 
@@ -424,7 +424,7 @@ assert abs(np.degrees(np.arctan2(500, 100**2))) < 3      # "only a few degrees"
 # dominates, and the total acceleration swings round toward the pivot. The arrows are drawn at
 # one scale; the marker runs along the curves of $\omega$ and of the sizes of the three vectors.
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: a point 6.5 in from its pivot speeding up from 2 rad/s at 10 rad/s^2 through one turn, with omega and the sizes of its acceleration components."}, "image": {"alt": "Animated drawing of a turning link with growing acceleration arrows, beside plots of omega and of the acceleration sizes with a moving marker."}}
 def speeding_up(theta2_deg, omega0=2.0, alpha=10.0):
     """omega at the angle theta2 [deg] for a start at omega0 [rad/s], constant alpha."""
     return {"omega2": f"{np.sqrt(omega0**2 + 2 * alpha * np.radians(theta2_deg)):.6f} rad/s"}
@@ -567,8 +567,12 @@ stated(np.angle(A_B, deg=True), "-75.22");
 #
 # The graded exercise family that practises this notebook is `rotation` (problem 7-1 style);
 # the instructor's guide lists every family with the notebooks that teach it.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("rotation")
 p
 

@@ -130,7 +130,7 @@ def show(step, diagram=None, figsize=(11, 5.2)):
 # to $O_4B$ and $\mathbf{V}_{BA}$ perpendicular to $AB$. Their lengths give $\omega_4 =
 # V_B/c$ and $\omega_3 = V_{BA}/b$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, velocity polygon: V_A, then V_B and V_BA found where their known directions cross."}, "image": {"alt": "Velocity polygon of the fourbar with the vectors V_A, V_B and V_BA drawn from the pole."}}
 show("V3", "velocity")
 v = con.values
 print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both clockwise)")
@@ -140,7 +140,7 @@ print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both
 # acceleration are known from eq. 7.6 and drawn at $A$: $A^n_A = a\omega_2^2$ toward $O_2$,
 # $A^t_A = a|\alpha_2|$ perpendicular to $O_2A$, clockwise here because $\alpha_2 < 0$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, first steps of the acceleration polygon: the crank pin's tangential and normal accelerations."}, "image": {"alt": "Linkage and the start of the acceleration polygon with the two components of A_A."}}
 a_in = Q_(2, "in")
 print("A_A^n:", polar(Q_(v["A_A_n"], "m/s^2"), "in/s^2"),
       f"  (a omega2^2 = {(a_in * Q_(10, 'rad/s')**2).to('in/s^2'):.4g~P})")
@@ -162,7 +162,7 @@ stated(abs(v["A_A_n"]) / abs(v["A_A_t"]), "20");
 # at $O_4$. Relative to $A$, $B$ turns with link 3: $\mathbf{A}^n_{BA} = b\omega_3^2$ points
 # from $B$ to $A$ and $\mathbf{A}^t_{BA}$ lies on the line $qq$ perpendicular to $AB$.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the known normal components of A_B and A_BA added, and the construction lines for the unknown tangential ones."}, "image": {"alt": "Acceleration polygon under construction with normal components and dashed construction lines."}}
 show("5")
 
 # %% [markdown]
@@ -181,7 +181,7 @@ show("5")
 # $\mathbf{A}^t_B$ instead, with the same lengths cut off. Laying both sides from the pole shows
 # $\mathbf{A}_B$ as the sum it is.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the closed acceleration polygon: the tangential components found where the construction lines cross."}, "image": {"alt": "Linkage beside its completed acceleration polygon, with every component labelled."}}
 show("6", "acceleration", figsize=(12, 6))
 
 # %% [markdown]
@@ -208,7 +208,7 @@ assert v["alpha3"] > 0 and v["alpha4"] > 0 and EXAMPLE_7_1["alpha2"].startswith(
 # reference: $\mathbf{A}_P = \mathbf{A}_A + \mathbf{A}^t_{PA} + \mathbf{A}^n_{PA}$, all three
 # fully known now. No construction lines are needed.
 
-# %%
+# %% mystnb={"figure": {"caption": "Example 7-1, the acceleration of coupler point P found from A_A and the acceleration difference A_PA."}, "image": {"alt": "Acceleration polygon extended to the coupler point P."}}
 show("8", "point")
 print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"], "m/s^2"), "in/s^2"))
 
@@ -251,7 +251,7 @@ for t2 in (toggle - 0.05, toggle, toggle + 0.05):
 # in one frame, at one scale (in a live notebook the frame grows with $\omega_2^2$ when you
 # move $\omega_2$, so that the polygon keeps its size on the screen).
 
-# %%
+# %% mystnb={"figure": {"caption": "The graphical construction at several crank angles, all at the same scale: the polygon changes shape over the cycle."}, "image": {"alt": "Small multiples of the fourbar's acceleration polygon at several crank angles."}}
 def draw(theta2, omega2):
     case = dict(EXAMPLE_7_1, theta2=f"{theta2} deg", omega2=f"{omega2} rad/s")
     case.pop("p"), case.pop("delta3")
@@ -382,8 +382,12 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9);
 #
 # The graded exercise family that practises this notebook is `fourbar` (with `coupler` for
 # step 8).
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("fourbar")
 p
 

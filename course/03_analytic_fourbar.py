@@ -151,7 +151,7 @@ for name, unit in (("alpha3", "rad/s^2"), ("alpha4", "rad/s^2"), ("A_A", "m/s^2"
 # The same linkage has two assemblies for every crank angle: **open** and **crossed**
 # (coupler and rocker reflected about the line $AO_4$).
 
-# %%
+# %% mystnb={"figure": {"caption": "The open and the crossed circuit of the Example 7-1 fourbar at theta2 = 30 deg: the same crank, the coupler and rocker reflected about the line A-O4."}, "image": {"alt": "Two drawings of the same fourbar assembled two ways, coupler and rocker reflected about the line A O4."}}
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
 for ax, circuit in zip(axes, ("open", "crossed")):
     g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
@@ -159,7 +159,7 @@ for ax, circuit in zip(axes, ("open", "crossed")):
     ax.set_title(f"{circuit} circuit at $\\theta_2$ = 30$^\\circ$")
 plt.show()
 
-# %%
+# %% mystnb={"figure": {"caption": "The Example 7-1 linkage over a whole crank cycle: angular accelerations of links 3 and 4 for both circuits."}, "image": {"alt": "Line plots of alpha3 and alpha4 against crank angle from 0 to 360 degrees, open and crossed circuits."}}
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
 cycle = {circuit: fb.solve(theta2=theta2, omega2="10 rad/s", alpha2="-5 rad/s^2",
                            circuit=circuit, order=2)
@@ -223,7 +223,7 @@ print("crossed(theta2) = -open(-theta2) for alpha3 and alpha4 when alpha2 = 0")
 # marker running along the curves of $\alpha_3$, $\alpha_4$ and of $|\mathbf{A}_A|$,
 # $|\mathbf{A}_B|$, $|\mathbf{A}_P|$. Watch $\mathbf{A}_B$ swell where the curves peak.
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: the Example 7-1 fourbar through one crank turn with the accelerations of A, B and P, and a marker on the curves of alpha3, alpha4 and their sizes."}, "image": {"alt": "Animated fourbar with acceleration arrows at A, B and P, beside plots with a moving marker."}}
 animate(EXAMPLE_7_1, title="Example 7-1 linkage")
 
 # %% [markdown]
@@ -260,7 +260,7 @@ for angle in (limit, 150.0):
     except (Singular, NotAssemblable) as exc:
         print(f"\ntheta2 = {angle:.4f} deg -> {type(exc).__name__}:\n  {exc}")
 
-# %%
+# %% mystnb={"figure": {"caption": "A non-Grashof fourbar (5, 5, 5, 7 in): alpha4 runs away near the toggles, and beyond them the linkage cannot be assembled."}, "image": {"alt": "Plot of alpha4 against crank angle on a symmetric log scale, with the unreachable angles shaded and the toggles marked."}}
 mu = rocker.solve(theta2="0 deg", omega2="10 rad/s")
 mu = math.degrees(abs(math.remainder(mu.theta4.m_as("rad") - mu.theta3.m_as("rad"), math.pi)))
 stated(mu, "23")                    # the transmission angle at theta2 = 0, quoted below
@@ -298,7 +298,7 @@ plt.show()
 # while $a + c \le b + d$, that is $c \le 11$ in; at $c = 11$ it can fold flat (a change point)
 # and beyond that the crank can no longer turn round.
 
-# %%
+# %% mystnb={"figure": {"caption": "The fourbar for several rocker lengths c: Grashof or not, and how far the crank can turn."}, "image": {"alt": "Small multiples of fourbar linkages with different rocker lengths, labelled Grashof or non-Grashof."}}
 def draw(c, omega2):
     link = FourBar(a="2 in", b="6 in", c=Q_(c, "in"), d="7 in")
     res = link.solve(theta2=theta2, omega2=Q_(omega2, "rad/s"), order=2)
@@ -437,8 +437,12 @@ for circuit, (a3, a4, ab, ang) in (("open", ("111.0", "271.3", "1899", "-175.3")
 # (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `fourbar`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("fourbar")
 p
 

@@ -132,7 +132,7 @@ print("A_B  =", cartesian(r.A_B, "m/s^2"), " (along the slide only)")
 # (perpendicular to the rod) and $\mathbf{A}_B$ a known direction (along the slide). Two lines,
 # one crossing: the same recipe as the fourbar, with the slide in the place of the rocker.
 
-# %%
+# %% mystnb={"figure": {"caption": "The slider-crank's graphical solution: linkage and acceleration polygon, with the slide taking the rocker's place."}, "image": {"alt": "Slider-crank linkage beside its velocity and acceleration polygons."}}
 con = construct_case(SLIDER_CRANK)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), width_ratios=[1.2, 1])
 draw_linkage(con, ax=ax1)
@@ -215,7 +215,7 @@ print(f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
 # the crank pin itself, $-a\omega_2^2\cos\theta_2$, the piston's motion if the rod were
 # infinitely long.
 
-# %%
+# %% mystnb={"figure": {"caption": "Piston acceleration of a 1.49 L engine over a crank revolution at idle, highway speed and 6000 rpm (left), and the same curves divided by omega squared (right)."}, "image": {"alt": "Two line plots of piston acceleration against crank angle, in g, for three engine speeds; on the right the three curves coincide."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.3))
 colours = ["#56B4E9", "#E69F00", "#D55E00"]
 for (name, n), col in zip(speeds.items(), colours):
@@ -280,7 +280,7 @@ stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN");
 # constant size while the piston's swings between its two peaks along the cylinder (one arrow
 # scale for the whole turn; millimetres and m/s$^2$).
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: the 1.5 L engine's slider-crank at 6000 rpm through one turn, with the accelerations of the crank pin and the piston and a marker on alpha3 and their sizes."}, "image": {"alt": "Animated slider-crank with acceleration arrows at the crank pin and the piston, beside plots with a moving marker."}}
 animate({"mechanism": "slidercrank", "a": "40 mm", "b": "130 mm", "c": "0 mm",
          "theta2": "0 deg", "omega2": "6000 rpm", "alpha2": "0 rad/s^2"},
         title="1.5 L engine, 6000 rpm")
@@ -310,7 +310,7 @@ except (NotAssemblable, Singular) as exc:
 # splits the positive lobe at BDC; a long rod brings the curve toward the pure cosine of the
 # crank pin (dotted).
 
-# %%
+# %% mystnb={"figure": {"caption": "Piston acceleration for several connecting-rod lengths: a shorter rod gives a higher peak."}, "image": {"alt": "Small multiples of piston acceleration against crank angle, one per rod-to-crank ratio."}}
 def draw(rod_mm, rpm):
     eng = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm"))
     res = eng.solve(theta2=theta2, omega2=Q_(rpm, "rpm"), order=2)
@@ -444,8 +444,12 @@ assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
 # if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `slidercrank`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("slidercrank")
 p
 

@@ -149,7 +149,7 @@ print(f"Coriolis is V_slip turned by {turned:+.0f} deg (omega2 < 0: clockwise)")
 # resultant closes the polygon (the chapter's Figure 7-7b and c). The block's motion is given
 # here, so no construction lines are needed: every part is known in size and direction.
 
-# %%
+# %% mystnb={"figure": {"caption": "A block sliding in a turning slot (Figure 7-7): the tangential, normal, Coriolis and slip parts of its acceleration."}, "image": {"alt": "Slotted link with the block and four acceleration arrows: tangential, normal, Coriolis and slip."}}
 con = slotted.construct(theta2=theta, omega2=omega, alpha2=15.0, p=0.25, p_dot=1.5, p_ddot=-3.0)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.2, 1]})
 draw_linkage(con, ax=ax1, legend=False)
@@ -193,7 +193,7 @@ print(f"sideways push the floor must give a {m_child:~P} child: "
 # The figure draws her path over the ground (a spiral, although she walks a straight line on
 # the floor) with the two parts of her acceleration at a few instants.
 
-# %%
+# %% mystnb={"figure": {"caption": "A walk across a turning roundabout: the path over the floor with the accelerations at a few instants (left) and the size of each part during the walk (right)."}, "image": {"alt": "Left, a curved path seen from above with acceleration arrows; right, line plots of the Coriolis and centripetal parts against time."}}
 R = walk.R.to("m").magnitude
 A_cor = walk.A_coriolis.to("m/s^2").magnitude
 A_n = walk.A_n.to("m/s^2").magnitude
@@ -359,7 +359,7 @@ assert np.isclose(A_BA_727b, r.A_BA.to("in/s^2").magnitude, rtol=1e-12)
 # perpendicular to $O_4A$ (line pp). The Coriolis vector is known in size and direction from the
 # velocity analysis and sits between them.
 
-# %%
+# %% mystnb={"figure": {"caption": "The inverted slider-crank and its acceleration polygon, with the Coriolis component included."}, "image": {"alt": "Inverted slider-crank linkage beside its acceleration polygon."}}
 a_m, c_m, d_m = (Q_(x, "in").to("m").magnitude for x in (4, 3, 8))
 con = invertedslidercrank.construct(a=a_m, c=c_m, d=d_m, gamma=np.pi / 2, theta2=t2,
                                     omega2=w2, alpha2=al2)
@@ -396,7 +396,7 @@ wrong_alpha4, wrong_bdd, X = forgetful(con)
 print(f"alpha4: right {con.values['alpha4']:8.2f} rad/s^2, without Coriolis {wrong_alpha4:8.2f} rad/s^2")
 print(f"b'':    right {con.values['b_ddot']:8.3f} m/s^2,   without Coriolis {wrong_bdd:8.3f} m/s^2")
 
-# %%
+# %% mystnb={"figure": {"caption": "The acceleration polygon with the Coriolis vector (right) and without it (wrong): the wrong polygon still closes."}, "image": {"alt": "Two acceleration polygons of the same position, one including the Coriolis vector and one leaving it out."}}
 v = con.values
 wrong = Construction("invertedslidercrank", con.linkage, [], {}, "open",
                      title="Polygon closed without the Coriolis vector")
@@ -423,7 +423,7 @@ plt.show()
 # right $\alpha_4$ (from the solver, a vectorized call) with the forgetful construction at every
 # 2°.
 
-# %%
+# %% mystnb={"figure": {"caption": "Over a whole cycle: the angular acceleration of link 4 with and without the Coriolis term, and the error the omission makes."}, "image": {"alt": "Line plots of alpha4 against crank angle for the right and the wrong construction, and of their difference."}}
 theta_cycle = np.radians(np.arange(0, 360, 2.0))
 cycle = isc.solve(theta2=Q_(theta_cycle, "rad"), omega2="10 rad/s", alpha2=0)
 assert cycle.valid.all()
@@ -473,7 +473,7 @@ assert np.abs(err).max() >= 0.9 * np.abs(right_a4).max()       # "as much as its
 # turn), and a marker on the curves of $\alpha_4$ and of the three sizes: watch the green
 # Coriolis arrow vanish twice as the block stops on the slide, and twice as link 4 stops.
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: the inverted slider-crank through one turn at 10 rad/s with the accelerations of A and B and the Coriolis component at A, and a marker on alpha4 and the three sizes."}, "image": {"alt": "Animated inverted slider-crank with acceleration arrows and a green Coriolis arrow, beside plots with a moving marker."}}
 animate({"mechanism": "invertedslidercrank", "a": "4 in", "c": "3 in", "d": "8 in",
          "gamma": "90 deg", "theta2": "0 deg", "omega2": "10 rad/s", "alpha2": "0 rad/s^2"},
         kinds=("resultant", "coriolis"), title="Inverted slider-crank")
@@ -488,7 +488,7 @@ animate({"mechanism": "invertedslidercrank", "a": "4 in", "c": "3 in", "d": "8 i
 # grows with the square of the crank speed, like the other parts. Every position is drawn in
 # one frame at one scale (in/s$^2$, set for 10 rad/s).
 
-# %%
+# %% mystnb={"figure": {"caption": "The inverted slider-crank at four crank angles, in one frame and at one scale: the Coriolis component at A nearly vanishes at 85 deg."}, "image": {"alt": "Four drawings of the inverted slider-crank with the acceleration of A, its Coriolis and slip parts, and the acceleration of B."}}
 frames = [invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, t, 10.0, 0.0)
           for t in np.radians(np.arange(0, 360, 10))]
 KINDS = ("resultant", "coriolis", "slip")
@@ -636,8 +636,12 @@ stated(stops["omega4"][0], "82.8"), stated(stops["omega4"][1], "331.0");
 # whether it is right and, if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `coriolis`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("coriolis")
 p
 

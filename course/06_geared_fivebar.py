@@ -154,7 +154,7 @@ print(f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both a
 # gears' pitch circles: with external gears of ratio $-2$ on centres 4 in apart, gear 2 has a
 # pitch radius of 8/3 in and gear 5 of 4/3 in.
 
-# %%
+# %% mystnb={"figure": {"caption": "The geared fivebar of example 1 drawn to scale with the accelerations at A, B and C and the gears' pitch circles (dotted)."}, "image": {"alt": "Geared fivebar linkage in inches with acceleration arrows at its pins and two dotted pitch circles."}}
 pitch2, pitch5 = 4 * 2 / 3, 4 * 1 / 3        # in: r2 + r5 = 4 in and r2 / r5 = |lambda| = 2
 stated(pitch2, "2.667"), stated(pitch5, "1.333")
 m = Q_(1, "in").to("m").magnitude
@@ -198,7 +198,7 @@ print(f"lambda = 0: alpha3 and A_B agree with the fourbar at {both.sum()} positi
 # A steady 20 rad/s input ($\alpha_2 = 0$), the same phase $\phi = 30°$, three gear ratios. Each
 # curve is one solver call on an array of crank angles.
 
-# %%
+# %% mystnb={"figure": {"caption": "Over a cycle for several gear ratios: the coupler's angular acceleration and the acceleration of pin B (phase 30 deg)."}, "image": {"alt": "Two line plots against crank angle, one curve per gear ratio."}}
 def cycle_turns(lam):
     """Crank turns in one cycle: the denominator of lam as a fraction in lowest terms."""
     return Fraction(lam).limit_denominator(100).denominator
@@ -246,7 +246,7 @@ stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3"
 # shapes. The chart shows the largest $|\mathbf{A}_B|$ over a cycle against $\phi$, for four gear
 # ratios.
 
-# %%
+# %% mystnb={"figure": {"caption": "The peak acceleration of B at omega2 = 20 rad/s against the phase angle phi, for several gear ratios: the phase matters."}, "image": {"alt": "Line plot of peak acceleration against phase angle from 0 to 360 degrees, one curve per gear ratio."}}
 phis = np.arange(0, 361, 10)
 fig, ax = plt.subplots(figsize=(8, 4.2))
 for lam, colour in ((-1, COLORS["normal"]), (-1.5, COLORS["slip"]), (-2, COLORS["tangential"]),
@@ -276,7 +276,7 @@ stated(spread[2], "6", sig=1), stated(spread[-2], "1.7");
 # turn it is half a turn away from where it started and the coupler pin B is on a different
 # part of its path. One cycle needs two input turns (and three turns of crank 5).
 
-# %%
+# %% mystnb={"figure": {"caption": "With lambda = -1.5 the path of B takes two input turns to close: the path and the acceleration over one full cycle."}, "image": {"alt": "Left, the closed coupler path of B; right, acceleration of B against crank angle over two turns."}}
 deg, s = sweep(-1.5, 30)
 B = s.R_B.to("in").magnitude
 half = len(deg) // 2
@@ -310,7 +310,7 @@ print(f"lambda = -1.5 = {Fraction(-1.5)}: one cycle is {cycle_turns(-1.5)} turns
 # acceleration on one fixed colour scale, so a hot path is a fast-changing one; the title gives
 # the peaks over the whole cycle, however many input turns it takes.
 
-# %%
+# %% mystnb={"figure": {"caption": "The path of coupler pin B at four phase angles phi (lambda = -2), coloured by the size of its acceleration in g; the peak changes with the phase."}, "image": {"alt": "Four panels of the geared fivebar, each with the closed path of pin B coloured from dark (low) to yellow (high) acceleration."}}
 NORM = Normalize(vmin=0, vmax=30)   # g
 
 
@@ -416,7 +416,7 @@ stated(GearedFiveBar(**geometry, lam=-2, phi="30 deg").solve(
 # round twice. The arrows (one scale for the whole turn) are the accelerations of A, B and C;
 # the marker runs along the curves of $\alpha_3$, $\alpha_4$ and the three sizes.
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: the geared fivebar (lambda = -2) through one input turn at 20 rad/s with the accelerations of A, B and C, and a marker on alpha3, alpha4 and the three sizes."}, "image": {"alt": "Animated geared fivebar with acceleration arrows at A, B and C, beside plots with a moving marker."}}
 animate({"mechanism": "fivebar", **geometry, "lam": -2, "phi": "30 deg", "theta2": "0 deg",
          "omega2": "20 rad/s", "alpha2": "0 rad/s^2"}, title="Geared fivebar, $\\lambda$ = -2")
 
@@ -465,8 +465,12 @@ assert cycle_turns(-2 / 3) == 3
 # if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `fivebar`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("fivebar")
 p
 

@@ -127,7 +127,7 @@ assert np.isclose(r.point(3, "3 in", "30 deg").si("A"), r.si("A_P"))
 # share $\alpha$ and $\omega$ but not their accelerations: the farther from the link's
 # instantaneous centre of zero acceleration, the larger.
 
-# %%
+# %% mystnb={"figure": {"caption": "The accelerations of the crank pin, coupler point and centres of gravity at theta2 = 30 deg, drawn at their points."}, "image": {"alt": "Fourbar drawing with acceleration arrows at A, B, the coupler point and the three centres of gravity."}}
 def linkage_points(res, i=None):
     """Pin positions [in] (complex) of a result, at index i of a sweep."""
     pick = (lambda z: z) if i is None else (lambda z: z[i])
@@ -176,7 +176,7 @@ plt.show()
 # link 3, as if the plate were larger. One sweep solves the linkage; `Result.point` then gives
 # every other point of the coupler without solving again.
 
-# %%
+# %% mystnb={"figure": {"caption": "The coupler curve of P and the size of its acceleration over a cycle."}, "image": {"alt": "Coupler curve of point P with the acceleration magnitude against crank angle."}}
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="30 deg")
 assert cycle.valid.all()
@@ -217,7 +217,7 @@ plt.show()
 # 300 rpm. pint carries the units, including the US trap that a pound of *mass* at 1 g needs a
 # pound of *force*: it knows $g_c$ and converts lb·in/s² to lbf.
 
-# %%
+# %% mystnb={"figure": {"caption": "The force needed to accelerate each link, F = m A of its centre of gravity, over a cycle."}, "image": {"alt": "Line plots of force against crank angle for the crank, coupler and rocker."}}
 masses = {"S = G2": Q_(0.2, "lb"), "G3": Q_(0.6, "lb"), "U = G4": Q_(0.8, "lb")}
 fast = fourbar.solve(theta2=theta, omega2="300 rpm", alpha2=0)
 assert fast.valid.all()
@@ -263,7 +263,7 @@ assert accel["U = G4"].max() < accel["G3"].max() and masses["U = G4"] > masses["
 # coupler curve of P dashed, the accelerations of A, B and P at one scale, and a marker on the
 # curves of $\alpha_3$, $\alpha_4$ and of the three sizes.
 
-# %%
+# %% mystnb={"figure": {"caption": "Animation: the coupler point P of Example 7-1 tracing its coupler curve (dashed) at 10 rad/s, with the accelerations of A, B and P and a marker on the curves."}, "image": {"alt": "Animated fourbar with its coupler curve dashed and acceleration arrows at A, B and P, beside plots with a moving marker."}}
 animate({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
          "p": "3 in", "delta3": "30 deg", "theta2": "0 deg", "omega2": "10 rad/s",
          "alpha2": "0 rad/s^2"}, trace=("P",), title="Coupler point P")
@@ -275,7 +275,7 @@ animate({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 
 # live, $p$ moves it away from A). Watch the shape of the coupler curve and where its hottest
 # stretch is.
 
-# %%
+# %% mystnb={"figure": {"caption": "Coupler points at several places on the coupler: their paths coloured by the size of their acceleration."}, "image": {"alt": "Small multiples of coupler curves coloured from low to high acceleration."}}
 NORM = Normalize(0, 600)
 
 
@@ -413,8 +413,12 @@ assert np.all(np.diff(along) > 0)                              # grows from A to
 #
 # The graded exercise family that practises this notebook is `coupler` (with `fourbar` for
 # the pins).
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("coupler")
 p
 

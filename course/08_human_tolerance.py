@@ -147,7 +147,7 @@ print(f"felt above 1.5 g for {heavy.mean() * t[-1]:.2f} s of each {t[-1]:.0f} s 
 # of the seat on the rider, per unit mass), and, over one cycle, the size of $\mathbf{A}_P$ and the
 # two body components of $\mathbf{f}$ with the Table 7-1 levels for comparison.
 
-# %%
+# %% mystnb={"figure": {"caption": "A fairground ride at 12 rpm: the car's path with the load the rider feels (left), and its two components in g against time with the Table 7-1 levels (right)."}, "image": {"alt": "Left, the car's path with arrows of felt load; right, line plots of the load in g against time with horizontal reference levels."}}
 R = r.R_P.to("m").magnitude
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8), gridspec_kw={"width_ratios": [1, 1.4]})
 ax1.plot(R.real, R.imag, color="#555555", lw=1.5)
@@ -194,7 +194,7 @@ assert np.abs(A).max() < 3.5 and head.mean() > np.abs(fore).mean()     # mostly 
 # **Speed matters quadratically.** At a steady crank speed every acceleration scales with
 # $\omega_2^2$, while each cycle gets shorter. The next cell runs the same ride from 6 to 24 rpm.
 
-# %%
+# %% mystnb={"figure": {"caption": "The same ride from 6 to 24 rpm: the peak load grows with the square of the speed."}, "image": {"alt": "Line plots of the load in g against time for ride speeds from 6 to 24 rpm."}}
 speeds = np.arange(6, 25, 2)
 rows = []
 for rpm in speeds:
@@ -282,7 +282,7 @@ stated(np.degrees(np.ptp(s.theta4.magnitude)), "36"), stated(in_g(seat.A).max(),
 # the square of the speed while the cycles come faster, and watch for the moment the spine load
 # crosses zero.
 
-# %%
+# %% mystnb={"figure": {"caption": "The ride at four crank speeds: the size of the car's acceleration and the two components of the felt load over 10 s."}, "image": {"alt": "Four plots of acceleration and felt load in g against time, one per crank speed from 6 to 24 rpm."}}
 def draw(speed=12):
     rpm = speed
     t, _, A, felt, head, fore = ride_cycle(rpm)
@@ -409,8 +409,12 @@ stated(floating, "15.7")
 # what to look at (the unit, the size).
 #
 # The graded exercise family that practises this notebook is `tolerance`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("tolerance")
 p
 

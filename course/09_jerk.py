@@ -160,7 +160,7 @@ print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as th
 # d\alpha_3/d\theta_2$. We take $\alpha_3$ on a grid of crank angles, differentiate it numerically
 # (central differences) and lay the result over the solver's `jerk3`.
 
-# %%
+# %% mystnb={"figure": {"caption": "The coupler's angular jerk from the solver and by numerical differentiation of its acceleration (left); they differ by the finite-difference error (right)."}, "image": {"alt": "Left, two overlapping curves of jerk against crank angle; right, their small difference."}}
 h = np.radians(0.5)                                              # grid step of theta2
 grid = np.arange(0, 2 * np.pi + h / 2, h)
 cyc = fourbar.solve(theta2=Q_(grid, "rad"), omega2="10 rad/s", alpha2=0)
@@ -227,7 +227,7 @@ assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_
 # ($\varphi_3$). At steady speed every jerk is proportional to $\omega_2^3$: double the speed and
 # the jerk grows eightfold.
 
-# %%
+# %% mystnb={"figure": {"caption": "Linear jerk of points A, B and P of the fourbar, of the slider-crank's piston, and of the inverted slider-crank."}, "image": {"alt": "Three line plots of linear jerk against crank angle."}}
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 deg = np.degrees(theta.magnitude)
 cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="30 deg")
@@ -284,7 +284,7 @@ stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).
 # The cell integrates the model numerically (a convolution with its impulse response) and
 # checks the formula.
 
-# %%
+# %% mystnb={"figure": {"caption": "A spring and mass answering a change of acceleration: the less jerk, the less vibration (mostly)."}, "image": {"alt": "Line plots of the response of a spring-mass system to acceleration ramps of different steepness."}}
 wn = 2 * np.pi                                                    # natural period T_n = 1 s
 dt = 1e-3
 t = np.arange(0, 6, dt)
@@ -334,7 +334,7 @@ plt.show()
 # Jerk is the slope of the angular acceleration curve (times $\omega_2$). Move the crank and watch
 # the tangent: steep stretches of $\alpha_3$ are where the jerk is large.
 
-# %%
+# %% mystnb={"figure": {"caption": "The angular jerk is the slope of the angular acceleration: alpha3 over a cycle with the tangent at several crank angles."}, "image": {"alt": "Small multiples of the alpha3 curve with a tangent line at one crank angle each."}}
 steady = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0)
 
 
@@ -456,8 +456,12 @@ stated(min(where, 360 - where), "59")
 # look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `jerk`.
+#
+# (The web page of this notebook leaves the drawn problem out, since there is nothing
+# to type into: download the notebook, or write the course with `accelab course --out DIR`,
+# and run it.)
 
-# %%
+# %% tags=["remove-output"]
 p = practice("jerk")
 p
 

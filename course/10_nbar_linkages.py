@@ -144,7 +144,7 @@ print(f"omega3 = {omega34[0]:.6f} rad/s, omega4 = {omega34[1]:.6f} rad/s, as the
 # different guesses and colours each guess by where it ends. The basins are large and mostly
 # sensible, but their boundaries are ragged: a guess near a boundary can land anywhere.
 
-# %%
+# %% mystnb={"figure": {"caption": "Where plain Newton-Raphson ends from each starting guess: the open circuit, the crossed circuit, or no solution."}, "image": {"alt": "Map of starting guesses for the two unknown angles, coloured by the assembly Newton-Raphson converges to."}}
 crossed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", omega2="10 rad/s",
                                                                   circuit="crossed")
 g3, g4 = np.meshgrid(np.radians(np.linspace(-180, 180, 200)), np.radians(np.linspace(-180, 180, 200)))
@@ -255,7 +255,7 @@ assert np.isclose(r.vectors["R4"].alpha.magnitude, fb.alpha4.magnitude, rtol=1e-
 # Drawing the vectors makes the loops visible: each loop is a closed chain of arrows (the
 # signs say which way round each arrow is walked). The second loop starts at $O_4$.
 
-# %%
+# %% mystnb={"figure": {"caption": "The sixbar with a slider at theta2 = 57 deg, drawn as its two vector loops."}, "image": {"alt": "Drawing of a sixbar linkage with the vectors of loop 1 in blue and loop 2 in vermillion."}}
 def draw_loops(ax, description, result, starts, i=None, show_names=True):
     """Draw each loop's vectors tip to tail from its start point [in]; i picks a sweep position.
     Returns the complex vectors drawn [in]."""
@@ -313,7 +313,7 @@ plt.show()
 # the Jacobian (a scaled ratio of its smallest to largest singular value: 0 means singular, larger
 # is better).
 
-# %%
+# %% mystnb={"figure": {"caption": "The sixbar over a cycle: slider position, slider acceleration at 12 rad/s, and Newton-Raphson iterations per position."}, "image": {"alt": "Three line plots against crank angle."}}
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 deg = np.degrees(theta.magnitude)
 cycle = linkage.solve(theta2=theta, omega2="12 rad/s", alpha2=0)
@@ -348,7 +348,7 @@ print(f"{its.sum()} iterations for {its.size} positions (mean {its.mean():.2f}, 
 # second fourbar $O_4$-C-D-$O_6$. Both loops close on rotating links, so all four unknowns are
 # angles.
 
-# %%
+# %% mystnb={"figure": {"caption": "The Watt II sixbar at theta2 = 57 deg, and the angular accelerations of its two rockers over a cycle."}, "image": {"alt": "Left, the Watt II sixbar drawing; right, line plots of two angular accelerations against crank angle."}}
 watt = watt2_sixbar()
 print("loops:", watt["loops"])
 w_linkage = VectorLoopLinkage(**watt)
@@ -406,7 +406,7 @@ for label, desc in (("as designed", slider_six),
 # toward zero as the rod comes perpendicular to the slide at the edge of the reachable range, and
 # the slider's acceleration there grows without bound.
 
-# %%
+# %% mystnb={"figure": {"caption": "Near a limit position: the condition of the Jacobian falls to zero and the slider's acceleration grows without bound."}, "image": {"alt": "Two line plots against crank angle approaching a limit position."}}
 short = copy.deepcopy(slider_six)
 short["vectors"]["H"] = {"length": "1 in", "angle": "90 deg"}
 short["vectors"]["R5"] = {"length": "4 in", "angle": "unknown", "guess": "50 deg"}
@@ -482,7 +482,7 @@ print(f"(the sweep said {sw.status[k]!r} at {fdeg[k]:.1f} deg)")
 # Turn the crank of the sixbar and watch the two loops close; the arrow at D is the slider's
 # acceleration (1 in of arrow = 50 in/s²).
 
-# %%
+# %% mystnb={"figure": {"caption": "The sixbar with a slider at several crank angles, with the slider's acceleration."}, "image": {"alt": "Small multiples of the sixbar drawing with acceleration arrows."}}
 def draw(theta2=57):
     i = int(round(theta2))
     fig, ax = plt.subplots(figsize=(6.4, 3.6))

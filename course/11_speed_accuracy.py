@@ -344,7 +344,7 @@ assert table["finite differences, h = 0.001 rad"]["jerk"] > 1e3 * max(closed["je
 if HAVE_MPMATH:
     assert closed["jerk"] < 1e-13 and table["graphical construction"]["acc"] < 1e-13
 
-# %%
+# %% mystnb={"figure": {"caption": "Time per position against error for each method on the 2-6-9-7 in fourbar, measured when the page was built."}, "image": {"alt": "Scatter plot on log axes of time per position against relative error, one point per method."}}
 LABEL_AT = {"kernels": (-4, -15, "right"), "units": (4, 14, "left"), "scalar": (-4, 14, "right"),
             "graphical": (4, 14, "left")}     # where each label sits [points], so none overlap
 fig, ax = plt.subplots(figsize=(9, 5.2))
@@ -431,7 +431,7 @@ for name, row in table.items():
 # equal the $\theta_2$ derivatives, so the reference is simply $\omega_4$, $\alpha_4$,
 # $\varphi_4$ at that input.
 
-# %%
+# %% mystnb={"figure": {"caption": "Central differences of theta4 at theta2 = 30 deg: the error against the step h, truncation on the right and round-off on the left."}, "image": {"alt": "Log-log plot of finite-difference error against step size, a V shape."}}
 at30 = np.radians([30.0])
 unit_motion = dict(omega2=1.0, alpha2=0.0, jerk2=0.0)
 if HAVE_MPMATH:
@@ -526,7 +526,7 @@ for i in (8, 10, 12, 16, 24):
     print(f"  delta = {delta[i]:.0e} rad: roundoff estimate {kern.roundoff[i]:.1e}, "
           f"{'refused' if refused[i] else 'answered'} {got}")
 
-# %%
+# %% mystnb={"figure": {"caption": "The triple rocker approaching its toggle: the closed forms' error grows like one over the distance until they refuse."}, "image": {"alt": "Log-log plot of error against distance to the toggle position for several methods."}}
 fig, ax = plt.subplots(figsize=(9, 5))
 ax.loglog(delta, kern.roundoff, color="#444444", ls="--", lw=1.5,
           label="the solver's estimate, roundoff")
@@ -611,7 +611,7 @@ stated(closed_form.solve(**p, theta2=toggle + 1e-9, **motion).roundoff, "6e-6", 
 # over `Q_(x, "m")` builds). Then the solver itself, at 100 crank angles: one call with an array
 # against 100 calls with one angle each.
 
-# %%
+# %% mystnb={"figure": {"caption": "Where the units go: one unit conversion per call, or one per position."}, "image": {"alt": "Bar chart of the time spent with and without units, for one call over many angles and many calls with one angle."}}
 x, y = np.linspace(0.1, 0.2, 1000), np.linspace(0.3, 0.4, 1000)
 qx, qy = Q_(x, "m"), Q_(y, "in")
 ex = np.array([Q_(v, "m") for v in x], dtype=object)
@@ -731,7 +731,7 @@ display(Markdown("| method | cost per position | error | use it for | where it f
 # $10^{-15}$, is far below anything on this plot). Find the step where the jerk is best, and see
 # what it does to the velocity.
 
-# %%
+# %% mystnb={"figure": {"caption": "Finite-difference velocities at several steps h against the exact curve."}, "image": {"alt": "Small multiples of velocity against crank angle for several finite-difference steps."}}
 exact_cycle = from_motion(closed_form.solve(**geometry, theta2=theta2, **motion))
 cycle_scale = scales(exact_cycle)
 degrees = np.degrees(theta2)

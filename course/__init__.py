@@ -2,8 +2,9 @@
 
 The notebooks are jupytext percent-format scripts (``course/NN_slug.py``, no
 outputs in git), shipped with the package: ``accelab course --out DIR``
-writes them as ``.ipynb`` notebooks (:mod:`course.cli`), and
-:func:`notebooks` lists them. They are clients of the installed packages:
+writes them as ``.ipynb`` notebooks (:mod:`course.cli`), :func:`notebooks`
+lists them, and ``make docs`` publishes them as the course section of the
+documentation site (``docs/``). They are clients of the installed packages:
 :mod:`solver` for every number, :mod:`course.kit` for what they share (the
 ``explore`` control, number formatting, plot style, :func:`course.kit.stated`),
 :mod:`course.animation` for the mechanisms that move, and

@@ -5,20 +5,22 @@ and of the sizes of the accelerations.
 
 >>> from course.animation import animate
 >>> from solver.graphical.gallery import EXAMPLE_7_1
->>> animate(EXAMPLE_7_1)            # shown in a notebook as an animated GIF
+>>> animate(EXAMPLE_7_1)            # shown in a notebook as an animated PNG
 
 Made with :class:`matplotlib.animation.FuncAnimation` and written as an
-animated GIF (Pillow, which matplotlib already needs): it plays in Jupyter, in
-the site's pages and in a plain browser, with no JavaScript and no ffmpeg. The
-frames are few (36 by default) and small (96 dpi, 710 px wide), so that one animation
-weighs well under a megabyte and takes a few seconds to make.
+animated PNG (APNG, by Pillow, which matplotlib already needs; one palette of
+128 colours for every frame): a notebook shows it as an ordinary ``image/png``
+output, so it plays in Jupyter, in the documentation site (where it is a
+figure with its caption, like any other) and in any browser, with no
+JavaScript and no ffmpeg. The frames are few (36 by default) and small (96
+dpi, 710 px wide), so that one animation weighs well under a megabyte and
+takes a few seconds to make.
 
 Every frame is the graphical construction of that position (section 7.2), so
 the vectors drawn are exact, and the curves come from the same constructions
 at every 2 degrees.
 """
 
-import base64
 import math
 import os
 import tempfile
@@ -55,57 +57,69 @@ KIND_COLOURS = {"A_t": _style.COMPONENT["tangential"]["color"],
 
 
 class Animation:
-    """An animated GIF that a notebook shows inline (``_repr_html_``).
+    """An animated PNG that a notebook shows inline (``_repr_png_``).
 
     Attributes
     ----------
-    gif : bytes
-        The animation.
+    png : bytes
+        The animation (APNG).
     frames : int
     width, height : int
         Its size [px].
     """
 
-    def __init__(self, gif, frames, width, height, alt):
-        self.gif = gif
+    def __init__(self, png, frames, width, height, alt):
+        self.png = png
         self.frames = frames
         self.width = width
         self.height = height
         self.alt = alt
 
     def __len__(self):
-        return len(self.gif)
+        return len(self.png)
 
     def save(self, path):
-        """Write the GIF to ``path``."""
+        """Write the animated PNG to ``path``."""
         with open(path, "wb") as fh:
-            fh.write(self.gif)
+            fh.write(self.png)
         return path
 
-    def _repr_html_(self):
-        data = base64.b64encode(self.gif).decode("ascii")
-        return (f'<img src="data:image/gif;base64,{data}" alt="{self.alt}" '
-                f'width="{self.width}" style="max-width:100%;height:auto">')
+    def _repr_png_(self):
+        return self.png
 
     def __repr__(self):
         return (f"<Animation: {self.frames} frames, {self.width}x{self.height} px, "
-                f"{len(self.gif) / 1024:.0f} KiB GIF>")
+                f"{len(self.png) / 1024:.0f} KiB animated PNG>")
 
 
-def _writer(fps):
+def _writer(fps, colours=128):
     """matplotlib's PillowWriter, taking each frame from the canvas that the
-    animation has just drawn instead of drawing the figure once more."""
+    animation has just drawn (instead of drawing the figure once more), and
+    writing an animated PNG whose frames share one palette of ``colours``."""
     from matplotlib.animation import PillowWriter
     from PIL import Image
 
-    class CanvasGifWriter(PillowWriter):
+    class CanvasPngWriter(PillowWriter):
         def grab_frame(self, **savefig_kwargs):
             canvas = self.fig.canvas
             w, h = canvas.get_width_height(physical=True)
             self._frames.append(Image.frombuffer("RGBA", (w, h), bytes(canvas.buffer_rgba()),
-                                                 "raw", "RGBA", 0, 1))
+                                                 "raw", "RGBA", 0, 1).convert("RGB"))
 
-    return CanvasGifWriter(fps=fps)
+        def finish(self):
+            frames = self._frames
+            w, h = frames[0].size
+            picks = frames[::max(1, len(frames) // 4)][:4]
+            montage = Image.new("RGB", (w, h * len(picks)), "white")
+            for k, f in enumerate(picks):
+                montage.paste(f, (0, h * k))
+            palette = montage.quantize(colors=colours, method=Image.Quantize.MEDIANCUT)
+            frames = [f.quantize(palette=palette, dither=Image.Dither.NONE) for f in frames]
+            frames[0].save(self.outfile, format="PNG", save_all=True,
+                           append_images=frames[1:], duration=int(1000 / self.fps), loop=0,
+                           optimize=True)
+
+    return CanvasPngWriter(fps=fps)
 
 
 def _cycle(case, angles, motion):
@@ -269,11 +283,11 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         fig.set_layout_engine("none")      # ... and keep it for every frame
         anim = FuncAnimation(fig, frame, frames=frames, interval=1000 / fps, blit=False)
         with tempfile.TemporaryDirectory() as tmp:
-            path = os.path.join(tmp, "animation.gif")
+            path = os.path.join(tmp, "animation.png")
             anim.save(path, writer=_writer(fps), dpi="figure")
             with open(path, "rb") as fh:
-                gif = fh.read()
+                png = fh.read()
         width, height = (int(round(x)) for x in fig.get_size_inches() * dpi)
         plt.close(fig)
-    return Animation(gif, frames, width, height,
+    return Animation(png, frames, width, height,
                      alt=f"{heading} through its cycle, with its accelerations")

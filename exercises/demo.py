@@ -1,7 +1,11 @@
 """``accelab demo``: first one worked case from the solver (Example 7-1's
 fourbar), then the instructor's main job end to end in ``build/demo-course``: a
 course with a sample roster, one randomized assignment, simulated submissions
-(right, wrong, wrong units, crashing), autograde, feedback, and the grade table.
+(right, wrong, wrong units, crashing, and one that copies another student's
+values), grading in the sandbox, feedback, and the grade table.
+
+The demo deletes its course folder only if the demo made it (a marker file
+inside says so); any other existing folder is refused.
 """
 
 import cmath
@@ -11,15 +15,25 @@ import shutil
 import time
 
 from .assign import assign
-from .autograde import format_table, grade, question_names
+from .grader.grade import grade
+from .grader.gradetable import format_table, question_names
 from .notebook import read_spec
 from .simulate import key_code, submit
+
+#: the file that marks a folder as made by ``accelab demo``
+MARKER = ".accelab-demo"
+
+
+class DemoError(RuntimeError):
+    """The demo cannot run as asked; the message says why."""
 
 ROSTER = [{"id": "ada", "first_name": "Ada", "last_name": "Lovelace"},
           {"id": "ben", "first_name": "Ben", "last_name": "Franklin"},
           {"id": "cai", "first_name": "Cai", "last_name": "Lun"},
           {"id": "dee", "first_name": "Dee", "last_name": "Dee"},
-          {"id": "eve", "first_name": "Eve", "last_name": "Curie"}]
+          {"id": "eve", "first_name": "Eve", "last_name": "Curie"},
+          {"id": "fay", "first_name": "Fay", "last_name": "Wray"},
+          {"id": "gus", "first_name": "Gus", "last_name": "Grissom"}]
 
 
 def worked_case(out):
@@ -44,7 +58,8 @@ def worked_case(out):
 def build_submissions(course, assignment):
     """ada right; ben wrong (sign errors); cai wrong units (bare SI numbers where
     the statement asks for US units); dee's notebook crashes in its first
-    answer; eve right, as Quantities in SI units."""
+    answer; eve right, as Quantities in SI units; fay copies ada's answers and
+    loads ada's values in her notebook."""
     spec = read_spec(course, assignment)
 
     def wrong(a, q):
@@ -69,13 +84,26 @@ def build_submissions(course, assignment):
     plans = {"ada": None, "ben": wrong, "cai": bare_si, "dee": crash, "eve": other_units}
     for student, transform in plans.items():
         submit(course, assignment, student, key_code(spec, student, transform))
+
+    def load_ada(nb):
+        from nbformat.v4 import new_code_cell
+        nb.cells.insert(2, new_code_cell("v = load_variant(SPEC, 'ada')"))
+    submit(course, assignment, "fay", key_code(spec, "ada"), edit=load_ada)
+    plans["fay"] = "copy"
     return plans
 
 
 def run_demo(course="build/demo-course", assignment="A", jobs=2, out=print, fresh=True):
     worked_case(out)
-    if fresh and os.path.exists(course):
-        shutil.rmtree(course)
+    if os.path.exists(course):
+        if not os.path.exists(os.path.join(course, MARKER)):
+            raise DemoError(f"{course} exists and was not made by accelab demo: choose another "
+                            "--course folder (the demo never deletes a folder it did not make)")
+        if fresh:
+            shutil.rmtree(course)
+    os.makedirs(course, exist_ok=True)
+    with open(os.path.join(course, MARKER), "w") as fh:
+        fh.write("made by accelab demo; `accelab demo` may delete this folder\n")
     start = time.monotonic()
     out(f"Creating the course {course} (roster: {', '.join(s['id'] for s in ROSTER)}) and "
         f"assignment {assignment} ...")
@@ -83,10 +111,10 @@ def run_demo(course="build/demo-course", assignment="A", jobs=2, out=print, fres
     out(f"  source notebook and released notebook written ({time.monotonic() - start:.1f} s)")
     build_submissions(course, assignment)
     out("Simulated submissions: ada right, ben sign errors, cai wrong units (bare SI numbers), "
-        "dee crashes, eve right in SI units")
-    outcomes, path, rows, seconds = grade(course, assignment, jobs=jobs)
-    out(f"Autograded {len(outcomes)} submissions, feedback and CSV in {seconds:.1f} s "
-        f"({jobs} parallel processes)\n")
+        "dee crashes, eve right in SI units, fay copies ada's answers")
+    subs, path, rows, seconds, timings = grade(course, assignment, jobs=jobs)
+    out(f"Graded {len(subs)} submissions in the sandbox, with feedback and CSV, in "
+        f"{seconds:.1f} s ({jobs} at a time)\n")
     out(format_table(rows, question_names(course, assignment)))
     out(f"\nper-question CSV: {path}")
     out(f"feedback: {os.path.join(course, 'feedback')}/<student>/{assignment}/{assignment}.html")

@@ -1,12 +1,17 @@
 """The nbgrader source notebook of an assignment.
 
-Cells, in order: instructions; the locked parameter cell (grade_id
-``parameters``) that recomputes the variant from the student id (the spec in it
-is the same for every student); per problem a locked statement with a figure of
-the linkage and a locked cell showing that student's given values; per graded
-quantity an answer cell (grade_id ``answer_<name>``, the solution between
-``### BEGIN SOLUTION`` markers) and a test cell (grade_id ``test_<name>``, one
-point) with a visible format check and a hidden value check.
+Cells, in order: instructions (with the exact rules the grader judges by); the
+locked parameter cell (grade_id ``parameters``) that loads the student's values
+from the student id (the spec in it is the same for every student); per problem
+a locked statement with a figure of the linkage and a locked cell showing that
+student's given values; per graded quantity an answer cell (grade_id
+``answer_<name>``) and a test cell (grade_id ``test_<name>``, one point) with
+the visible check of form and dimension.
+
+No cell holds or computes an answer: there is no solution in the source and no
+hidden test. The grader judges each value outside the notebook, against the key
+it computes for the submitter (:mod:`exercises.grader`). Source and released
+notebook have the same locked cells.
 """
 
 import base64
@@ -16,7 +21,7 @@ import os
 import nbformat
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
-from .assignment import build_variant, check_spec
+from .assignment import DEFAULT_ANGLE_TOLERANCE, build_variant, check_spec
 from .figure import draw
 
 PREVIEW_STUDENT = "preview"
@@ -45,23 +50,32 @@ def _code(source, grade_id, **kw):
 
 INSTRUCTIONS = """# {title}
 
-Each student gets their own values: the cell below computes yours from your student id
-(`{student_hint}`), so run it first. In each answer cell assign your result to the named
-variable, either as a Quantity in any compatible unit, e.g. `alpha3 = Q_(-12.3, "rad/s^2")`
-(`ureg` and `Q_` are ready), or as a bare number in the unit given in brackets. Where the
-statement says so, give a Quantity. Angles are measured counter-clockwise from +x; omega and
-alpha are positive counter-clockwise. The cell after each answer checks its format and
-dimension now; its value is checked when the assignment is graded (relative tolerance
-{tol}).
+Each student gets their own values: the cell below loads yours from your student id
+({student_hint}), so run it first. `v.given(k)` gives the values of problem k as Quantities,
+ready for the solver (for example `g = v.given(1); FourBar(a=g["a"], b=g["b"], c=g["c"],
+d=g["d"])`).
+
+In each answer cell assign your result to the named variable, either as a Quantity in any
+unit of the right dimension, e.g. `alpha3 = Q_(-12.3, "rad/s^2")` (`ureg` and `Q_` are ready),
+or as a bare number in the unit given in brackets; where the statement says so, give a
+Quantity. Angles are measured counter-clockwise from +x; omega and alpha are positive
+counter-clockwise.
+
+**How your answers are judged.** The cell after each answer checks now that the variable
+exists and has the right form and dimension. Its value is judged when the assignment is
+graded, outside this notebook, against the exact value for your own values:
+
+- a number is right when it is within {tol} of the exact value (|yours - exact| <= {tol} of
+  |exact|), in any unit of the right dimension;
+- a direction (an angle) is right when it is within {angle_tol} deg of the exact direction,
+  either way (modulo 360 deg);
+- a word is right when it is the right one of the words listed.
 """
 
-ANSWER_TEMPLATE = "# {description} [{unit}]\n### BEGIN SOLUTION\n{name} = v.solution({name!r})\n### END SOLUTION\n"
+ANSWER_TEMPLATE = ("# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
+                   "for each student (accelab variant shows the problem)\n### END SOLUTION\n")
 TEST_TEMPLATE = ("from exercises.runtime import check_format\n"
-                 "check_format({name!r}, globals())\n"
-                 "### BEGIN HIDDEN TESTS\n"
-                 "from exercises.runtime import check_value\n"
-                 "check_value({name!r}, globals())\n"
-                 "### END HIDDEN TESTS\n")
+                 "check_format({name!r}, globals())\n")
 
 
 def build_notebook(spec, title=None):
@@ -71,7 +85,9 @@ def build_notebook(spec, title=None):
     title = title or f"Assignment {spec['assignment']}: acceleration analysis"
     cells = [_md(INSTRUCTIONS.format(title=title, student_hint="your JupyterHub user name, "
                                      "or 'self-study' when working alone",
-                                     tol=f"{100 * spec['tolerance']:g}%"), "instructions")]
+                                     tol=f"{100 * spec['tolerance']:g}%",
+                                     angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}"),
+                    "instructions")]
     cells.append(_code("from exercises.runtime import ureg, Q_, load_variant, student_id\n"
                        f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
                        "v = load_variant(SPEC, student_id())\n", "parameters", locked=True))

@@ -2,17 +2,25 @@
 
 An :class:`Answer` is what one answer cell grades: the variable ``name`` the
 student assigns, the ``unit`` the statement asks for, the batch ``cases`` it
-depends on (label -> case dict in the batch format of CONVENTIONS), and an
-``expr`` over those cases' outputs (see :mod:`exercises.expr`), evaluated in SI.
+depends on (label -> case dict in the batch format of the conventions page), and
+an ``expr`` over those cases' outputs (see :mod:`exercises.expr`), evaluated in SI.
 ``kind`` is "number", "angle" (compared modulo 360 deg) or "choice" (a word
 picked from ``choices``; no expr is published).
+
+Two views leave this module: :meth:`Problem.statement` is what a student's
+kernel may hold (given values and what is asked, no cases, no exprs);
+:meth:`Problem.public` adds the machine-readable cases and exprs for an outside
+solver (``accelab variant``, instructor side). The key itself (numbers) is
+computed only by :mod:`exercises.grader.key`.
 """
 
+import json
 from dataclasses import dataclass, field, asdict
+from functools import lru_cache
 
 from solver.batch import solve_case
 
-from .expr import evaluate
+from .answers import Asked
 
 
 @dataclass
@@ -29,6 +37,11 @@ class Answer:
     # bins[i-1] <= value < bins[i]; kept out of the published variant
     basis: str = None
     bins: list = None
+
+    def asked(self):
+        """What the statement asks (no cases, no expr): the kernel's view."""
+        return Asked(self.name, self.unit or "", self.description, self.kind,
+                     tuple(self.choices or ()), self.quantity_required)
 
     def public(self):
         """The published form (``accelab variant``): no value, no choice rule."""
@@ -56,34 +69,30 @@ class Problem:
         return {"family": self.family, "title": self.title, "statement": self.statement,
                 "given": dict(self.given), "answers": [a.public() for a in self.answers]}
 
+    def statement_view(self):
+        """What the student's kernel may hold: given values and what is asked."""
+        return {"family": self.family, "title": self.title, "statement": self.statement,
+                "given": dict(self.given), "asked": [a.asked().to_dict() for a in self.answers]}
+
     def to_dict(self):
         return asdict(self)
 
 
 def solve_cases(cases):
-    """Solve a label -> case map; raises ValueError naming the first failed case."""
+    """Solve a label -> case map; raises ValueError naming the first failed case.
+
+    Each distinct case is solved once per process (generation, key and figure
+    of a variant share the outputs).
+    """
     outputs = {}
     for label, case in cases.items():
-        out = solve_case(case)
+        out = _solve_text(json.dumps(case, sort_keys=True))
         if not out.get("ok"):
             raise ValueError(f"case {label} failed: {out.get('error')}: {out.get('message')}")
-        outputs[label] = out
+        outputs[label] = dict(out)
     return outputs
 
 
-def key_value(answer, outputs=None):
-    """The correct answer: a float in SI (number, angle), or the right choice.
-
-    ``outputs`` (label -> batch result) may be given to avoid solving again.
-    """
-    outputs = outputs if outputs is not None else solve_cases(answer.cases)
-    if answer.kind == "choice":
-        value = float(evaluate(answer.basis, outputs))
-        for choice, upper in zip(answer.choices, list(answer.bins) + [float("inf")]):
-            if value < upper:
-                return choice
-    value = evaluate(answer.expr, outputs)
-    if isinstance(value, complex):
-        raise ValueError(f"expr {answer.expr!r} of {answer.name} is a vector; "
-                         "use abs(), angle(), real() or imag()")
-    return float(value)
+@lru_cache(maxsize=4096)
+def _solve_text(text):
+    return solve_case(json.loads(text))

@@ -1,29 +1,33 @@
-"""What a student's notebook imports: the registry, the student id, the variant,
-and the checks that its test cells run.
+"""What a student's notebook imports: the registry, the student id, the student's
+statement (given values and what is asked) and the visible checks.
 
-The student id comes from, in order: ``ACCELAB_STUDENT_ID`` (set by the course's
-autograde preprocessor for each submission), ``JUPYTERHUB_USER`` (the student's
-own server), and else the self-study default ``"self-study"``. The variant is
-recomputed from the spec and that id every time, never stored in the notebook.
+The kernel only reports. Nothing here holds, computes or judges an expected
+value: a student's values are checked for form and dimension (the visible test
+cells), and the grader judges them later, in its own process, against the key
+it computes for the submitter (:mod:`exercises.grader`).
+
+The student id comes from, in order: ``ACCELAB_STUDENT_ID``, ``JUPYTERHUB_USER``
+(the student's own server), and else the self-study default ``"self-study"``.
+While a submission is graded, the sandbox hands this module the submitter's
+statement before any cell runs, and only that one can be loaded.
 """
 
 import os
 
 from solver.units import Q_, ureg
 
-from .assignment import build_variant
-from .grading import check_format as _check_format, grade as _grade, quiet
-from .problem import key_value
+from .answers import MISSING, Asked, describe, read
 
-__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "check_value"]
+__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "SELF_STUDY"]
 
 SELF_STUDY = "self-study"
-_current = {}
-_MISSING = object()
+#: the sandbox's statement while grading, the loaded variant, the ids a
+#: notebook asked for that it was not given
+_state = {"grading": None, "variant": None, "refused": []}
 
 
 def student_id():
-    """The id whose variant this notebook shows and is graded against."""
+    """The id whose values this notebook shows."""
     for var in ("ACCELAB_STUDENT_ID", "JUPYTERHUB_USER"):
         value = os.environ.get(var, "").strip()
         if value:
@@ -32,38 +36,55 @@ def student_id():
 
 
 class NotebookVariant:
-    """A variant as the notebook uses it: shows the given values, checks answers."""
+    """One student's statement as the notebook uses it: shows the given values
+    and knows what each answer asks for (name, unit, kind). No answers."""
 
-    def __init__(self, variant):
-        self.variant = variant
-        self.answers = variant.answers
-        self._key = {}
+    def __init__(self, statement):
+        self.student = str(statement["student"])
+        self.statement = statement
+        self.problems = statement["problems"]
+        self.asked = {a["name"]: Asked.from_dict(a) for p in self.problems for a in p["asked"]}
+
+    def given(self, number):
+        """The given values of problem ``number`` (1-based) as Quantities
+        (words such as the circuit stay strings): ``g = v.given(1); g["a"]``."""
+        out = {}
+        for symbol, text in self.problems[number - 1]["given"].items():
+            try:
+                out[symbol] = Q_(text)
+            except Exception:
+                out[symbol] = text
+        return out
 
     def show(self, number):
         """Display the given values of problem ``number`` (1-based)."""
-        p = self.variant.problems[number - 1]
-        rows = "\n".join(f"| ${_tex(k)}$ | {v} |" for k, v in p.given.items())
-        text = (f"**Your values** (student `{self.variant.student}`):\n\n"
-                f"| given | value |\n|---|---|\n{rows}")
+        table = GivenValues(self.student, self.problems[number - 1]["given"])
         try:
-            from IPython.display import Markdown, display
-            display(Markdown(text))
+            from IPython.display import display
+            display(table)
         except ImportError:  # outside IPython
-            print(text)
+            print(repr(table))
 
-    def solution(self, name):
-        """The key value as a Quantity in the asked unit (instructor's source only)."""
-        a = self.answers[name]
-        value = self.expected(name)
-        if a.kind == "choice":
-            return value
-        return Q_(value, ureg.Quantity(1.0, a.unit or "").to_base_units().units).to(a.unit or "")
+    def __repr__(self):
+        return (f"<values of student {self.student!r}: {len(self.problems)} problem(s), "
+                f"answers {', '.join(self.asked)}>")
 
-    def expected(self, name):
-        if name not in self._key:
-            with quiet():
-                self._key[name] = key_value(self.answers[name])
-        return self._key[name]
+
+class GivenValues:
+    """A student's given values: a table in a notebook, plain text elsewhere."""
+
+    def __init__(self, student, given):
+        self.student, self.given = student, dict(given)
+
+    def _repr_markdown_(self):
+        rows = "\n".join(f"| ${_tex(k)}$ | {v} |" for k, v in self.given.items())
+        return (f"**Your values** (student `{self.student}`):\n\n"
+                f"| given | value |\n|---|---|\n{rows}")
+
+    def __repr__(self):
+        width = max((len(k) for k in self.given), default=0)
+        rows = "\n".join(f"  {k:<{width}} = {v}" for k, v in self.given.items())
+        return f"Your values (student `{self.student}`):\n{rows}"
 
 
 def _tex(symbol):
@@ -77,40 +98,51 @@ def _tex(symbol):
 
 
 def load_variant(spec, student=None):
-    """Build (and remember, for the test cells) the variant of ``student``."""
-    with quiet():
-        nv = NotebookVariant(build_variant(spec, student if student is not None else student_id()))
-    _current["variant"] = nv
+    """The values of ``student`` (default: :func:`student_id`) for the
+    assignment ``spec``, remembered for the visible checks."""
+    student = str(student if student is not None else student_id())
+    grading = _state["grading"]
+    if grading is not None:
+        if student != grading["student"]:
+            _state["refused"].append(student)
+            raise LookupError(
+                f"while a submission is graded, a notebook gets only its submitter's values: "
+                f"this one asked for the values of {student!r}. It is graded against the "
+                "submitter's own values.")
+        statement = grading
+    else:
+        from .assignment import statement_of   # not available inside the grading sandbox
+        statement = statement_of(spec, student)
+    nv = NotebookVariant(statement)
+    _state["variant"] = nv
     return nv
 
 
-def _lookup(name, namespace):
-    nv = _current.get("variant")
+def check_format(name, namespace):
+    """Visible test: the answer exists, has a usable form and the right
+    dimension. Raises AssertionError with what to fix. It never looks at the
+    value itself: that is judged when the assignment is graded."""
+    nv = _state["variant"]
     if nv is None:
         raise AssertionError("the parameter cell has not run: run the notebook from the top")
-    if name not in nv.answers:
+    if name not in nv.asked:
         raise AssertionError(f"this notebook has no graded answer {name!r}")
-    value = namespace.get(name, _MISSING) if namespace is not None else _MISSING
-    return nv, nv.answers[name], value
+    value = namespace.get(name, MISSING) if namespace is not None else MISSING
+    reading = read(nv.asked[name], describe(value), ureg)
+    if not reading.ok:
+        raise AssertionError(reading.problem)
+    print(f"{name}: form and dimension are fine (its value is judged when the assignment "
+          "is graded)")
 
 
-def check_format(name, namespace):
-    """Visible test: the answer exists, has a usable format and the right
-    dimension. Raises AssertionError with what to fix."""
-    nv, answer, value = _lookup(name, namespace)
-    message = _check_format(answer, None if value is _MISSING else value,
-                            defined=value is not _MISSING)
-    if message:
-        raise AssertionError(message)
-    print(f"{name}: format and dimension are fine")
+def set_grading_statement(statement):
+    """Called by the sandbox's kernel (:mod:`exercises.kernel`) before any cell
+    runs: the submitter's statement, the only one a graded notebook can load."""
+    _state["grading"] = statement
+    _state["refused"] = []
 
 
-def check_value(name, namespace):
-    """Hidden test: the value within the assignment's tolerance of the solver's.
-    Raises AssertionError with a hint (never the expected value)."""
-    nv, answer, value = _lookup(name, namespace)
-    result = _grade(answer, None if value is _MISSING else value, nv.expected(name),
-                    nv.variant.tolerance, defined=value is not _MISSING)
-    if not result.ok:
-        raise AssertionError(result.message)
-    print(result.message)
+def loaded_student():
+    """(id of the variant the notebook loaded last, ids it asked for and was refused)."""
+    nv = _state["variant"]
+    return (nv.student if nv is not None else None), list(_state["refused"])

@@ -36,16 +36,21 @@ def submit(course_dir, assignment, student, code, edit=None):
 
 
 def key_code(spec, student, transform=None):
-    """Answer code from the solver's key for ``student``: ``name = Q_(value, unit)``.
+    """Answer code from the grader's key for ``student``: ``name = Q_(value, unit)``.
 
     ``transform(answer, quantity)`` may return other source text (a wrong
-    answer, another unit, ...) or None to keep the right one.
+    answer, another unit, ...) or None to keep the right one. (Simulations and
+    tests only: the key never enters a student's notebook.)
     """
-    from .runtime import load_variant
-    nv = load_variant(spec, student)
+    from solver.units import Q_
+    from .grader.key import key_for
+    key = key_for(spec, student)
     code = {}
-    for name, a in nv.answers.items():
-        value = nv.solution(name)
+    for name, a in key.variant.answers.items():
+        value = key.values[name]
+        if a.kind != "choice":
+            base = Q_(1.0, a.unit or "").to_base_units().units
+            value = Q_(value, base).to(a.unit or "")
         text = transform(a, value) if transform else None
         if text is None:
             text = (f"{name} = {value!r}" if a.kind == "choice"

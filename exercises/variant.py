@@ -18,14 +18,14 @@ have ``"kind": "choice"`` and ``choices``, and no expr.
 import json
 
 from .assignment import build_variant
-from .grading import quiet
+from .silence import silenced
 from .notebook import read_spec
 
 
 def variant_json(course_dir, assignment, student):
     """The public variant of ``student`` as a dict."""
     spec = read_spec(course_dir, assignment)
-    with quiet():
+    with silenced():
         return build_variant(spec, student).public()
 
 

@@ -8,8 +8,10 @@ output on stderr, and checks that the executed notebook holds its figures,
 its animation and its practice problems' verdicts.
 
 Each notebook is executed once per session: :func:`executed` keeps the
-executed notebook in ``build/course/NN_slug.ipynb`` and remembers it, so the
-site test (``tests/test_site.py``) reuses it instead of executing again.
+executed notebook in ``build/course/NN_slug.ipynb`` and in the documentation
+build's execution cache (``docs/notebooks.py``), so the site test that runs
+after it (``tests/test_docs.py``) builds the course pages without executing
+the notebooks again.
 
 The fast tests check each notebook's shape against the course conventions
 (title cell, section order, folded answers, numbered equations, next link,
@@ -94,7 +96,8 @@ def written_course():
 
 def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     """Execute the written ``notebook`` from :data:`RUN` and write the result to
-    ``outdir``; raise :class:`NotebookFailed` on an error or stderr output."""
+    ``outdir``; returns the executed notebook. Raises :class:`NotebookFailed` on
+    an error or stderr output."""
     import nbformat
     from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
@@ -119,7 +122,20 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     if found:
         raise NotebookFailed(f"{Path(notebook).name} wrote to stderr or failed:\n"
                              + "\n".join(found))
-    return target
+    return nb
+
+
+def _store(source, nb, seconds):
+    """Hand an executed notebook to the documentation build's cache, if the
+    repository has one (``docs/notebooks.py``)."""
+    import sys
+    if str(ROOT) not in sys.path:  # docs/ is not an installed package
+        sys.path.append(str(ROOT))
+    try:
+        from docs.notebooks import store
+    except ImportError:
+        return
+    store(source, nb, seconds)
 
 
 def executed(source):
@@ -131,8 +147,11 @@ def executed(source):
         notebook = written_course() / f"{key}.ipynb"
         t0 = time.perf_counter()
         try:
-            _executed[key] = (execute(notebook), time.perf_counter() - t0)
-        except NotebookFailed as exc:  # remembered so the site test does not re-run it
+            nb = execute(notebook)
+            seconds = time.perf_counter() - t0
+            _store(source, nb, seconds)
+            _executed[key] = (BUILD / notebook.name, seconds)
+        except NotebookFailed as exc:  # remembered so that it is not run again
             _executed[key] = exc
     value = _executed[key]
     if isinstance(value, Exception):
@@ -180,13 +199,11 @@ def test_notebook_executes(source):
     assert _outputs(nb, "image/png"), "no figure: is %matplotlib inline in the first cell?"
     text = source.read_text()
     if "animate(" in text:
-        gifs = [h for h in _outputs(nb, "text/html") if "data:image/gif;base64," in "".join(h)]
-        assert gifs, "the animation was not shown"
-        for h in gifs:
-            html = "".join(h)
-            data = html.split("data:image/gif;base64,")[1].split('"')[0]
-            assert base64.b64decode(data)[:6] in (b"GIF89a", b"GIF87a")
-            assert len(html) < MAX_ANIMATION, f"an animation of {len(html) / 1e6:.1f} MB"
+        pngs = [base64.b64decode("".join(p)) for p in _outputs(nb, "image/png")]
+        animated = [p for p in pngs if b"acTL" in p[:200]]      # an APNG's animation control
+        assert animated, "the animation was not shown"
+        for png in animated:
+            assert len(png) * 4 / 3 < MAX_ANIMATION, f"an animation of {len(png) / 1e6:.1f} MB"
     if "practice(" in text:
         # the notebook asserts p.check's verdicts; here: each was said, with a reason
         lines = _stdout(nb).splitlines()
@@ -370,9 +387,9 @@ def test_measure_times_functions_in_turn():
     assert 0 < fast < slow
 
 
-def test_animation_is_a_small_gif_drawn_by_the_linkage_drawer(monkeypatch):
-    """course.animation: FuncAnimation frames drawn by draw_linkage, a GIF shown
-    inline as an <img>; a few frames here to keep the test fast."""
+def test_animation_is_a_small_apng_drawn_by_the_linkage_drawer(monkeypatch):
+    """course.animation: FuncAnimation frames drawn by draw_linkage, an animated
+    PNG shown as an image/png output; a few frames here to keep the test fast."""
     from course.animation import animate
     from solver.graphical import draw as drawing
     from solver.graphical.gallery import EXAMPLE_7_1
@@ -381,14 +398,13 @@ def test_animation_is_a_small_gif_drawn_by_the_linkage_drawer(monkeypatch):
     monkeypatch.setattr(drawing, "draw_linkage",
                         lambda *a, **kw: calls.append(kw) or real(*a, **kw))
     anim = animate(dict(EXAMPLE_7_1, alpha2="0 rad/s^2"), frames=4)
-    assert anim.gif[:6] == b"GIF89a" and anim.frames == 4
+    assert anim._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n" and anim.frames == 4
     assert len(calls) >= 4 and all(kw["box"] == calls[0]["box"] for kw in calls)
     assert all(kw["scale"] == calls[0]["scale"] for kw in calls), "one vector scale"
-    html = anim._repr_html_()
-    assert html.startswith('<img src="data:image/gif;base64,') and "alt=" in html
+    assert not hasattr(anim, "_repr_html_"), "an image/png output: the site captions it"
     from PIL import Image
     import io
-    im = Image.open(io.BytesIO(anim.gif))
+    im = Image.open(io.BytesIO(anim.png))
     assert im.n_frames == 4 and im.size == (anim.width, anim.height)
 
 

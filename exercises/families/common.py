@@ -2,6 +2,8 @@
 ranges, and the accept-or-redraw loop that keeps only well-conditioned variants.
 """
 
+import contextvars
+
 import numpy as np
 
 from solver.units import ureg
@@ -85,15 +87,25 @@ def _in_unit(value, unit, name):
     return float(value)
 
 
+#: set while a self-study practice problem is drawn (:mod:`exercises.practice`)
+PRACTICE = contextvars.ContextVar("practice", default=False)
+
+
 def draw(rng, spec, nonzero=False, signed=False):
     """One value on the grid lo, lo+step, ..., hi (textbook precision).
 
-    ``signed`` also flips the sign at random; ``nonzero`` redraws zero.
+    ``signed`` also flips the sign at random; ``nonzero`` redraws zero. Practice
+    problems are drawn on the half-steps lo + step/2, lo + 3 step/2, ... instead,
+    so that with the default ranges a practice problem is never a graded one.
     """
     lo, hi, step, _ = spec
     n = int(np.floor((hi - lo) / step + 1e-9))
+    half = PRACTICE.get() and n > 0
     for _ in range(100):
-        value = round(lo + step * int(rng.integers(0, n + 1)), 10)
+        if half:
+            value = round(lo + step * (int(rng.integers(0, n)) + 0.5), 10)
+        else:
+            value = round(lo + step * int(rng.integers(0, n + 1)), 10)
         if signed and rng.random() < 0.5:
             value = -value
         if not (nonzero and value == 0):
@@ -123,7 +135,7 @@ def generate(family, seed, build, units):
     """Draw with ``build(rng)`` until it returns a Problem; the rng is seeded by
     ``seed`` so the result is deterministic."""
     check_units(units)
-    rng = rng_for(("family", family, int(seed)))
+    rng = rng_for(("practice" if PRACTICE.get() else "family", family, int(seed)))
     for _ in range(MAX_ATTEMPTS):
         try:
             problem = build(rng)

@@ -1,14 +1,16 @@
 """A standard nbgrader course directory with accelab's configuration.
 
-``create_course(root, course_id, roster)`` writes ``nbgrader_config.py`` and the
-embedded sqlite gradebook (``gradebook.db``) with the roster's students. The
-config ships the preprocessors of :mod:`exercises.nbgrader_ext`: the student id
-passed to the kernel during autograde, the kernel's environment cleaned, a
-per-cell timeout, deleted test cells put back as failing cells (reported, never
-left to manual grading), and hidden tests stripped from feedback.
+``create_course(root, course_id, roster)`` writes ``nbgrader_config.py``, the
+embedded sqlite gradebook (``gradebook.db``) with the roster's students, and the
+roster itself (``.accelab/roster.json``: the CSV covers every student on it).
+The config puts :class:`exercises.grader.nbgrader_step.JudgeSubmission` in place
+of nbgrader's execution step, so that however autograde is started (``accelab
+grade``, ``nbgrader autograde``, formgrader) a submission runs in the sandbox and
+is judged outside it.
 """
 
 import csv
+import json
 import os
 import subprocess
 import sys
@@ -18,10 +20,11 @@ CONFIG = '''\
 import os
 
 from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPreprocessor
-from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
-                                    IgnorePattern, LimitOutput, SaveAutoGrades)
+from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, ClearOutput,
+                                    GetGrades, LimitOutput, OverwriteCells,
+                                    OverwriteKernelspec, SaveAutoGrades)
 
-from exercises.nbgrader_ext import HideHiddenTests, StudentExecute
+from exercises.grader.nbgrader_step import CleanFeedback, DropDuplicateIds, JudgeSubmission
 
 c = get_config()  # noqa: F821
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -29,20 +32,21 @@ c.CourseDirectory.course_id = {course_id!r}
 c.CourseDirectory.root = HERE
 c.CourseDirectory.db_url = "sqlite:///" + os.path.join(HERE, "gradebook.db")
 c.Exchange.root = os.path.join(HERE, "exchange")
+c.CourseDirectory.ignore = [".ipynb_checkpoints", "*.pyc", "__pycache__", "feedback", ".accelab"]
 
-# autograde: clean kernel environment + the submission's student id, per-cell timeout
-c.Autograde.autograde_preprocessors = [StudentExecute, IgnorePattern, ClearMetadataPreprocessor,
-                                       LimitOutput, SaveAutoGrades, AssignLatePenalties,
-                                       CheckCellMetadata]
-c.StudentExecute.timeout = {timeout}
-# a deleted test cell comes back as a failing cell: the student loses its points, with a message
+c.Autograde.sanitize_preprocessors = [ClearOutput, DropDuplicateIds, OverwriteKernelspec,
+                                      OverwriteCells, CheckCellMetadata]
+# autograde: each submission runs in a sandbox; its answers are judged outside it,
+# against the submitter's key (JudgeSubmission takes the place of Execute)
+c.Autograde.autograde_preprocessors = [JudgeSubmission, ClearMetadataPreprocessor, LimitOutput,
+                                       SaveAutoGrades, AssignLatePenalties, CheckCellMetadata]
+c.JudgeSubmission.cell_timeout = {timeout}
+c.JudgeSubmission.time_limit = {time_limit}
+# a deleted test cell comes back, and the answer it tests is judged as usual
 c.OverwriteCells.add_missing_cells = True
-c.OverwriteCells.missing_cell_notification = (
-    "test cell {{cell_id}} was deleted from the submission: no credit for it\\n"
-    "raise AssertionError('this test cell ({{cell_id}}) was deleted from your notebook, so it "
-    "earns no credit; start again from the released notebook')\\n")
-# feedback never shows hidden tests
-c.GenerateFeedback.preprocessors = [GetGrades, CSSHTMLHeaderPreprocessor, HideHiddenTests]
+c.OverwriteCells.missing_cell_notification = "# test cell {{cell_id}} was deleted and put back\\n"
+# feedback: error messages without tracebacks
+c.GenerateFeedback.preprocessors = [GetGrades, CSSHTMLHeaderPreprocessor, CleanFeedback]
 # the released answer cells start empty (an undefined answer gets a clear message)
 c.ClearSolutions.code_stub = {{"python": "# YOUR ANSWER HERE"}}
 '''
@@ -89,7 +93,7 @@ def read_roster(path):
     return rows
 
 
-def create_course(root, course_id="accelab", roster=(), timeout=10):
+def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=60):
     """Create (or update) the course directory at ``root``; returns its path.
 
     ``roster`` is a list of ids or dicts with ``id`` and optional names.
@@ -101,14 +105,34 @@ def create_course(root, course_id="accelab", roster=(), timeout=10):
     config = os.path.join(root, "nbgrader_config.py")
     if not os.path.exists(config):
         with open(config, "w") as fh:
-            fh.write(CONFIG.format(course_id=course_id, timeout=int(timeout)))
+            fh.write(CONFIG.format(course_id=course_id, timeout=float(timeout),
+                                   time_limit=float(time_limit)))
+    ids = roster_ids(root)
     with gradebook(root, course_id) as gb:
         for student in roster:
             info = dict(student) if isinstance(student, dict) else {"id": student}
             sid = info.pop("id")
             info = {k: v for k, v in info.items() if k in ("first_name", "last_name", "email")}
             gb.update_or_create_student(sid, **info)
+            ids.append(str(sid))
+    write_roster(root, ids)
     return root
+
+
+def roster_ids(root):
+    """The ids on the course's roster (in the order they were added)."""
+    path = os.path.join(root, ".accelab", "roster.json")
+    if not os.path.exists(path):
+        return []
+    with open(path) as fh:
+        return [str(s) for s in json.load(fh)]
+
+
+def write_roster(root, ids):
+    path = os.path.join(root, ".accelab", "roster.json")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as fh:
+        json.dump(list(dict.fromkeys(ids)), fh, indent=1)
 
 
 def course_id_of(root):

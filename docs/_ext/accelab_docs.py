@@ -1,0 +1,565 @@
+"""What accelab's site needs on top of Sphinx, MyST-NB and the book theme.
+
+* Course pages: the notebooks' own ``[Next: ...](NN_slug.ipynb)`` links point
+  at the next page, and each page gets a line under its title that downloads
+  the notebook as ``.ipynb`` (written next to the page at the end of the build,
+  converted by jupytext, without outputs) and the ``coursekit.py`` it imports.
+* Every figure is a link to its own image file, so a tap on a phone opens it
+  at full size.
+* MathJax is served from the site (the copy the ``sphinx-mathjax-offline``
+  package ships: MathJax 3 with its fonts), so no equation needs the network.
+* Directives that generate tables from code: ``accelab-families`` (the problem
+  families with their default ranges), ``accelab-family-notebooks`` (which
+  notebook teaches each family).
+"""
+
+import importlib.util
+import posixpath
+import re
+import shutil
+from pathlib import Path
+
+from docutils import nodes
+from docutils.parsers.rst import Directive, directives
+from sphinx import addnodes
+from sphinx.util import logging
+from sphinx.util.osutil import relative_uri
+
+logger = logging.getLogger(__name__)
+
+COURSE_DOC = re.compile(r"^course/(\d\d_[A-Za-z0-9_]+)$")
+NOTEBOOK_LINK = re.compile(r"\[([^\]`]+)\]\((\d\d_[A-Za-z0-9_]+)\.ipynb\)")
+
+
+# ---------------------------------------------------------------- course pages
+def _course_stem(docname):
+    m = COURSE_DOC.match(docname)
+    return m.group(1) if m else None
+
+
+def _download_line(stem):
+    return (f'<p class="nb-download">'
+            f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
+            f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
+            f'<span class="nb-download-note"> to run it yourself in Jupyter, with '
+            f'<a href="coursekit.py" download="coursekit.py">coursekit.py</a> beside it and '
+            f'accelab installed (<code>pip install -e .</code>).</span></p>')
+
+
+def source_read(app, docname, source):
+    """Course notebooks: retarget the next-notebook links and add the download line."""
+    stem = _course_stem(docname)
+    if stem is None:
+        return
+    # a {doc} role: the notebooks sit behind a symbolic link (docs/course), where
+    # MyST's path links would resolve outside the source folder
+    text = NOTEBOOK_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`",
+                             source[0])
+    lines = text.split("\n")
+    for i, line in enumerate(lines):           # the first '# # Title' of a markdown cell
+        if re.match(r"^# # \S", line):
+            lines[i + 1:i + 1] = ["#", "# " + _download_line(stem)]
+            break
+    source[0] = "\n".join(lines)
+
+
+def write_notebooks(app, exc):
+    """Write each course page's notebook (.ipynb, no outputs) and coursekit.py
+    next to its page."""
+    if exc is not None or app.builder.format != "html":
+        return
+    import jupytext
+    out = Path(app.outdir)
+    done = 0
+    for docname in app.env.found_docs:
+        stem = _course_stem(docname)
+        if stem is None:
+            continue
+        source = Path(app.env.doc2path(docname))
+        nb = jupytext.read(source, fmt="py:percent")
+        target = out / "course" / f"{stem}.ipynb"
+        target.parent.mkdir(parents=True, exist_ok=True)
+        jupytext.write(nb, target, fmt="ipynb")
+        done += 1
+        kit = source.parent / "coursekit.py"
+        if kit.exists():
+            shutil.copyfile(kit, target.parent / "coursekit.py")
+    logger.info(f"wrote {done} course notebooks for download")
+
+
+# ---------------------------------------------------------------- equations
+TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
+
+
+def number_equations(app, doctree):
+    """Display equations numbered as the chapter numbers them (``\\tag{7.19a}``)
+    get that number beside them, outside the typeset equation, with an anchor
+    (``#eq-7-19a``): the equation alone scrolls sideways when it is wider than
+    the page, the number stays in view."""
+    used = set()
+    for node in doctree.findall(nodes.math_block):
+        text = node.astext()
+        tags = TAG.findall(text)
+        if not tags or node.get("nowrap") or node.get("no-wrap"):
+            continue
+        number = tags[-1].strip()
+        body = TAG.sub("", text).rstrip()
+        node.children = [nodes.Text(body)]
+        node["number"] = number
+        anchor = "eq-" + re.sub(r"[^0-9A-Za-z]+", "-", number).strip("-").lower()
+        k, unique = 1, anchor
+        while unique in used or unique in doctree.ids:
+            k += 1
+            unique = f"{anchor}-{k}"
+        used.add(unique)
+        node["ids"].insert(0, unique)
+        doctree.ids[unique] = node
+
+
+# ---------------------------------------------------------------- figures
+def caption_images(app, doctree):
+    """A picture standing alone in its paragraph (``![what it shows](file.png)``
+    in Markdown) becomes a figure whose caption is its alt text."""
+    for para in list(doctree.findall(nodes.paragraph)):
+        kids = [k for k in para.children if not (isinstance(k, nodes.Text) and not k.strip())]
+        if len(kids) != 1 or not isinstance(kids[0], nodes.image):
+            continue
+        image = kids[0]
+        alt = image.get("alt", "").strip()
+        if not alt or isinstance(para.parent, nodes.figure):
+            continue
+        figure = nodes.figure("", image.deepcopy(), nodes.caption(alt, alt))
+        para.replace_self(figure)
+        doctree.set_id(figure)
+
+
+def link_images(app, doctree, docname):
+    """Wrap every image that is not already a link in a link to its file."""
+    if app.builder.format != "html":
+        return
+    imgdir = relative_uri(app.builder.get_target_uri(docname), "_images")
+    for image in list(doctree.findall(nodes.image)):
+        if isinstance(image.parent, nodes.reference):
+            continue
+        uri = image.get("candidates", {}).get("*", image["uri"])
+        if uri in app.env.images:
+            refuri = posixpath.join(imgdir, app.env.images[uri][1])
+        elif "://" in uri or uri.startswith("data:"):
+            continue
+        else:
+            refuri = uri
+        ref = nodes.reference("", "", internal=True, refuri=refuri,
+                              classes=["image-full-size"])
+        ref["reftitle"] = "Open the image at full size"
+        image.replace_self(ref)
+        ref.append(image)
+
+
+# ---------------------------------------------------------------- API pages
+#: the packages the API reference documents, every public module of each
+API_PACKAGES = ("solver", "exercises")
+
+
+def _modules(package):
+    """``[(module name, is a package)]`` of ``package`` and everything below it
+    (private modules, whose name starts with ``_``, left out)."""
+    import importlib
+    import pkgutil
+    top = importlib.import_module(package)
+    out = [(package, True)]
+    for info in pkgutil.walk_packages(top.__path__, package + "."):
+        if any(part.startswith("_") for part in info.name.split(".")):
+            continue
+        out.append((info.name, info.ispkg))
+    return out
+
+
+def _ours(module_name):
+    return bool(module_name) and module_name.split(".")[0] in API_PACKAGES
+
+
+def _assigned_here(module, attr):
+    """True when ``attr`` is assigned at the top level of ``module``'s source
+    (``ureg = pint.UnitRegistry()``): an object of another library that this
+    module defines for the package."""
+    import inspect
+    try:
+        source = inspect.getsource(module)
+    except (OSError, TypeError):
+        return False
+    return re.search(rf"^{re.escape(attr)}\s*=", source, re.M) is not None
+
+
+def _exports(name):
+    """``(defined, reexported)`` of a module's ``__all__``: the foreign objects
+    it defines itself (documented here as data), and ``[(public name,
+    canonical target)]`` of what it brings in from the package's other modules
+    (documented where they are defined)."""
+    import importlib
+    mod = importlib.import_module(name)
+    defined, out = [], []
+    for attr in getattr(mod, "__all__", []):
+        obj = getattr(mod, attr, None)
+        home = getattr(obj, "__module__", None) if not isinstance(obj, (int, float, str, dict,
+                                                                          list, tuple)) else None
+        qual = getattr(obj, "__qualname__", None)
+        if home == name or home is None:
+            continue
+        if _ours(home) and qual and not any(p.startswith("_") for p in home.split(".")):
+            out.append((attr, f"{home}.{qual}"))
+        elif _assigned_here(mod, attr):
+            defined.append(attr)
+        else:                       # a foreign object defined by one of our modules
+            owner = _definer(name, attr)
+            if owner:
+                out.append((attr, f"{owner}.{attr}"))
+    return defined, out
+
+
+def _definer(package, attr):
+    import importlib
+    for modname, _ in _modules(package.split(".")[0]):
+        try:
+            mod = importlib.import_module(modname)
+        except Exception:
+            continue
+        if modname != package and attr in getattr(mod, "__all__", []) and \
+                _assigned_here(mod, attr):
+            return modname
+    return None
+
+
+def api_pages():
+    """``{page name: reST text}``: one page per (sub)package, each module of it
+    with its members, from the docstrings."""
+    pages = {}
+    for package in API_PACKAGES:
+        groups = {}
+        for name, ispkg in _modules(package):
+            parts = name.split(".")
+            key = ".".join(parts[:2]) if (len(parts) > 2 or ispkg) else package
+            groups.setdefault(key, []).append((name, ispkg))
+        for key, members in groups.items():
+            title = f"``{key}``"
+            lines = [title, "=" * len(title), ""]
+            for name, ispkg in members:
+                import importlib
+                try:
+                    importlib.import_module(name)
+                except Exception as exc:   # reported, never hidden
+                    logger.warning(f"API reference: cannot import {name}: {exc}")
+                    continue
+                if name != key:
+                    sub = f"``{name}``"
+                    lines += [sub, "-" * len(sub), ""]
+                defined, exported = _exports(name)
+                lines += [f".. automodule:: {name}", "   :members:", "   :undoc-members:"]
+                skip = [a for a, _ in exported] + defined
+                if skip:         # each object is documented once, in its own module
+                    lines.append("   :exclude-members: " + ", ".join(skip))
+                lines.append("")
+                for attr in defined:
+                    lines += [f".. autodata:: {name}.{attr}", "   :no-value:", ""]
+                if ispkg:
+                    if exported:
+                        lines += [f"``{name}`` also offers, documented where they are defined:",
+                                  ""]
+                        lines += [f"* :py:obj:`{name}.{attr} <{target}>`"
+                                  for attr, target in exported]
+                        lines.append("")
+            pages[key] = "\n".join(lines)
+    return pages
+
+
+PIPE = re.compile(r"(?<!\\)\|")
+
+
+def _indent(line):
+    return len(line) - len(line.lstrip())
+
+
+SECTION_RULE = re.compile(r"^\s*-{3,}\s*$")
+TABLE_RULE = re.compile(r"^\s*=+(\s+=+)+\s*$")
+
+
+def _table_ok(lines, start, end):
+    """True when every row of the simple table ``lines[start:end]`` keeps its
+    text inside the columns its top border marks (the last column may run on)."""
+    border = lines[start]
+    gaps = [k for k in range(len(border.rstrip())) if border[k] == " "]
+    for line in lines[start:end]:
+        if TABLE_RULE.match(line):
+            continue
+        if any(k < len(line) and line[k] != " " for k in gaps):
+            return False
+    return True
+
+
+def _table_end(lines, i):
+    """Index after the simple table whose top border is line ``i``."""
+    j = i + 1
+    while j < len(lines):
+        if TABLE_RULE.match(lines[j]) and (j + 1 == len(lines) or not lines[j + 1].strip()):
+            return j + 1
+        j += 1
+    return j
+
+
+def plain_docstring(app, what, name, obj, options, lines):
+    """The docstrings are written to read as plain text too; make that text
+    valid reStructuredText before numpydoc parses it:
+
+    * ``|x|`` means an absolute value there, not a substitution: such bars are
+      escaped (not in grid tables or line blocks, whose lines start ``| `` or
+      ``+``);
+    * in the prose before the numpydoc sections, an indented block under a line
+      (a formula, the loop equation) is shown as it is written, as a literal
+      block, with or without a colon or a blank line before it.
+    """
+    for i, line in enumerate(lines):
+        stripped = line.lstrip()
+        if "|" in line and not stripped.startswith(("| ", "+")) and stripped != "|":
+            lines[i] = PIPE.sub(r"\\|", line)
+    i = 0
+    while i < len(lines) - 1:
+        if SECTION_RULE.match(lines[i + 1]) and lines[i].strip():
+            break                                  # numpydoc sections from here on
+        if TABLE_RULE.match(lines[i]):
+            end = _table_end(lines, i)
+            if not _table_ok(lines, i, end):     # show it as written, in a literal block
+                lines[i:end] = ["::", ""] + ["    " + line for line in lines[i:end]] + [""]
+                end += 3
+            i = end
+            continue
+        head = lines[i].rstrip()
+        j = i + 1
+        while j < len(lines) and not lines[j].strip():
+            j += 1
+        if (head.strip() and j < len(lines) and _indent(lines[j]) > _indent(head)
+                and not head.lstrip().startswith((":", "..", ">>>"))
+                and not head.endswith("::") and _indent(head) == 0):
+            end = j
+            while end < len(lines) and (not lines[end].strip()
+                                        or _indent(lines[end]) > _indent(head)):
+                end += 1
+            while end > j and not lines[end - 1].strip():
+                end -= 1
+            block = lines[j:end]
+            if head.lstrip().startswith(("``", "*", "-")):   # a list or a definition term
+                if end < len(lines) and lines[end].strip():
+                    lines.insert(end, "")       # it must end with a blank line
+                i = end
+                continue
+            lines[i] = head + (":" if head.endswith(":") else " ::")
+            tail = [""] if end < len(lines) and lines[end].strip() else []
+            lines[i + 1:end] = [""] + block + tail
+            i = i + 1 + len(block) + len(tail)
+        i += 1
+
+
+def write_api_pages(app):
+    out = Path(app.srcdir) / "api" / "generated"
+    out.mkdir(parents=True, exist_ok=True)
+    pages = api_pages()
+    for old in out.glob("*.rst"):
+        if old.stem not in pages:
+            old.unlink()
+    for key, text in pages.items():
+        path = out / f"{key}.rst"
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+
+
+# ---------------------------------------------------------------- MathJax, served locally
+def _mathjax_dir():
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    path = Path(list(spec.submodule_search_locations)[0]) / "static" / "mathjax"
+    return path if path.is_dir() else None
+
+
+#: what tex-chtml.js needs at run time: itself, its fonts, and the TeX extensions
+MATHJAX_PARTS = ["tex-chtml.js", "output/chtml/fonts/woff-v2", "input/tex/extensions"]
+
+
+def copy_mathjax(app, exc):
+    if exc is not None or app.builder.format != "html":
+        return
+    src = _mathjax_dir()
+    if src is None:
+        logger.warning("MathJax is missing: pip install sphinx-mathjax-offline "
+                       "(the docs extra installs it)")
+        return
+    dst = Path(app.outdir) / "_static" / "mathjax"
+    for part in MATHJAX_PARTS:
+        s, d = src / part, dst / part
+        if s.is_dir():
+            shutil.copytree(s, d, dirs_exist_ok=True)
+        elif s.exists():
+            d.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(s, d)
+
+
+# ---------------------------------------------------------------- tables from code
+def _table(header, rows, classes=("accelab-table",)):
+    table = nodes.table(classes=list(classes))
+    group = nodes.tgroup(cols=len(header))
+    table += group
+    for _ in header:
+        group += nodes.colspec(colwidth=1)
+    head = nodes.thead()
+    group += head
+    body = nodes.tbody()
+    group += body
+    for target, cells in ((head, [header]), (body, rows)):
+        for cells_row in cells:
+            row = nodes.row()
+            for cell in cells_row:
+                entry = nodes.entry()
+                entry += cell if isinstance(cell, nodes.Node) else nodes.paragraph(text=str(cell))
+                row += entry
+            target += row
+    return table
+
+
+def _literal(text):
+    para = nodes.paragraph()
+    para += nodes.literal(text=text)
+    return para
+
+
+def family_specs():
+    """``[(name, title, module, {param: (lo, hi, step, kind)})]`` of every family."""
+    import importlib
+    from exercises import families
+    out = []
+    for name, generator in families.FAMILIES.items():
+        module = importlib.import_module(generator.__module__)
+        defaults = getattr(module, "DEFAULTS", None)
+        if defaults is None:   # a family that reuses another's table (FOURBAR_DEFAULTS)
+            used = [v for k, v in vars(module).items() if k.endswith("DEFAULTS")
+                    and isinstance(v, dict)]
+            defaults = used[0] if used else {}
+        out.append((name, getattr(module, "TITLE", name), module, defaults))
+    return out
+
+
+def _range_text(lo, hi, step, unit):
+    def num(x):
+        return f"{x:g}"
+    u = f" {unit}" if unit else ""
+    return f"{num(lo)} to {num(hi)}{u}, step {num(step)}"
+
+
+class FamiliesTable(Directive):
+    """The problem families and the parameters they draw, with default ranges
+    in US and SI units (from ``exercises.families``)."""
+    has_content = False
+    option_spec = {"class": directives.class_option}
+
+    def run(self):
+        try:
+            from exercises.families import common
+            specs = family_specs()
+        except Exception as exc:  # an exercises package being rebuilt: say so on the page
+            logger.warning(f"accelab-families: cannot read exercises.families: {exc}")
+            return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
+        result = []
+        for name, title, module, defaults in specs:
+            section_rows = []
+            us = common.ranges_for(defaults, None, "US") if defaults else {}
+            si = common.ranges_for(defaults, None, "SI") if defaults else {}
+            for param in defaults:
+                lo, hi, step, kind = us[param]
+                slo, shi, sstep, _ = si[param]
+                section_rows.append([
+                    _literal(param), kind,
+                    _range_text(lo, hi, step, common.display_unit(kind, "US")),
+                    _range_text(slo, shi, sstep, common.display_unit(kind, "SI"))])
+            head = nodes.paragraph()
+            head += nodes.literal(text=name)
+            head += nodes.Text(f": {title}. ")
+            doc = (module.__doc__ or "").strip().split("\n\n")[0]
+            head += nodes.Text(" ".join(doc.split()))
+            result.append(head)
+            if section_rows:
+                result.append(_table(["parameter", "kind", "default range (US)",
+                                      "default range (SI)"], section_rows))
+        return result
+
+
+#: the docs' own reading of the notebooks, for a family that no notebook names
+#: yet as one that practises it (the family, its chapter section, the notebook
+#: that teaches that section)
+TAUGHT_IN = {"rotation": ["01_rotating_point"], "fourbar": ["03_analytic_fourbar"],
+             "coupler": ["07_any_point"], "slidercrank": ["04_slider_crank_engine"],
+             "coriolis": ["05_coriolis"], "fivebar": ["06_geared_fivebar"],
+             "jerk": ["09_jerk"], "tolerance": ["08_human_tolerance"]}
+
+
+def family_notebooks(course):
+    """``{family: [notebook stems]}``: the notebooks whose text names a family
+    (a line that says "famil..." and has the family's name in backticks), else
+    :data:`TAUGHT_IN`."""
+    from exercises import families
+    names = list(families.FAMILIES)
+    found = {n: [] for n in names}
+    for path in sorted(Path(course).glob("[0-9][0-9]_*.py")):
+        for line in path.read_text().splitlines():
+            if "famil" not in line.lower():
+                continue
+            for n in names:
+                if f"`{n}`" in line and path.stem not in found[n]:
+                    found[n].append(path.stem)
+    for n in names:
+        if not found[n]:
+            found[n] = [s for s in TAUGHT_IN.get(n, [])
+                        if (Path(course) / f"{s}.py").exists()]
+    return found
+
+
+class FamilyNotebooks(Directive):
+    """Which course notebook teaches each problem family."""
+    has_content = False
+
+    def run(self):
+        env = self.state.document.settings.env
+        course = Path(env.srcdir) / "course"
+        try:
+            from exercises import families
+            mapping = family_notebooks(course)
+        except Exception as exc:
+            logger.warning(f"accelab-family-notebooks: {exc}")
+            return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
+        rows = []
+        for name, generator in families.FAMILIES.items():
+            import importlib
+            module = importlib.import_module(generator.__module__)
+            cell = nodes.paragraph()
+            for k, stem in enumerate(mapping.get(name, [])):
+                if k:
+                    cell += nodes.Text(", ")
+                ref = addnodes.pending_xref("", refdomain="std", reftype="doc",
+                                            reftarget=f"/course/{stem}", refexplicit=False,
+                                            refdoc=env.docname)
+                ref += nodes.inline(text=stem)
+                cell += ref
+            if not mapping.get(name):
+                cell += nodes.Text("(none yet)")
+            rows.append([_literal(name), getattr(module, "TITLE", name), cell])
+        return [_table(["family", "what the student solves", "taught in"], rows)]
+
+
+def setup(app):
+    app.connect("builder-inited", write_api_pages)
+    app.connect("autodoc-process-docstring", plain_docstring, priority=400)  # before numpydoc
+    app.connect("source-read", source_read)
+    app.connect("doctree-read", number_equations)
+    app.connect("doctree-read", caption_images)
+    app.connect("doctree-resolved", link_images)
+    app.connect("build-finished", write_notebooks)
+    app.connect("build-finished", copy_mathjax)
+    app.add_directive("accelab-families", FamiliesTable)
+    app.add_directive("accelab-family-notebooks", FamilyNotebooks)
+    return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

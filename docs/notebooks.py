@@ -1,0 +1,201 @@
+"""The course notebooks as the documentation build and the tests execute them.
+
+Every ``course/NN_slug.py`` (jupytext percent format) is executed headless:
+working directory ``course/``, ``ACCELAB_STATIC=1`` (so ``coursekit.explore``
+draws its static small multiples instead of sliders), matplotlib's inline
+backend, and the repository and ``course/`` importable.
+
+Executed notebooks are kept in a jupyter-cache folder, the one MyST-NB reads
+when ``make docs`` builds the site (``nb_execution_mode = "cache"``). The
+folder's name is a digest of the code the notebooks run (``solver/``,
+``exercises/``, ``course/*.py`` other than the notebooks), because the cache
+itself only keys a notebook by its code cells: a change to the solver must
+execute the notebooks again. ``tests/test_course.py`` executes each notebook
+once per session and stores it there (:func:`store`), so the site test that
+follows builds the site without executing anything again.
+"""
+
+import hashlib
+import os
+import shutil
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+COURSE = ROOT / "course"
+CACHE_ROOT = ROOT / "build" / "docs-cache"
+CELL_TIMEOUT = 300          # s per cell
+#: the code the executed notebooks depend on (besides the notebooks' own cells)
+CODE = ("solver", "exercises", "accelab", "benchmarks", "course")
+
+__all__ = ["sources", "kernel_env", "set_kernel_env", "cache_path", "execute", "store",
+           "problems", "NotebookFailed"]
+
+
+class NotebookFailed(RuntimeError):
+    """A notebook raised in a cell or wrote to stderr; the message lists where."""
+
+
+def sources(course=COURSE):
+    """The course notebooks, in order: ``course/NN_*.py``."""
+    return sorted(Path(course).glob("[0-9][0-9]_*.py"))
+
+
+def kernel_env(base=None):
+    """Environment of the kernel: headless figures, the inline backend, and the
+    repository and ``course/`` importable (``solver``, ``coursekit``)."""
+    env = dict(os.environ if base is None else base)
+    env["ACCELAB_STATIC"] = "1"
+    env["MPLBACKEND"] = "module://matplotlib_inline.backend_inline"
+    paths = [str(ROOT), str(COURSE)]
+    env["PYTHONPATH"] = os.pathsep.join(
+        paths + [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p and p not in paths])
+    env.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
+    return env
+
+
+def set_kernel_env():
+    """Make this process's environment the kernel's (kernels inherit it)."""
+    os.environ.update(kernel_env())
+
+
+def _code_files():
+    for name in CODE:
+        top = ROOT / name
+        if not top.is_dir():
+            continue
+        for path in sorted(top.rglob("*.py")):
+            if name == "course" and path.parent == COURSE and path.name[:2].isdigit():
+                continue      # the notebooks themselves: the cache keys them by their cells
+            if "__pycache__" not in path.parts:
+                yield path
+
+
+def code_digest():
+    """A digest of every source file the notebooks' outputs depend on."""
+    h = hashlib.sha256()
+    for path in _code_files():
+        h.update(str(path.relative_to(ROOT)).encode())
+        h.update(path.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def cache_path(prune=False):
+    """The jupyter-cache folder for the code as it is now; ``prune`` deletes the
+    folders of older code."""
+    path = CACHE_ROOT / code_digest()
+    if prune and CACHE_ROOT.is_dir():
+        for old in CACHE_ROOT.iterdir():
+            if old != path and old.is_dir():
+                shutil.rmtree(old, ignore_errors=True)
+    return path
+
+
+def read(source):
+    """The notebook of a jupytext source, as MyST-NB reads it."""
+    import jupytext
+    nb = jupytext.read(source, fmt="py:percent")
+    nb.metadata.setdefault("kernelspec", {"name": "python3", "display_name": "Python 3",
+                                          "language": "python"})
+    return nb
+
+
+def problems(nb):
+    """Error outputs and stderr text of an executed notebook, one line each."""
+    out = []
+    for i, cell in enumerate(nb.cells):
+        if cell.cell_type != "code":
+            continue
+        for o in cell.get("outputs", []):
+            if o.output_type == "error":
+                out.append(f"cell {i}: {o.ename}: {o.evalue}")
+            elif o.output_type == "stream" and o.name == "stderr":
+                out.append(f"cell {i}: stderr: {o.text.strip()[:500]}")
+    return out
+
+
+def execute(source, timeout=CELL_TIMEOUT):
+    """Execute ``source`` with nbclient in ``course/``; returns the executed
+    notebook. Raises :class:`NotebookFailed` on a cell error or any output to
+    stderr (the failed notebook is on the exception as ``.notebook``)."""
+    from nbclient import NotebookClient
+    from nbclient.exceptions import CellExecutionError
+
+    source = Path(source)
+    nb = read(source)
+    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", startup_timeout=120,
+                            allow_errors=False,
+                            resources={"metadata": {"path": str(source.parent)}})
+    try:
+        client.execute(env=kernel_env())
+    except CellExecutionError as exc:
+        raise _failed(nb, f"{source.name} failed:\n{exc}") from None
+    except Exception as exc:  # a timeout, a dead kernel: the same verdict, with its kind
+        raise _failed(nb, f"{source.name} failed: {type(exc).__name__}: {exc}") from None
+    found = problems(nb)
+    if found:
+        raise _failed(nb, f"{source.name} wrote to stderr or failed:\n" + "\n".join(found))
+    return nb
+
+
+def _failed(nb, message):
+    exc = NotebookFailed(message)
+    exc.notebook = nb
+    return exc
+
+
+def store(source, nb, seconds=None):
+    """Keep an executed notebook in the documentation build's cache (replacing
+    any earlier run of the same cells)."""
+    from jupyter_cache import get_cache
+    from jupyter_cache.base import CacheBundleIn
+
+    cache = get_cache(str(cache_path()))
+    data = {"execution_seconds": seconds} if seconds is not None else {}
+    cache.cache_notebook_bundle(CacheBundleIn(nb, str(Path(source).resolve()), data=data),
+                                check_validity=False, overwrite=True)
+
+
+def cached(source):
+    """The executed notebook of ``source`` from the cache, or None."""
+    from jupyter_cache import get_cache
+
+    path = cache_path()
+    if not path.is_dir():
+        return None
+    cache = get_cache(str(path))
+    try:
+        _, nb = cache.merge_match_into_notebook(read(source))
+    except KeyError:
+        return None
+    return nb
+
+
+#: figures the README shows: file name -> (notebook, n-th figure of its executed outputs)
+README_FIGURES = {"course-piston-acceleration.png": ("04_slider_crank_engine", 2)}
+
+
+def readme_figures(outdir):
+    """Write the course figures the README shows (:data:`README_FIGURES`) into
+    ``outdir``, from the executed notebooks (executing those not in the cache);
+    returns the paths written."""
+    import base64
+    written = []
+    for name, (stem, k) in README_FIGURES.items():
+        source = COURSE / f"{stem}.py"
+        nb = cached(source)
+        if nb is None:
+            nb = execute(source)
+            store(source, nb)
+        pngs = [o["data"]["image/png"] for c in nb.cells if c.cell_type == "code"
+                for o in c.get("outputs", []) if "image/png" in o.get("data", {})]
+        target = Path(outdir) / name
+        target.write_bytes(base64.b64decode(pngs[k - 1]))
+        written.append(target)
+    return written
+
+
+if __name__ == "__main__":     # python -m docs.notebooks figures/
+    import sys
+    for path in readme_figures(sys.argv[1] if len(sys.argv) > 1 else ROOT / "figures"):
+        print(f"wrote {path}")

@@ -1,0 +1,149 @@
+"""The grade table: one row per student on the roster and per submitter, one
+column per question, read from nbgrader's gradebook (the only record of
+scores), with the late penalty applied as nbgrader's policy set it, and notes
+from the grading (whose values a notebook showed, cells that failed, damage).
+"""
+
+import csv
+import json
+import os
+import warnings
+
+import nbformat
+
+from ..nbgrader_course import course_id_of, gradebook, roster_ids
+from .nbgrader_step import outcome_path
+from .plan import TEST_PREFIX
+
+
+def question_names(course_dir, assignment):
+    """Graded quantity names, in notebook order (from the released notebook)."""
+    path = os.path.join(course_dir, "release", assignment, f"{assignment}.ipynb")
+    nb = nbformat.read(path, as_version=4)
+    names = []
+    for cell in nb.cells:
+        meta = cell.metadata.get("nbgrader", {})
+        gid = meta.get("grade_id", "")
+        if meta.get("grade") and gid.startswith(TEST_PREFIX):
+            names.append(gid[len(TEST_PREFIX):])
+    return names
+
+
+def damage(course_dir, assignment, student):
+    """What the student changed in cells they may not change, as notes."""
+    release = os.path.join(course_dir, "release", assignment, f"{assignment}.ipynb")
+    path = os.path.join(course_dir, "submitted", student, assignment, f"{assignment}.ipynb")
+    try:
+        nb = nbformat.read(path, as_version=4)
+        ref = nbformat.read(release, as_version=4)
+    except Exception:
+        return []
+    seen, notes = {}, []
+    for cell in nb.cells:
+        gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
+        if gid:
+            seen[gid] = seen.get(gid, 0) + 1
+    for gid, count in seen.items():
+        if count > 1:
+            notes.append(f"cell {gid} appears {count} times (the last one was graded)")
+    got = {c.metadata.get("nbgrader", {}).get("grade_id"): c for c in nb.cells}
+    for cell in ref.cells:
+        meta = cell.metadata.get("nbgrader", {})
+        gid = meta.get("grade_id")
+        if not gid:
+            continue
+        if gid not in got:
+            what = "test cell" if meta.get("grade") else (
+                "answer cell" if meta.get("solution") else "locked cell")
+            notes.append(f"{what} {gid} was deleted" + (" (put back and graded)"
+                                                       if meta.get("grade") else ""))
+        elif meta.get("locked") and got[gid].source.strip() != cell.source.strip():
+            notes.append(f"locked cell {gid} was altered (restored before grading)")
+    return notes
+
+
+def read_outcome(course_dir, assignment, student):
+    path = outcome_path(course_dir, assignment, student)
+    if not os.path.exists(path):
+        return None
+    with open(path) as fh:
+        return json.load(fh)
+
+
+def rows_of(course_dir, assignment):
+    """The table rows (dicts), roster first, then other submitters."""
+    names = question_names(course_dir, assignment)
+    roster = roster_ids(course_dir)
+    submitted_root = os.path.join(course_dir, "submitted")
+    submitters = sorted(s for s in (os.listdir(submitted_root) if os.path.isdir(submitted_root)
+                                    else []) if os.path.isdir(os.path.join(submitted_root, s,
+                                                                           assignment)))
+    students = list(dict.fromkeys([*roster, *submitters]))
+    rows = []
+    with warnings.catch_warnings(), gradebook(course_dir, course_id_of(course_dir)) as gb:
+        warnings.simplefilter("ignore")
+        for student in students:
+            row = {n: 0.0 for n in names}
+            notes, penalty = [], 0.0
+            if student not in submitters:
+                notes.append("no submission")
+            else:
+                if roster and student not in roster:
+                    notes.append("not on the roster")
+                try:
+                    sub = gb.find_submission(assignment, student)
+                except Exception:
+                    sub = None
+                outcome = read_outcome(course_dir, assignment, student)
+                if sub is None or outcome is None:
+                    notes.append("not graded yet")
+                else:
+                    for nb in sub.notebooks:
+                        for g in nb.grades:
+                            name = g.name[len(TEST_PREFIX):] if g.name.startswith(
+                                TEST_PREFIX) else g.name
+                            if name in row:
+                                row[name] = float(g.score or 0.0)
+                    penalty = float(sub.late_submission_penalty or 0.0)
+                    if penalty:
+                        notes.append(f"late by {_duration(sub.total_seconds_late)}: "
+                                     f"penalty {penalty:g}")
+                    notes += outcome.get("notes", [])
+                notes += damage(course_dir, assignment, student)
+            score = sum(row.values())
+            rows.append({"student": student, **row, "score": score, "late_penalty": penalty,
+                         "total": max(0.0, score - penalty), "max": float(len(names)),
+                         "notes": "; ".join(notes)})
+    return names, rows
+
+
+def _duration(seconds):
+    seconds = float(seconds or 0)
+    if seconds >= 86400:
+        return f"{seconds / 86400:.1f} days"
+    if seconds >= 3600:
+        return f"{seconds / 3600:.1f} hours"
+    return f"{seconds / 60:.0f} minutes"
+
+
+def export_csv(course_dir, assignment, path=None):
+    """Write the CSV; returns (path, rows)."""
+    path = path or os.path.join(course_dir, f"grades_{assignment}.csv")
+    names, rows = rows_of(course_dir, assignment)
+    with open(path, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=["student", *names, "score", "late_penalty",
+                                                "total", "max", "notes"])
+        writer.writeheader()
+        writer.writerows(rows)
+    return path, rows
+
+
+def format_table(rows, names):
+    """The grade table as text: one line per student."""
+    head = f"{'student':<12} " + " ".join(f"{n[:11]:>11}" for n in names) + \
+        f" {'total':>7}  notes"
+    lines = [head, "-" * len(head)]
+    for r in rows:
+        lines.append(f"{r['student']:<12} " + " ".join(f"{r[n]:>11g}" for n in names)
+                     + f" {r['total']:>4g}/{r['max']:g}  {r['notes']}")
+    return "\n".join(lines)

@@ -1,0 +1,58 @@
+"""The answer key of one student: computed here, in the grader's process, and
+nowhere else.
+
+Each distinct batch case of the variant is solved once; every answer's expr is
+evaluated over those outputs (the same evaluator that the published variant's
+exprs are defined by, so the key and ``accelab variant --json`` cannot
+disagree).
+"""
+
+from dataclasses import dataclass
+
+from ..assignment import Variant, build_variant
+from ..expr import evaluate
+from ..silence import silenced
+from ..problem import solve_cases
+
+
+@dataclass
+class Key:
+    """The expected value of every answer of one student's variant: an SI float
+    (numbers, angles in rad) or the right word (choices)."""
+
+    student: str
+    variant: Variant
+    values: dict
+
+    @property
+    def asked(self):
+        return {name: a.asked() for name, a in self.variant.answers.items()}
+
+
+def key_value(answer, outputs=None):
+    """The correct answer of one :class:`~exercises.problem.Answer`: a float in
+    SI, or the right choice. ``outputs`` (label -> batch result) may be given."""
+    outputs = outputs if outputs is not None else solve_cases(answer.cases)
+    if answer.kind == "choice":
+        value = float(evaluate(answer.basis, outputs))
+        for choice, upper in zip(answer.choices, list(answer.bins) + [float("inf")]):
+            if value < upper:
+                return choice
+    value = evaluate(answer.expr, outputs)
+    if isinstance(value, complex):
+        raise ValueError(f"expr {answer.expr!r} of {answer.name} is a vector; "
+                         "use abs(), angle(), real() or imag()")
+    return float(value)
+
+
+def key_of(variant):
+    """The :class:`Key` of a built variant."""
+    with silenced():
+        values = {name: key_value(a) for name, a in variant.answers.items()}
+    return Key(variant.student, variant, values)
+
+
+def key_for(spec, student):
+    """The :class:`Key` of ``student`` for the assignment ``spec``."""
+    with silenced():
+        return key_of(build_variant(spec, student))

@@ -1,0 +1,161 @@
+"""accelab's steps inside nbgrader, installed by the course's nbgrader_config.py.
+
+* :class:`JudgeSubmission` takes the place of nbgrader's ``Execute`` in
+  ``nbgrader autograde`` (and so in formgrader's autograde button): it runs the
+  sanitized notebook in the sandbox (or takes the run ``accelab grade`` already
+  made of the very same plan), judges every answer against the submitter's key
+  in this process, and writes outputs and verdicts into the notebook. nbgrader's
+  own ``SaveAutoGrades`` then scores the test cells and writes the gradebook:
+  after the sandbox is gone, from the grader's process.
+* :class:`CleanFeedback` makes feedback show error messages without tracebacks.
+"""
+
+import json
+import os
+import threading
+
+import nbformat
+from nbgrader.preprocessors import NbGraderPreprocessor
+from traitlets import Bool, Float, Integer
+
+from ..notebook import read_spec
+from .key import key_for
+from .outcome import judge_run, shown_ids, write_notebook
+from .plan import fingerprint, plan_of
+from .supervisor import Limits, run_plan
+
+#: runs made ahead of nbgrader: (course, assignment, student, fingerprint) -> RunResult
+PREPARED = {}
+_KEYS = {}
+_LOCK = threading.Lock()
+
+
+def outcome_path(course_dir, assignment, student):
+    """Where the grader keeps a submission's outcome (notes, verdicts): in the
+    course folder, which no sandbox sees, and never released."""
+    return os.path.join(course_dir, ".accelab", "outcomes", assignment, f"{student}.json")
+
+
+def cached_key(spec, student):
+    """The key of ``student``, computed once per grading process."""
+    token = (json.dumps(spec, sort_keys=True), student)
+    with _LOCK:
+        if token in _KEYS:
+            return _KEYS[token]
+    key = key_for(spec, student)
+    with _LOCK:
+        _KEYS[token] = key
+    return key
+
+
+def other_keys(spec, course_dir, me):
+    """Keys of the other students of the course (roster and submitters) and of
+    the self-study variant, to tell whose values a wrong answer holds."""
+    ids = {"self-study"}
+    for folder in ("submitted",):
+        root = os.path.join(course_dir, folder)
+        if os.path.isdir(root):
+            ids.update(os.listdir(root))
+    roster = os.path.join(course_dir, ".accelab", "roster.json")
+    if os.path.exists(roster):
+        with open(roster) as fh:
+            ids.update(str(s) for s in json.load(fh))
+    ids.discard(me)
+    return {s: cached_key(spec, s) for s in sorted(ids)}
+
+
+def limits_of(step):
+    return Limits(cell_seconds=step.cell_timeout, total_seconds=step.time_limit,
+                  cpu_seconds=int(step.time_limit) + 5, memory_bytes=step.memory_mb << 20,
+                  processes=step.processes)
+
+
+def submitted_notebook(course_dir, assignment, student, notebook):
+    path = os.path.join(course_dir, "submitted", student, assignment, f"{notebook}.ipynb")
+    try:
+        return nbformat.read(path, as_version=4)
+    except Exception:
+        return None
+
+
+class JudgeSubmission(NbGraderPreprocessor):
+    """Run in the sandbox, judge outside it (in place of nbgrader's Execute)."""
+
+    cell_timeout = Float(10.0, help="Seconds one cell may run [s]").tag(config=True)
+    time_limit = Float(60.0, help="Seconds the whole submission may run, restarts included "
+                                  "[s]").tag(config=True)
+    memory_mb = Integer(1536, help="Address space of each process [MiB]").tag(config=True)
+    processes = Integer(64, help="Processes the submission may have").tag(config=True)
+    unsafe_no_sandbox = Bool(False, help="Run submissions without a sandbox: a submission can "
+                             "then read the course (keys, hidden tests, gradebook) and change "
+                             "other students' grades").tag(config=True)
+
+    def preprocess(self, nb, resources):
+        info = resources["nbgrader"]
+        student, assignment = info["student"], info["assignment"]
+        course_dir = os.path.abspath(self.config.CourseDirectory.root or ".")
+        spec = read_spec(course_dir, assignment)
+        steps = plan_of(nb)
+        token = (course_dir, assignment, student, fingerprint(steps))
+        with _LOCK:
+            run = PREPARED.pop(token, None)
+        key = cached_key(spec, student)
+        if run is None:
+            run = run_plan(steps, key.variant.statement(), command_for(self.unsafe_no_sandbox),
+                           limits_of(self))
+        submitted = submitted_notebook(course_dir, assignment, student, info.get("notebook",
+                                                                               assignment))
+        shown = shown_ids(submitted) if submitted is not None else []
+        outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
+        write_notebook(nb, steps, run, outcome)
+        save_outcome(course_dir, assignment, outcome)
+        return nb, resources
+
+
+def command_for(unsafe):
+    """The sandbox command builder, or the explicitly unsafe one."""
+    from .sandbox import sandbox
+    if unsafe:
+        from .unsandboxed import UnsandboxedCommand
+        return UnsandboxedCommand()
+    return sandbox()
+
+
+def save_outcome(course_dir, assignment, outcome):
+    path = outcome_path(course_dir, assignment, outcome.student)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as fh:
+        json.dump(outcome.to_dict(), fh, indent=1)
+
+
+class DropDuplicateIds(NbGraderPreprocessor):
+    """nbgrader's DeduplicateIds, mended: of cells that share a grade id the last
+    one keeps it, and the others lose their nbgrader metadata entirely (nbgrader
+    0.9 leaves an empty dict, on which its OverwriteCells fails with a
+    KeyError and the whole submission is lost)."""
+
+    def preprocess(self, nb, resources):
+        seen = set()
+        for cell in reversed(nb.cells):
+            meta = cell.get("metadata", {})
+            gid = meta.get("nbgrader", {}).get("grade_id") if "nbgrader" in meta else None
+            if "nbgrader" in meta and not gid:
+                del meta["nbgrader"]
+            elif gid in seen:
+                del meta["nbgrader"]
+                meta.pop("deletable", None)
+                meta.pop("editable", None)
+            elif gid:
+                seen.add(gid)
+        return nb, resources
+
+
+class CleanFeedback(NbGraderPreprocessor):
+    """Feedback only: every error shown as its message, without a traceback."""
+
+    def preprocess_cell(self, cell, resources, index):
+        if cell.cell_type == "code":
+            for out in cell.get("outputs", []):
+                if out.get("output_type") == "error":
+                    out["traceback"] = [f"{out.get('ename')}: {out.get('evalue')}"]
+        return cell, resources

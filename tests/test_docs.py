@@ -1,0 +1,413 @@
+"""The documentation site, built and read in a real browser.
+
+Builds the site as ``make docs`` does (Sphinx, warnings are errors; the course
+notebooks come from the execution cache that ``tests/test_course.py`` fills
+earlier in the session, or are executed here), serves it on 127.0.0.1, and
+opens every page in headless Chromium (Debian's ``chromium`` driven by
+``chromium-driver`` through Selenium) at 1366 px and at a 390 px phone
+viewport. On every page:
+
+* no console error, and nothing requested from anywhere but the local server;
+* every equation typeset by the bundled MathJax, with no TeX error, laid out
+  with a non-zero size (folded answers opened first);
+* every image loaded, and every figure a link to its image (a tap opens it at
+  full size), with alt text and a caption saying what it shows;
+* at 390 px nothing is wider than the screen: the page does not scroll
+  sideways, and an equation wider than the page scrolls inside its own box,
+  marked with the "swipe" cue.
+
+Across the site: search finds "Coriolis"; every internal link (and anchor)
+resolves; each course page links its notebook, and clicking the link
+downloads a valid ``.ipynb``.
+
+If Chromium is missing the set-up installs it with apt-get; the tests skip
+(saying why) only when that fails.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from urllib.parse import unquote, urldefrag, urlparse
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+SITE = ROOT / "build" / "docs"
+DOCTREES = ROOT / "build" / "docs-doctrees"
+sys.path.insert(0, str(DOCS))
+import shoot  # noqa: E402  (docs/shoot.py: the local server and the browser set-up)
+
+pytestmark = pytest.mark.slow
+
+CHROMIUM = "/usr/bin/chromium"
+DRIVER = "/usr/bin/chromedriver"
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--no-first-run"]
+WIDTHS = (1366, 390)
+#: pages every build has (more are found by walking the output)
+REQUIRED = ["index.html", "conventions.html", "benchmark.html", "guide/index.html",
+            "api/index.html", "course/05_coriolis.html", "search.html"]
+
+
+def _ensure_chromium():
+    """Paths of chromium and chromedriver, installing them if needed; or a reason to skip."""
+    found = [shutil.which("chromium") or (CHROMIUM if os.path.exists(CHROMIUM) else None),
+             shutil.which("chromedriver") or (DRIVER if os.path.exists(DRIVER) else None)]
+    if all(found):
+        return found, None
+    if not shutil.which("apt-get"):
+        return None, "chromium is not installed and there is no apt-get to install it"
+    cmd = ["apt-get", "install", "-y", "-q", "chromium", "chromium-driver"]
+    env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+    done = None
+    for attempt in (cmd, ["apt-get", "update", "-q"], cmd):
+        try:
+            done = subprocess.run(attempt, capture_output=True, text=True, timeout=900, env=env)
+        except (OSError, subprocess.TimeoutExpired) as exc:
+            return None, f"could not install chromium with apt-get: {exc}"
+        if attempt is cmd and done.returncode == 0:
+            break
+    found = [shutil.which("chromium"), shutil.which("chromedriver")]
+    if not all(found):
+        return None, ("chromium / chromium-driver are missing and apt-get could not install "
+                      f"them: {done.stderr.strip()[-300:]}")
+    return found, None
+
+
+# ---------------------------------------------------------------- the build
+@pytest.fixture(scope="session")
+def site():
+    """Build the site (warnings are errors); returns the output folder."""
+    pytest.importorskip("sphinx", reason="the docs extra is not installed "
+                                         "(pip install -e '.[docs]')")
+    t0 = time.perf_counter()
+    cmd = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b", "html",
+           "-d", str(DOCTREES), str(DOCS), str(SITE)]
+    env = dict(os.environ, MPLBACKEND="Agg")
+    done = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, env=env, timeout=1500)
+    sys.stderr.write(f"\ndocs built in {time.perf_counter() - t0:.1f} s\n")
+    if done.returncode != 0:
+        pytest.fail("make docs failed:\n" + (done.stderr + done.stdout)[-6000:])
+    return SITE
+
+
+def _pages(site):
+    """The pages of this build (from its search index: the output folder may
+    also hold pages of earlier builds), plus the search page and module index."""
+    text = (site / "searchindex.js").read_text()
+    index = json.loads(text[text.index("(") + 1:text.rindex(")")])
+    pages = [f"{doc}.html" for doc in index["docnames"]]
+    pages += [p for p in ("search.html", "py-modindex.html") if (site / p).exists()]
+    return sorted(pages)
+
+
+def test_build_has_every_section(site):
+    pages = _pages(site)
+    for page in REQUIRED:
+        assert page in pages, f"{page} was not built"
+    assert len([p for p in pages if p.startswith("course/")]) >= 11
+    assert len([p for p in pages if p.startswith("api/")]) >= 3
+    mathjax = site / "_static" / "mathjax" / "tex-chtml.js"
+    assert mathjax.is_file(), "MathJax is not served with the site"
+    assert list((site / "_static" / "mathjax" / "output" / "chtml" / "fonts").rglob("*.woff"))
+
+
+# ---------------------------------------------------------------- the browser
+@pytest.fixture(scope="session")
+def server(site):
+    httpd, base = shoot.serve(site)
+    yield base
+    httpd.shutdown()
+
+
+def _driver(paths, width, downloads):
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    options.binary_location = paths[0]
+    profile = tempfile.mkdtemp(prefix="accelab-docs-chromium-")
+    for flag in FLAGS + [f"--window-size={max(width, 500)},900", f"--user-data-dir={profile}"]:
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
+    options.add_experimental_option("prefs", {"download.default_directory": str(downloads),
+                                              "download.prompt_for_download": False})
+    driver = webdriver.Chrome(options=options, service=Service(paths[1]))
+    driver.set_page_load_timeout(60)
+    driver.set_script_timeout(60)
+    if width < 500:   # narrower than Chromium's smallest window: a phone's viewport
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+            "width": width, "height": 844, "deviceScaleFactor": 3, "mobile": True})
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Browser.setDownloadBehavior",
+                           {"behavior": "allow", "downloadPath": str(downloads)})
+    return driver, profile
+
+
+@pytest.fixture(scope="session")
+def chromium_paths():
+    paths, reason = _ensure_chromium()
+    if reason:
+        pytest.skip(reason)
+    pytest.importorskip("selenium.webdriver", reason="selenium is not installed")
+    return paths
+
+
+READY = """
+const done = arguments[arguments.length - 1];
+const t0 = Date.now();
+document.querySelectorAll('details').forEach(d => d.open = true);   // unfold the answers
+const hasMath = document.querySelector('div.math, span.math') !== null;
+function wait() {
+  if (hasMath && !(window.MathJax && MathJax.startup && MathJax.startup.promise)) {
+    if (Date.now() - t0 > 30000) { done('MathJax never started'); return; }
+    setTimeout(wait, 50); return;
+  }
+  const typeset = hasMath ? MathJax.startup.promise : Promise.resolve();
+  Promise.all([typeset, ...[...document.images].map(i => i.decode().catch(() => null))])
+    .then(() => requestAnimationFrame(() => setTimeout(() => done('ok'), 50)),
+          e => done('MathJax failed: ' + e));
+}
+wait();
+"""
+
+STATE = """
+const W = document.documentElement.clientWidth;   // the screen (innerWidth grows when a phone zooms out)
+const box = e => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; };
+const main = document.querySelector('main') || document.body;
+const maths = [...document.querySelectorAll('div.math, span.math')]
+    .filter(m => m.checkVisibility());        // not the print-only table of contents
+// an element may pass the screen's edge only inside a box of its own that scrolls
+// sideways and itself fits on the screen (a table, a code block, an equation)
+const scrollsInBox = el => { for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
+    if (a.matches('.bd-main, .bd-content, .bd-article-container, .bd-article, article')) break;
+    const o = getComputedStyle(a).overflowX;
+    if ((o === 'auto' || o === 'scroll') && a.getBoundingClientRect().right <= W + 1) return true; }
+  return false; };
+const sticking = [...main.querySelectorAll('*')].filter(e => {
+    const r = e.getBoundingClientRect();
+    return r.width > 0 && r.right > W + 1 && r.left < W && !scrollsInBox(e); })
+  .slice(0, 5).map(e => e.tagName.toLowerCase() + '.' + [...e.classList].join('.') + ' right='
+                  + Math.round(e.getBoundingClientRect().right));
+const article = document.querySelector('article') || main;
+return {
+  title: document.title,
+  width: W,
+  innerWidth: window.innerWidth,
+  scrollWidth: document.documentElement.scrollWidth,
+  bodyScrollWidth: document.body.scrollWidth,
+  sticking: sticking,
+  math: maths.map(m => { const c = m.querySelector('mjx-container');
+      return {tex: m.textContent.slice(0, 60), typeset: !!c, box: c ? box(c) : null,
+              error: !!m.querySelector('mjx-merror'),
+              display: m.tagName === 'DIV',
+              overflows: c ? c.scrollWidth > c.clientWidth + 1 : false,
+              overflowX: c ? getComputedStyle(c).overflowX : null,
+              cue: m.classList.contains('scrolls')}; }),
+  rawTex: /\\\\\\(|\\\\\\[/.test(article.innerText),
+  images: [...document.images].map(i => ({src: i.src, complete: i.complete, width: i.naturalWidth,
+      alt: i.getAttribute('alt') || '', inArticle: article.contains(i) && i.naturalWidth > 48,
+      link: i.closest('a') ? i.closest('a').href : null,
+      caption: (i.closest('figure') && i.closest('figure').querySelector('figcaption'))
+               ? i.closest('figure').querySelector('figcaption').innerText.trim() : ''})),
+  links: [...document.querySelectorAll('a[href]')].map(a => a.href),
+  ids: [...document.querySelectorAll('[id]')].map(e => e.id),
+  download: [...document.querySelectorAll('a.nb-download-link')].map(a =>
+      ({href: a.href, download: a.getAttribute('download')})),
+};
+"""
+
+
+def _requests(driver):
+    """URLs the page requested (from the DevTools network events)."""
+    urls = []
+    for entry in driver.get_log("performance"):
+        msg = json.loads(entry["message"])["message"]
+        if msg.get("method") == "Network.requestWillBeSent":
+            urls.append(msg["params"]["request"]["url"])
+    return urls
+
+
+def _visit(driver, base, page):
+    driver.get_log("performance")
+    driver.get_log("browser")
+    driver.get(base + page)
+    ready = driver.execute_async_script(READY)
+    state = driver.execute_script(STATE)
+    state["ready"] = ready
+    state["requests"] = _requests(driver)
+    state["console"] = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+    return state
+
+
+def _problems(page, st, base, width):
+    """Everything wrong with one page at one width, as lines of text."""
+    out = []
+    say = out.append
+    if st["ready"] != "ok":
+        say(st["ready"])
+    for entry in st["console"]:
+        say(f"console error: {entry.get('message', '')[:300]}")
+    for url in st["requests"]:
+        if not (url.startswith(base) or url.startswith(("data:", "blob:", "about:", "chrome:",
+                                                         "chrome-extension:", "devtools:"))):
+            say(f"fetched from the network: {url}")
+    for m in st["math"]:
+        if not m["typeset"]:
+            say(f"equation not typeset: {m['tex']!r}")
+        elif m["error"]:
+            say(f"TeX error in {m['tex']!r}")
+        elif not (m["box"][2] > 0 and m["box"][3] > 0):
+            say(f"equation laid out with no size: {m['tex']!r} {m['box']}")
+        if m["display"] and m["overflows"]:
+            if m["overflowX"] not in ("auto", "scroll"):
+                say(f"wide equation that does not scroll: {m['tex']!r}")
+            if not m["cue"]:
+                say(f"wide equation without its scroll cue: {m['tex']!r}")
+    if st["rawTex"]:
+        say("untypeset TeX delimiters in the text")
+    for img in st["images"]:
+        if not (img["complete"] and img["width"] > 0):
+            say(f"image not loaded: {img['src']}")
+        if img["inArticle"]:
+            if not img["link"]:
+                say(f"figure is not a link to its full-size image: {img['src']}")
+            alt = img["alt"].strip()
+            if len(alt) < 12 or alt.lower().endswith((".png", ".svg", ".jpg")):
+                say(f"figure without alt text that says what it shows: {img['src']} "
+                    f"(alt {alt!r})")
+            if len(img["caption"]) < 12:
+                say(f"figure without a caption: {img['src']} (alt {alt[:60]!r})")
+    if width < 500:
+        if max(st["scrollWidth"], st["bodyScrollWidth"], st["innerWidth"]) > width + 1:
+            say(f"page scrolls sideways at {width} px: {st['scrollWidth']} px wide")
+        for what in st["sticking"]:
+            say(f"wider than the screen at {width} px: {what}")
+    return [f"{page} @ {width}px: {p}" for p in out]
+
+
+@pytest.fixture(scope="session")
+def crawl(site, server, chromium_paths):
+    """Every page at both widths: ``{width: {page: state}}``, and the problems."""
+    pages = _pages(site)
+    states, problems = {}, []
+    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
+    t0 = time.perf_counter()
+    for width in WIDTHS:
+        driver, profile = _driver(chromium_paths, width, downloads)
+        try:
+            states[width] = {}
+            for page in pages:
+                st = _visit(driver, server, page)
+                states[width][page] = st
+                problems += _problems(page, st, server, width)
+        finally:
+            driver.quit()
+            shutil.rmtree(profile, ignore_errors=True)
+    sys.stderr.write(f"\n{len(pages)} pages at {len(WIDTHS)} widths in "
+                     f"{time.perf_counter() - t0:.1f} s\n")
+    return states, problems
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+def test_every_page_reads_well(crawl, width):
+    """No console error, nothing from the network, every equation typeset with
+    a size, every image loaded and linked with alt text and caption, and at
+    390 px nothing wider than the screen."""
+    states, problems = crawl
+    mine = [p for p in problems if f"@ {width}px" in p]
+    assert not mine, f"{len(mine)} problems:\n" + "\n".join(mine[:60])
+    course = [st for page, st in states[width].items() if page.startswith("course/")]
+    assert sum(len(st["math"]) for st in course) > 100, "the course shows its equations"
+    assert sum(len(st["images"]) for st in course) > 20, "the course shows its figures"
+
+
+def test_wide_equations_scroll_on_a_phone(crawl):
+    """At 390 px some display equations are wider than the page: they scroll in
+    their own box (with the cue), and the page itself does not."""
+    states, _ = crawl
+    wide = [m for st in states[390].values() for m in st["math"]
+            if m["display"] and m["overflows"]]
+    assert wide, "no equation wider than a phone: the scroll box is untested"
+    assert all(m["cue"] and m["overflowX"] in ("auto", "scroll") for m in wide)
+
+
+def test_internal_links_resolve(crawl, server, site):
+    states, _ = crawl
+    ids = {page: set(st["ids"]) for page, st in states[1366].items()}
+    bad = []
+    for page, st in states[1366].items():
+        for href in st["links"]:
+            if not href.startswith(server):
+                continue
+            url, fragment = urldefrag(href)
+            path = unquote(urlparse(url).path).lstrip("/") or "index.html"
+            if path.endswith("/"):
+                path += "index.html"
+            if not (site / path).is_file():
+                bad.append(f"{page}: {href} (no such file)")
+            elif fragment and path.endswith(".html") and path in ids and \
+                    fragment not in ids[path]:
+                bad.append(f"{page}: {href} (no anchor #{fragment})")
+    assert not bad, "broken links:\n" + "\n".join(sorted(set(bad))[:40])
+
+
+def test_search_finds_coriolis(site, server, chromium_paths):
+    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
+    driver, profile = _driver(chromium_paths, 1366, downloads)
+    try:
+        driver.get(server + "search.html?q=Coriolis")
+        hits = []
+        for _ in range(200):
+            hits = driver.execute_script(
+                "return [...document.querySelectorAll('#search-results ul.search li a')]"
+                ".map(a => a.getAttribute('href'))")
+            done = driver.execute_script(
+                "const s = document.querySelector('#search-results .search-summary');"
+                "return s ? s.innerText : ''")
+            if hits and done:
+                break
+            time.sleep(0.1)
+        assert any("05_coriolis" in h for h in hits), f"search results for Coriolis: {hits}"
+        severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+        assert not severe, severe
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def test_course_pages_download_their_notebooks(crawl, site, server, chromium_paths):
+    """Each course page links its notebook; clicking the link downloads it."""
+    import nbformat
+    states, _ = crawl
+    course = sorted(p for p in states[1366] if p.startswith("course/") and p[7:9].isdigit())
+    assert len(course) >= 11
+    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
+    driver, profile = _driver(chromium_paths, 1366, downloads)
+    try:
+        for page in course:
+            links = states[1366][page]["download"]
+            stem = Path(page).stem
+            assert links, f"{page} has no notebook download link"
+            assert links[0]["href"] == server + f"course/{stem}.ipynb"
+            assert links[0]["download"] == f"{stem}.ipynb"
+            driver.get(server + page)
+            driver.find_element("css selector", "a.nb-download-link").click()
+            target = downloads / f"{stem}.ipynb"
+            for _ in range(100):
+                if target.exists() and not list(downloads.glob("*.crdownload")):
+                    break
+                time.sleep(0.1)
+            assert target.exists(), f"clicking {page}'s link downloaded nothing"
+            nb = nbformat.read(target, as_version=4)
+            nbformat.validate(nb)
+            assert nb.cells and nb.cells[0].cell_type == "markdown"
+            assert nb.metadata["kernelspec"]["name"] == "python3"
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)

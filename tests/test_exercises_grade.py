@@ -1,0 +1,546 @@
+"""Real grading, attacked as adversarial students would: `accelab assign`, then
+`accelab grade` with nbgrader and the bubblewrap sandbox, on a course where each
+submission is one attack (or an honest answer).
+
+Rule checked everywhere: an attack earns no point it did not earn, changes
+nothing outside its own submission, and the honest submissions graded beside it
+keep their full marks. The answers of honest students come from an outside
+check (its own solver, from `accelab variant --json`), never from the package.
+"""
+
+import csv
+import glob
+import hashlib
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+import nbformat
+import pytest
+from nbformat.v4 import new_code_cell
+
+from exercises.grader.gradetable import question_names
+from exercises.grader.sandbox import check_sandbox
+from exercises.simulate import key_code, submit
+from exercises.notebook import read_spec
+
+from _exercises_helpers import answers_code
+
+pytestmark = pytest.mark.slow
+
+SECRET = "s3cr3t-instructor-token-4711"
+ACCELAB = [sys.executable, "-m", "solver"]
+CELL_SECONDS, TOTAL_SECONDS = 3, 20
+HONEST = ["ann", "bob"]
+
+
+def accelab(*args, env=None, check=True):
+    proc = subprocess.run([*ACCELAB, *args], capture_output=True, text=True, env=env)
+    if check:
+        assert proc.returncode == 0, proc.stderr
+    return proc
+
+
+def outside(course, student):
+    """Answer code for ``student`` from the published variant (what `accelab variant
+    --json` prints; the command itself is run once in the fixture) and the
+    independent solver."""
+    from exercises.variant import variant_json
+    return answers_code(json.loads(json.dumps(variant_json(course, "A", student))))
+
+
+def _cell(nb, gid):
+    return next(c for c in nb.cells if c.metadata.get("nbgrader", {}).get("grade_id") == gid)
+
+
+def prepend(code, name, text):
+    out = dict(code)
+    out[name] = text + "\n" + out[name]
+    return out
+
+
+def all_wrong(code, units):
+    return {n: (f"{n} = Q_(1.0, {units[n]!r})" if units[n] else f"{n} = 'gentle'")
+            for n in code}
+
+
+def course_snapshot(course):
+    """Digest of every file a submission must not change (all but the grader's output)."""
+    skip = ("autograded", "feedback", ".accelab", "gradebook.db", "grades_A.csv")
+    digest = {}
+    for root, dirs, files in os.walk(course):
+        rel = os.path.relpath(root, course)
+        if rel.split(os.sep)[0] in skip:
+            continue
+        for f in files:
+            if f in skip:
+                continue
+            path = os.path.join(root, f)
+            with open(path, "rb") as fh:
+                digest[os.path.relpath(path, course)] = hashlib.sha256(fh.read()).hexdigest()
+    return digest
+
+
+def sandbox_processes():
+    """Processes of the sandbox users (uids 61000 and up) still alive."""
+    out = subprocess.run(["ps", "-eo", "uid=,pid=,args="], capture_output=True, text=True).stdout
+    return [line for line in out.splitlines() if line.split() and int(line.split()[0]) >= 61000]
+
+
+ATTACKS = {}
+
+
+def attack(fn):
+    ATTACKS[fn.__name__] = fn
+    return fn
+
+
+@attack
+def solution(course, units, name_of):
+    """`name = v.solution('name')` in every answer cell."""
+    return {n: f"{n} = v.solution({n!r})" for n in units}, None
+
+
+@attack
+def patch_checks(course, units, name_of):
+    """Replace the notebook's checks, then give wrong answers."""
+    code = all_wrong(units, units)
+    first = next(iter(code))
+    code[first] = ("import exercises.runtime as r\n"
+                   "r.check_format = lambda *a, **k: print('right')\n"
+                   "import builtins; builtins.AssertionError = type('X', (Exception,), {})\n"
+                   + code[first])
+    return code, None
+
+
+@attack
+def load_alice(course, units, name_of):
+    """Load another student's values in the notebook, then give her right answers."""
+    def edit(nb):
+        nb.cells.insert(2, new_code_cell("v = load_variant(SPEC, 'ann')\nv.show(1)"))
+    return outside(course, "ann"), edit
+
+
+@attack
+def id_alice(course, units, name_of):
+    """Change the notebook's own student id to another student's, then her answers."""
+    def edit(nb):
+        nb.cells.insert(2, new_code_cell(
+            "import os\nos.environ['ACCELAB_STUDENT_ID'] = 'ann'\n"
+            "v = load_variant(SPEC, student_id())"))
+    return outside(course, "ann"), edit
+
+
+@attack
+def copy_alice(course, units, name_of):
+    """Another student's answers, the notebook left alone."""
+    return outside(course, "ann"), None
+
+
+@attack
+def self_study(course, units, name_of):
+    """The self-study variant's answers."""
+    return outside(course, "self-study"), None
+
+
+@attack
+def key_from_imports(course, units, name_of):
+    """Look for the key in anything importable or readable in the kernel."""
+    probe = '''
+import importlib, os, sys, glob
+found = []
+for mod in ("exercises.grader", "exercises.grader.key", "exercises.assignment",
+            "exercises.problem", "exercises.families", "exercises.practice",
+            "exercises.simulate", "exercises.variant", "exercises.expr"):
+    try:
+        importlib.import_module(mod); found.append(mod)
+    except Exception as exc:
+        print("no", mod, type(exc).__name__)
+import exercises
+print("exercises files:", sorted(os.listdir(os.path.dirname(exercises.__file__))))
+print("readable json:", [p for d in ("/tmp", "/work", "/root", "/home", os.path.dirname(
+    exercises.__file__)) for p in glob.glob(d + "/**/*.json", recursive=True)][:5])
+print("FOUND", found)
+'''
+    code = all_wrong(units, units)
+    first = next(iter(code))
+    code[first] = probe + code[first]
+    return code, None
+
+
+@attack
+def read_course(course, units, name_of):
+    """Read the course folder, the gradebook, other submissions and /proc; write into the course."""
+    probe = f'''
+import os, glob
+for path in [{course!r}, {course + "/gradebook.db"!r}, {course + "/source/A/A.ipynb"!r},
+             {course + "/submitted"!r}, "/root", "/home", "/work"]:
+    try:
+        print(path, "->", os.listdir(path) if os.path.isdir(path) else open(path, "rb").read(80))
+    except Exception as exc:
+        print(path, "->", type(exc).__name__)
+for pid in os.listdir("/proc"):
+    if pid.isdigit():
+        try:
+            print("environ", pid, open(f"/proc/{{pid}}/environ", "rb").read()[:4000])
+        except Exception as exc:
+            print("environ", pid, type(exc).__name__)
+try:
+    os.makedirs({course + "/source/A"!r}, exist_ok=True)
+    open({course + "/source/A/owned.txt"!r}, "w").write("owned")
+    print("WROTE INTO THE COURSE")
+except Exception as exc:
+    print("write ->", type(exc).__name__)
+print(sorted(os.environ))
+'''
+    code = outside(course, "read_course")
+    first = next(iter(code))
+    code[first] = probe + code[first]
+    return code, None
+
+
+@attack
+def background_gradebook(course, units, name_of):
+    """A detached process that outlives the notebook and edits the gradebook."""
+    probe = f'''
+import os, time, sqlite3
+if os.fork() == 0:
+    os.setsid()
+    if os.fork() == 0:
+        time.sleep(4)
+        try:
+            db = sqlite3.connect({course + "/gradebook.db"!r})
+            db.execute("update grade set auto_score = 0")
+            db.commit()
+        except Exception:
+            pass
+        open("/tmp/still-alive", "w").write("yes")
+        time.sleep(120)
+    os._exit(0)
+'''
+    code = outside(course, "background_gradebook")
+    first = next(iter(code))
+    code[first] = probe + code[first]
+    return code, None
+
+
+@attack
+def exit_first(course, units, name_of):
+    """`os._exit(1)` in the first answer cell; the rest right."""
+    code = outside(course, "exit_first")
+    first = next(iter(code))
+    code[first] = "import os\nos._exit(1)"
+    return code, None
+
+
+@attack
+def ignore_interrupt(course, units, name_of):
+    """A loop that ignores Ctrl-C and SIGINT in one answer cell; the rest right."""
+    code = outside(course, "ignore_interrupt")
+    name = list(code)[1]
+    code[name] = ("import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n"
+                  "    try:\n        pass\n    except BaseException:\n        pass")
+    return code, None
+
+
+@attack
+def sleepy(course, units, name_of):
+    """Many cells each under the cell limit: the whole submission is limited."""
+    def edit(nb):
+        for _ in range(20):
+            nb.cells.insert(2, new_code_cell(f"import time\ntime.sleep({CELL_SECONDS - 0.5})"))
+    return outside(course, "sleepy"), edit
+
+
+@attack
+def duplicated_pair(course, units, name_of):
+    """A copy-pasted answer + test cell pair; the answers right."""
+    def edit(nb):
+        name = next(iter(units))
+        answer, test = _cell(nb, f"answer_{name}"), _cell(nb, f"test_{name}")
+        at = nb.cells.index(test) + 1
+        nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(test))))
+        nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(answer))))
+    return outside(course, "duplicated_pair"), edit
+
+
+@attack
+def fork_bomb(course, units, name_of):
+    """A fork bomb in one answer cell; the rest right."""
+    code = outside(course, "fork_bomb")
+    name = list(code)[1]
+    code[name] = ("import os\npids = []\nwhile True:\n    try:\n        pids.append(os.fork())\n"
+                  "    except OSError:\n        break\n    if pids[-1] == 0:\n"
+                  "        import time; time.sleep(60); os._exit(0)\n" + code[name])
+    return code, None
+
+
+@attack
+def memory_hog(course, units, name_of):
+    """Ask for 10 GB, then grow a list until the limit; the answers right."""
+    code = outside(course, "memory_hog")
+    first = next(iter(code))
+    code[first] = ("try:\n    big = bytearray(10 ** 10)\nexcept MemoryError:\n"
+                   "    print('no 10 GB')\nhog = []\nwhile True:\n    hog.append(bytearray(10 ** 7))\n")
+    return code, None
+
+
+@attack
+def disk_filler(course, units, name_of):
+    """Fill the disk: one huge file, then many files; the answers right."""
+    code = outside(course, "disk_filler")
+    first = next(iter(code))
+    code[first] = ("import os\nfor i in range(10 ** 6):\n    try:\n"
+                   "        open(f'/tmp/fill{i}', 'wb').write(b'x' * 10 ** 7)\n"
+                   "    except OSError as exc:\n        print('stopped at', i, exc.errno)\n"
+                   "        break\n" + code[first])
+    return code, None
+
+
+@attack
+def print_100mb(course, units, name_of):
+    """Print 100 MB; the answers right."""
+    code = outside(course, "print_100mb")
+    first = next(iter(code))
+    code[first] = "print('x' * 100_000_000)\nimport os\nos.write(1, b'y' * 10 ** 7)\n" + code[first]
+    return code, None
+
+
+ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken"]
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    reason = check_sandbox()
+    assert reason is None, f"the sandbox must work in CI: {reason}"
+    course = str(tmp_path_factory.mktemp("course") / "mech")
+    roster = tmp_path_factory.mktemp("roster") / "roster.csv"
+    roster.write_text("id\n" + "\n".join(ROSTER) + "\n")
+    accelab("assign", "--course", course, "--assignment", "A", "--course-id", "attacks",
+            "--roster", str(roster), "--timeout", str(CELL_SECONDS), "--time-limit",
+            str(TOTAL_SECONDS), "--release", "--due", "2040-01-01 00:00")
+    with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
+        fh.write("c.LateSubmissionPlugin.penalty_method = 'zero'\n")
+    published = json.loads(accelab("variant", "--course", course, "--assignment", "A",
+                                   "--student", "ann", "--json").stdout)
+    assert published == json.loads(json.dumps(
+        __import__("exercises.variant").variant.variant_json(course, "A", "ann")))
+    units = {a["name"]: a["unit"] for a in published["answers"]}
+    for s in HONEST:
+        submit(course, "A", s, outside(course, s))
+    for name, make in ATTACKS.items():
+        code, edit = make(course, units, None)
+        submit(course, "A", name, code, edit=edit)
+    submit(course, "A", "stranger", outside(course, "stranger"))        # not on the roster
+    late = submit(course, "A", "late", outside(course, "late"))
+    with open(os.path.join(os.path.dirname(late), "timestamp.txt"), "w") as fh:
+        fh.write("2040-01-02 10:00:00.000000 UTC")
+    os.makedirs(os.path.join(course, "submitted", "broken", "A"))
+    with open(os.path.join(course, "submitted", "broken", "A", "A.ipynb"), "w") as fh:
+        fh.write('{"cells": [ this is not json')
+    before = course_snapshot(course)
+    env = dict(os.environ, ACCELAB_TEST_SECRET=SECRET)
+    start = time.monotonic()
+    proc = accelab("grade", "--course", course, "--assignment", "A", "--jobs", "2", "--quiet",
+                   env=env, check=False)
+    seconds = time.monotonic() - start
+    print(f"\naccelab grade: {len(os.listdir(os.path.join(course, 'submitted')))} submissions "
+          f"in {seconds:.1f} s\n{proc.stdout[-600:]}")
+    time.sleep(5)     # long enough for a process that outlived its notebook to act
+    with open(os.path.join(course, "grades_A.csv")) as fh:
+        rows = {r["student"]: r for r in csv.DictReader(fh)}
+    return {"course": course, "rows": rows, "proc": proc, "before": before, "units": units,
+            "seconds": seconds, "names": question_names(course, "A")}
+
+
+def score(g, student):
+    return {n: float(g["rows"][student][n]) for n in g["names"]}
+
+
+def total(g, student):
+    return sum(score(g, student).values())
+
+
+def autograded_text(g, student):
+    path = os.path.join(g["course"], "autograded", student, "A", "A.ipynb")
+    return open(path).read() if os.path.exists(path) else ""
+
+
+def feedback_text(g, student):
+    """The feedback page's text, without its style sheets and scripts."""
+    path = os.path.join(g["course"], "feedback", student, "A", "A.html")
+    if not os.path.exists(path):
+        return ""
+    text = open(path).read()
+    return re.sub(r"<(style|script)\b.*?</\1>", "", text, flags=re.S)
+
+
+# ---- the honest and the outside check -------------------------------------------------------
+
+def test_outside_check_gets_full_marks(graded):
+    n = len(graded["names"])
+    for s in HONEST:
+        assert total(graded, s) == n, graded["rows"][s]
+        assert graded["rows"][s]["notes"] == ""
+
+
+def test_another_students_answers_get_zero_and_say_whose(graded):
+    for s in ("copy_alice", "load_alice", "id_alice"):
+        s_score = score(graded, s)
+        numbers = [n for n, u in graded["units"].items() if u]
+        assert all(s_score[n] == 0.0 for n in numbers), (s, graded["rows"][s])
+        assert "student ann" in graded["rows"][s]["notes"], graded["rows"][s]["notes"]
+        assert "student ann" in feedback_text(graded, s)
+    assert "self-study" in graded["rows"]["self_study"]["notes"]
+    assert all(score(graded, "self_study")[n] == 0.0 for n, u in graded["units"].items() if u)
+
+
+# ---- one test per attack ----------------------------------------------------------------------
+
+def test_solution_from_the_notebook_gets_nothing(graded):
+    assert total(graded, "solution") == 0.0
+
+
+def test_patched_checks_get_nothing(graded):
+    assert total(graded, "patch_checks") == 0.0
+
+
+def test_no_key_is_importable_or_readable_in_the_kernel(graded):
+    text = autograded_text(graded, "key_from_imports")
+    assert "FOUND []" in text, text[:3000]
+    assert "families" not in text.split("exercises files:")[1].split("\\n")[0]
+    assert total(graded, "key_from_imports") == 0.0
+
+
+def test_course_files_and_other_processes_are_invisible(graded):
+    text = autograded_text(graded, "read_course")
+    # (a write "into the course" lands in the sandbox's own /tmp when the course is under /tmp)
+    assert SECRET not in text and SECRET not in feedback_text(graded, "read_course")
+    assert "SQLite format" not in text and "BEGIN SOLUTION" not in text
+    assert not os.path.exists(os.path.join(graded["course"], "source", "A", "owned.txt"))
+    assert total(graded, "read_course") == len(graded["names"])   # its own answers still count
+
+
+def test_nothing_outside_a_submission_changed(graded):
+    assert course_snapshot(graded["course"]) == graded["before"]
+
+
+def test_a_process_that_outlives_its_notebook_is_gone_and_did_nothing(graded):
+    assert sandbox_processes() == []
+    assert total(graded, "background_gradebook") == len(graded["names"])
+    # the gradebook still holds the honest students' full marks (read again after the wait)
+    from exercises.grader.gradetable import rows_of
+    _, rows = rows_of(graded["course"], "A")
+    for r in rows:
+        if r["student"] in HONEST:
+            assert r["total"] == len(graded["names"])
+
+
+def test_os_exit_costs_only_its_answer(graded):
+    s = score(graded, "exit_first")
+    first = graded["names"][0]
+    assert s[first] == 0.0 and total(graded, "exit_first") == len(graded["names"]) - 1
+    assert "process ended" in feedback_text(graded, "exit_first")
+
+
+def test_a_loop_that_ignores_interrupts_costs_only_its_answer(graded):
+    s = score(graded, "ignore_interrupt")
+    assert s[graded["names"][1]] == 0.0
+    assert total(graded, "ignore_interrupt") == len(graded["names"]) - 1
+    assert "time limit" in feedback_text(graded, "ignore_interrupt")
+
+
+def test_the_whole_submission_is_time_limited(graded):
+    outcome = json.load(open(os.path.join(graded["course"], ".accelab", "outcomes", "A",
+                                          "sleepy.json")))
+    assert outcome["seconds"] <= TOTAL_SECONDS + 5
+    assert "ran out" in feedback_text(graded, "sleepy")
+
+
+def test_a_duplicated_pair_is_graded(graded):
+    assert total(graded, "duplicated_pair") == len(graded["names"])
+    assert "appears 2 times" in graded["rows"]["duplicated_pair"]["notes"]
+
+
+def test_fork_bomb_memory_hog_and_full_disk_cost_only_their_cells(graded):
+    n = len(graded["names"])
+    assert total(graded, "fork_bomb") >= n - 1
+    assert total(graded, "memory_hog") >= n - 1
+    assert total(graded, "disk_filler") >= n - 1
+    assert sandbox_processes() == []
+
+
+def test_printing_100_mb_is_cut(graded):
+    assert total(graded, "print_100mb") >= len(graded["names"]) - 1
+    path = os.path.join(graded["course"], "autograded", "print_100mb", "A", "A.ipynb")
+    assert os.path.getsize(path) < 2_000_000
+    assert os.path.getsize(os.path.join(graded["course"], "feedback", "print_100mb", "A",
+                                        "A.html")) < 3_000_000
+
+
+# ---- the instructor's side -------------------------------------------------------------------
+
+def test_csv_covers_the_roster_and_the_submitters(graded):
+    rows = graded["rows"]
+    assert set(ROSTER) <= set(rows) and "stranger" in rows
+    assert rows["absent"]["total"] == "0.0" and "no submission" in rows["absent"]["notes"]
+    assert "not on the roster" in rows["stranger"]["notes"]
+    assert rows["stranger"]["total"] == str(float(len(graded["names"])))
+
+
+def test_late_penalty_applies_in_the_csv_as_in_the_feedback(graded):
+    row = graded["rows"]["late"]
+    assert float(row["score"]) == len(graded["names"])
+    assert float(row["total"]) == 0.0 and "late" in row["notes"]
+    assert "late" in feedback_text(graded, "late").lower()
+
+
+def test_unreadable_notebook_gets_zero_with_the_reason(graded):
+    row = graded["rows"]["broken"]
+    assert row["total"] == "0.0" and "cannot be read" in row["notes"]
+    assert "manual" not in row["notes"]
+    assert "cannot be read" in feedback_text(graded, "broken")
+    assert graded["proc"].returncode == 1
+
+
+def test_feedback_never_shows_an_expected_value(graded):
+    spec = read_spec(graded["course"], "A")
+    first = graded["names"][0]
+    # the answers each of them did not give (its own right values are in its own cells)
+    for student, names in (("copy_alice", None), ("patch_checks", None), ("solution", None),
+                           ("exit_first", [first]), ("key_from_imports", None)):
+        html = feedback_text(graded, student)
+        assert html
+        code = key_code(spec, student)
+        for name, line in code.items():
+            if "Q_(" in line and (names is None or name in names):
+                value = float(line.split("Q_(")[1].split(",")[0])
+                for text in (repr(value), f"{value:.6g}", f"{value:.5g}", f"{value:.4g}"):
+                    pattern = r"(?<![\d.])" + re.escape(text) + r"(?![\d])"
+                    found = re.search(pattern, html)
+                    assert not found, (student, name, text,
+                                       html[max(0, found.start() - 300):found.end() + 100])
+
+
+def test_grading_again_gives_the_same_grades_and_one_student_can_be_regraded(graded):
+    course = graded["course"]
+    proc = accelab("grade", "--course", course, "--assignment", "A", "--student", "ann",
+                   "--quiet", check=False)
+    assert proc.returncode == 0, proc.stderr
+    with open(os.path.join(course, "grades_A.csv")) as fh:
+        again = {r["student"]: r for r in csv.DictReader(fh)}
+    assert again == graded["rows"]
+    proc = accelab("grade", "--course", course, "--assignment", "A", "--new", "--quiet",
+                   check=False)
+    assert "0 submission(s) graded" in proc.stdout, proc.stdout[-500:]
+
+
+def test_assign_refuses_an_assignment_with_submissions_unless_forced(graded):
+    course = graded["course"]
+    proc = accelab("assign", "--course", course, "--assignment", "A", "--units", "SI",
+                   check=False)
+    assert proc.returncode == 2 and "already has" in proc.stderr and "--force" in proc.stderr
+    assert "Traceback" not in proc.stderr
