@@ -106,8 +106,10 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     RUN.mkdir(parents=True, exist_ok=True)
     outdir.mkdir(parents=True, exist_ok=True)
     target = outdir / Path(notebook).name
+    # no timing metadata on the cells: the docs build's cache must match them by content
     client = NotebookClient(nb, timeout=timeout, kernel_name="python3", startup_timeout=120,
-                            allow_errors=False, resources={"metadata": {"path": str(RUN)}})
+                            allow_errors=False, record_timing=False,
+                            resources={"metadata": {"path": str(RUN)}})
     try:
         client.execute(env=kernel_env())
     except CellExecutionError as exc:

@@ -3,7 +3,7 @@
 * Course pages: the notebooks' own ``[Next: ...](NN_slug.ipynb)`` links point
   at the next page, and each page gets a line under its title that downloads
   the notebook as ``.ipynb`` (written next to the page at the end of the build,
-  converted by jupytext, without outputs) and the ``coursekit.py`` it imports.
+  converted by jupytext, without outputs; it imports the installed package).
 * Every figure is a link to its own image file, so a tap on a phone opens it
   at full size.
 * MathJax is served from the site (the copy the ``sphinx-mathjax-offline``
@@ -29,6 +29,8 @@ logger = logging.getLogger(__name__)
 
 COURSE_DOC = re.compile(r"^course/(\d\d_[A-Za-z0-9_]+)$")
 NOTEBOOK_LINK = re.compile(r"\[([^\]`]+)\]\((\d\d_[A-Za-z0-9_]+)\.ipynb\)")
+#: a link from a notebook to a page beside it (the errata)
+PAGE_LINK = re.compile(r"\[([^\]`]+)\]\((errata)\.md\)")
 
 
 # ---------------------------------------------------------------- course pages
@@ -41,9 +43,9 @@ def _download_line(stem):
     return (f'<p class="nb-download">'
             f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
             f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
-            f'<span class="nb-download-note"> to run it yourself in Jupyter, with '
-            f'<a href="coursekit.py" download="coursekit.py">coursekit.py</a> beside it and '
-            f'accelab installed (<code>pip install -e .</code>).</span></p>')
+            f'<span class="nb-download-note"> to run it yourself in Jupyter with accelab '
+            f'installed (<code>pip install -e .</code>); <code>accelab course --out DIR</code> '
+            f'writes every notebook of the course.</span></p>')
 
 
 def source_read(app, docname, source):
@@ -55,6 +57,7 @@ def source_read(app, docname, source):
     # MyST's path links would resolve outside the source folder
     text = NOTEBOOK_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`",
                              source[0])
+    text = PAGE_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`", text)
     lines = text.split("\n")
     for i, line in enumerate(lines):           # the first '# # Title' of a markdown cell
         if re.match(r"^# # \S", line):
@@ -64,8 +67,8 @@ def source_read(app, docname, source):
 
 
 def write_notebooks(app, exc):
-    """Write each course page's notebook (.ipynb, no outputs) and coursekit.py
-    next to its page."""
+    """Write each course page's notebook (.ipynb, no outputs) next to its page
+    (the notebooks import everything from the installed package)."""
     if exc is not None or app.builder.format != "html":
         return
     import jupytext
@@ -81,9 +84,6 @@ def write_notebooks(app, exc):
         target.parent.mkdir(parents=True, exist_ok=True)
         jupytext.write(nb, target, fmt="ipynb")
         done += 1
-        kit = source.parent / "coursekit.py"
-        if kit.exists():
-            shutil.copyfile(kit, target.parent / "coursekit.py")
     logger.info(f"wrote {done} course notebooks for download")
 
 
