@@ -172,6 +172,8 @@ class LabelLayer(Artist):
         return out
 
     def draw(self, renderer):
+        """Place every label and draw it; matplotlib calls this when it draws the
+        figure, with the axes' final size and the renderer's DPI."""
         if not self.get_visible() or not self.labels:
             return
         ppt = renderer.points_to_pixels(1.0)
