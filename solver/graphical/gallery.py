@@ -30,15 +30,22 @@ SLOTTED = {"theta2": 0.6981317007977318, "omega2": 10.0, "alpha2": -50.0, "p": 0
 GALLERY = {"graphical-fourbar": EXAMPLE_7_1, "graphical-slidercrank": SLIDER_CRANK,
            "graphical-invertedslidercrank": INVERTED_SLIDER_CRANK,
            "graphical-fivebar": GEARED_FIVEBAR, "graphical-slotted": SLOTTED}
+#: the figures' titles: what each shows, and where the book shows its kind
+TITLES = {"graphical-fourbar": "Example 7-1 fourbar (Figure 7-4), open circuit: "
+                               "the course's own numbers",
+          "graphical-slidercrank": "Offset slider-crank, open circuit",
+          "graphical-invertedslidercrank": "Inverted slider-crank (Figure 7-8), open circuit",
+          "graphical-fivebar": "Geared fivebar (section 7.4), open circuit",
+          "graphical-slotted": "Slotted link (Figure 7-7)"}
 
 
 def construction(name):
     """The construction of a gallery entry."""
     from . import construct_case, slotted
     case = GALLERY[name]
-    if name == "graphical-slotted":
-        return slotted.construct(**case)
-    return construct_case(case)
+    con = slotted.construct(**case) if name == "graphical-slotted" else construct_case(case)
+    con.title = TITLES.get(name, con.title)
+    return con
 
 
 def render(outdir, formats=("png", "svg"), names=None):
