@@ -181,8 +181,7 @@ axes[2].set_xlabel("crank angle $\\theta_2$ [deg]")
 axes[2].set_xticks(range(0, 361, 45))
 for ax in axes:
     ax.axvline(30, color="#aaaaaa", lw=0.8)
-axes[0].legend(loc="upper right")
-axes[2].legend(loc="upper right")
+fig.legend(*axes[2].get_legend_handles_labels(), loc="outside lower center", ncol=3)
 fig.suptitle("Example 7-1 linkage over a cycle, $\\omega_2$ = 10 rad/s, $\\alpha_2$ = -5 rad/s$^2$")
 plt.show()
 
