@@ -514,6 +514,8 @@ def test_feedback_never_shows_an_expected_value(graded):
                            ("exit_first", [first]), ("key_from_imports", None)):
         html = feedback_text(graded, student)
         assert html
+        # an embedded image's base64 text is no number shown (its letters may hold any digits)
+        html = re.sub(r"data:image/[a-z+]+;base64,[A-Za-z0-9+/=\s]+", "data:image/...", html)
         code = key_code(spec, student)
         for name, line in code.items():
             if "Q_(" in line and (names is None or name in names):
