@@ -16,13 +16,8 @@ from .errors import AccelabError, InvalidInput, NotAssemblable, NoConvergence, S
 from .units import Q_, ureg
 from .mechanisms import (FourBar, GearedFiveBar, InvertedSliderCrank, MECHANISMS,
                          RotatingPoint, SliderCrank, SlottedLink)
+from .vectorloops import VectorLoopLinkage
 
 __all__ = ["ureg", "Q_", "FourBar", "SliderCrank", "InvertedSliderCrank", "GearedFiveBar",
-           "RotatingPoint", "SlottedLink", "AccelabError", "InvalidInput", "NotAssemblable",
-           "Singular", "NoConvergence", "MECHANISMS"]
-
-try:  # the general vector-loop solver (section 7.8)
-    from .vectorloops import VectorLoopLinkage  # noqa: F401
-    __all__.append("VectorLoopLinkage")
-except ImportError:  # pragma: no cover - while it is being built
-    pass
+           "RotatingPoint", "SlottedLink", "VectorLoopLinkage", "AccelabError", "InvalidInput",
+           "NotAssemblable", "Singular", "NoConvergence", "MECHANISMS"]

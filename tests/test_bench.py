@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from solver import FourBar, NoConvergence, NotAssemblable, Q_, Singular, VectorLoopLinkage
-from solver.bench import accuracy
-from solver.bench.cases import MOTION, all_cases, description
-from solver.bench.reference import LoopReference, at_points, cached, toggle_angle
-from solver.bench.run import run_benchmark
-from solver.bench.stability import STUDY_CASE, near_toggle, newton_guesses
+from benchmarks import accuracy
+from benchmarks.cases import MOTION, all_cases, description
+from benchmarks.reference import LoopReference, at_points, cached, toggle_angle
+from benchmarks.run import run_benchmark
+from benchmarks.stability import STUDY_CASE, near_toggle, newton_guesses
 
 #: an answer near a toggle must be this close to the reference, or refused
 NEAR_TOGGLE_TOLERANCE = 1e-6
@@ -83,7 +83,7 @@ def test_goals_listed_with_measurements(tiny):
 
 
 def test_cli_registered():
-    from solver.cli import build_parser
+    from accelab.cli import build_parser
     args = build_parser().parse_args(["bench", "--quick", "--out", "x"])
     assert args.quick and args.out == "x" and callable(args.func)
 

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 from solver.batch import solve_case
-from solver.cli import main
+from accelab.cli import main
 from solver.graphical.gallery import EXAMPLE_7_1, GALLERY
 
 CASES = [

@@ -11,7 +11,7 @@ import pytest
 from solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
 from solver.batch import solve_case as batch_solve
 from solver.errors import InvalidInput, NoConvergence, NotAssemblable
-from solver.vectorloops import VectorLoopLinkage, solve_case
+from solver.vectorloops import VectorLoopLinkage, solve_loops_case as solve_case
 from solver.vectorloops.description import read_description
 from solver.vectorloops.examples import EXAMPLES
 

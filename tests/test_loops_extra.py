@@ -13,9 +13,9 @@ import pytest
 from solver import Q_
 from solver.batch import solve_cases
 from solver.errors import InvalidInput, NoConvergence, Singular
-from solver.kernels import SINGULAR_CONDITION
+from solver.vectorloops import SINGULAR_CONDITION
 from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import VectorLoopLinkage, solve_case
+from solver.vectorloops import VectorLoopLinkage, solve_loops_case as solve_case
 from solver.vectorloops import sweep as sweep_module
 from solver.vectorloops.description import read_description
 from solver.vectorloops.examples import EXAMPLES, fivebar, fourbar
@@ -707,7 +707,7 @@ def test_unthreaded_products_equal_matmul(shape, kind):
 def test_straight_line_kernel_matches_the_batched_evaluation(name):
     """The generated one-position kernel against numpy's evaluation: residual, Newton
     step, dq/dtheta2 and orientation at random configurations."""
-    from solver.bench.cases import eightbar
+    from benchmarks.cases import eightbar
     from solver.vectorloops.newton import orientation
     system = system_of(eightbar() if name == "eightbar" else EXAMPLES[name]())
     rng = np.random.default_rng(5)

@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from solver.batch import read_case, solve_case, solve_cases
-from solver.cli import main
+from accelab.cli import main
 
 GOOD = {"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
         "theta2": "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}

@@ -52,17 +52,15 @@ def construct(mechanism, circuit=None, **params):
 
 
 def construct_case(case):
-    """Construction of one batch case (CONVENTIONS format, parsed by
-    :func:`solver.batch.read_case`). Raises the AccelabError family."""
-    from ..batch import read_case
+    """Construction of one batch case (CONVENTIONS format, read by
+    :func:`solver.cases.read_case`). Raises the AccelabError family."""
+    from ..cases import check_mechanism, read_case
     from ..errors import InvalidInput
-    if isinstance(case, dict) and case.get("mechanism") == "loops":
+    if check_mechanism(case) == "loops":
         raise InvalidInput("there is no graphical construction for 'loops'; draw one of "
                            f"{', '.join(DRAWABLE)} (use 'accelab solve' for it)", "mechanism")
-    ci = read_case(case)
-    params = dict(ci.params)
-    if ci.mechanism == "fourbar" and "p" in params:
-        params.setdefault("delta3", 0.0)
-    if ci.mechanism == "rotation":
-        params.pop("theta1", None)
-    return construct(ci.mechanism, ci.circuit, **params)
+    c = read_case(case)
+    params = dict(c.params)
+    if "p" not in params:
+        params.pop("delta3", None)
+    return construct(c.mechanism, c.circuit, **params)

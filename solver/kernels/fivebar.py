@@ -24,12 +24,12 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 import numpy as np
 
 from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, triangle_angles)
+                     piecewise, without_float_warnings, triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Geared fivebar kinematics from position to jerk.
@@ -59,6 +59,7 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
         return in_pieces(lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit,
                                                order), theta2, omega2, alpha2, jerk2)
@@ -83,10 +84,10 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
-    out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
                  status=status, condition=condition, roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
     if order < 1:
         return out
     S = masked(status != OK, S)

@@ -31,12 +31,12 @@ perpendicular from the slide line to O4's circle: a limit position).
 import numpy as np
 
 from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, where)
+                     piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Inverted slider-crank kinematics from position to jerk.
@@ -66,6 +66,7 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
         return in_pieces(lambda *motion: solve(a, c, d, gamma, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
@@ -93,10 +94,10 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
-    out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit, gamma=gamma)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
     den = masked(status != OK, sigma * root)  # = b + c cos gamma

@@ -21,12 +21,12 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 import numpy as np
 
 from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, where)
+                     piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Slider-crank kinematics from position to jerk.
@@ -56,6 +56,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
         return in_pieces(lambda *motion: solve(a, b, c, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
@@ -73,10 +74,10 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
-    out = Motion(theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
                  roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3)}
     if order < 1:
         return out
     bc3 = b * masked(status != OK, c3)

@@ -3,7 +3,7 @@
 import numpy as np
 
 from ..kernels import slidercrank as kernel
-from .base import Mechanism
+from .base import Mechanism, check_order
 
 
 class SliderCrank(Mechanism):
@@ -24,23 +24,21 @@ class SliderCrank(Mechanism):
     >>> sc.solve(theta2="60 deg", omega2="3000 rpm").d_ddot
     """
 
-    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
-                 "c": ("length", False, "0 m"), "theta1": ("angle", False, "0 deg")}
+    name = "slidercrank"
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
     _outputs = ("theta3", "omega3", "alpha3", "jerk3", "d", "d_dot", "d_ddot", "d_dddot",
                 "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
 
-    def __init__(self, **geometry):
-        super().__init__(**geometry)
+    def _init(self, si, given, units):
+        super()._init(si, given, units)
         self._points = {"A": ("O2", self._a, "theta2", 0.0), "B": (None, self._slider, None, 0.0)}
 
     def _slider(self, result, order):
         axis = np.exp(1j * self._theta1)
-        m = result._motion
         if order == 0:
-            return (m.d + 1j * self._c) * axis
-        return (m.d_dot, m.d_ddot, m.d_dddot)[order - 1] * axis
+            return (result.si("d") + 1j * self._c) * axis
+        return result.si(("d_dot", "d_ddot", "d_dddot")[order - 1]) * axis
 
     def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
               order=3):
@@ -53,10 +51,15 @@ class SliderCrank(Mechanism):
         A_A, A_B, A_BA, J_A, J_B ...).
         """
         self._check_circuit(circuit)
-        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        motion = kernel.solve(self._a, self._b, self._c, inputs["theta2"], inputs["omega2"],
-                              inputs["alpha2"], inputs["jerk2"], self._theta1, circuit, order)
-        return self._finish(motion, inputs)
+        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
+
+    def solve_si(self, motion, circuit="open", order=3):
+        """:meth:`solve` from SI floats (theta2, omega2, alpha2, jerk2 in ``motion``)."""
+        self._check_circuit(circuit)
+        order = check_order(order)
+        m = kernel.solve(self._a, self._b, self._c, motion["theta2"], motion["omega2"],
+                         motion["alpha2"], motion["jerk2"], self._theta1, circuit, order)
+        return self._finish(m, motion)
 
     def _not_assemblable_reason(self, motion, inputs):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c

@@ -26,12 +26,19 @@ singular, and its size says how far the position is from a singular one
 """
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import NoConvergence
+from ..errors import InvalidInput, NoConvergence
 from .products import rows_times
 from .straightline import compile_kernel
+
+#: A position whose condition measure (1 best, 0 singular; see :func:`condition`)
+#: falls below this is reported ``singular``: its Jacobian is too close to
+#: singular to vouch for velocity and acceleration. (The closed-form kernels
+#: decide by their round-off estimate instead: solver.kernels.common.MAX_ROUNDOFF.)
+SINGULAR_CONDITION = 1e-4
 
 MAX_ITERATIONS = 50
 MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed assembly
@@ -50,9 +57,20 @@ CONVERGED, NOT_CLOSED, SINGULAR_STEP = 0, 1, 2
 ORIENTATION_FLOOR = 1e-10
 
 
+class NewtonResult(NamedTuple):
+    """What Newton-Raphson returns for one position (lists / floats) or a
+    stack of M positions (arrays with a first axis of M)."""
+
+    q: object          #: the solution (the last iterate where not converged)
+    iterations: object  #: Newton steps taken
+    residual: object   #: loop residual norm at the last evaluation [m]
+    reason: object     #: CONVERGED, NOT_CLOSED or SINGULAR_STEP
+    slope: object      #: dq/dtheta2 at the solution (None / NaN where not converged)
+    orient: object     #: the orientation at the solution (NaN where not converged)
+
+
 def check_tol(tol):
     """The convergence tolerance as a float in (0, 1e-2], or InvalidInput."""
-    from ..errors import InvalidInput
     try:
         tol = float(tol)
     except (TypeError, ValueError):
@@ -183,31 +201,6 @@ class LoopSystem:
         R = rows_times(Y, self.B).reshape(M, nu + 2, 2 * nl)
         return R[:, 0], R[:, 1:nu + 1].transpose(0, 2, 1), R[:, nu + 1]
 
-    def jacobian_stack(self, L, e):
-        """The real Jacobians (M, 2 nl, nu) at given lengths and e^{j theta}."""
-        return self.evaluate_lt(L, e.real, e.imag)[1]
-
-    # --- the older one-position helpers (kept for callers and teaching) --------
-    def lengths_angles(self, q, theta2):
-        """Lengths L_v [m] and angles theta_v [rad] of every vector at one position."""
-        L, theta = self.vectors(np.asarray(q, dtype=float)[None], theta2)
-        return np.array(L[0]), theta[0]
-
-    def residual(self, L, e):
-        f = self.signs @ (L * e)
-        return np.concatenate([f.real, f.imag])
-
-    def jacobian(self, L, e):
-        """Real Jacobian dF/dq at one position, shape (2 n_loops, n_unknowns), rows
-        all real parts then all imaginary parts."""
-        D = 1j * self.Ma * (L * e)[:, None] + self.Ml * e[:, None]
-        Jc = self.signs @ D
-        return np.vstack([Jc.real, Jc.imag])
-
-    def dF_dtheta2(self, L, e):
-        k = self.k_in * L
-        return np.concatenate([self.signs @ (-k * e.imag), self.signs @ (k * e.real)])
-
     # --- Newton-Raphson -----------------------------------------------------
     def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS, slopes=True):
         """Newton-Raphson on a stack of M positions at once.
@@ -230,15 +223,13 @@ class LoopSystem:
 
         Returns
         -------
-        q : (M, nu) solutions (the last iterate where not converged)
-        iterations : (M,) Newton steps taken
-        residual : (M,) loop residual norm at the last evaluation [m] (for a
-            converged position, before its last step)
-        reason : (M,) int8, CONVERGED, NOT_CLOSED or SINGULAR_STEP
-        slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged,
-            and everywhere when ``slopes`` is False)
-        orient : (M,) the orientation at the solution (:func:`orientation`;
-            NaN where not converged)
+        NewtonResult
+            q (M, nu) solutions (the last iterate where not converged);
+            iterations (M,); residual (M,) [m] (for a converged position,
+            before its last step); reason (M,) int8; slope (M, nu)
+            dq/dtheta2 (NaN where not converged, and everywhere when
+            ``slopes`` is False); orient (M,) (:func:`orientation`; NaN
+            where not converged).
         """
         q = np.array(q0, dtype=float, copy=True)
         theta2 = np.asarray(theta2, dtype=float)
@@ -284,7 +275,7 @@ class LoopSystem:
                 dq[damped] /= ratio[damped, None]
             qa = qa + dq
             iterations[active] += 1
-        return q, iterations, residual, reason, slope, orient
+        return NewtonResult(q, iterations, residual, reason, slope, orient)
 
     def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS,
                 least_squares=False):
@@ -299,15 +290,14 @@ class LoopSystem:
         the least-squares step of least norm (it moves only where the
         Jacobian can), which is how a sweep leaves a singular position.
 
-        Returns ``(q, iterations, residual, reason, slope, orient)`` with q
-        and slope as lists (slope None where not converged, or where the
-        Jacobian is exactly singular) and orient the orientation at the last
-        evaluation (det J over the product of J's column norms; NaN where not
-        converged).
+        Returns a :class:`NewtonResult` with q and slope as lists (slope None
+        where not converged, or where the Jacobian is exactly singular) and
+        orient the orientation at the last evaluation (det J over the product
+        of J's column norms; NaN where not converged).
         """
         q = [float(x) for x in q0]
         if not math.isfinite(theta2):
-            return q, 0, math.nan, NOT_CLOSED, None, math.nan
+            return NewtonResult(q, 0, math.nan, NOT_CLOSED, None, math.nan)
         kernel = self._kernel
         scale, limit = self._py_scale, self._py_limit
         step_tol = step_tolerance(tol)
@@ -316,11 +306,11 @@ class LoopSystem:
         while True:
             res, orient, dq, slope = kernel(q, theta2)
             if res != res:
-                return q, steps, res, SINGULAR_STEP, None, math.nan
+                return NewtonResult(q, steps, res, SINGULAR_STEP, None, math.nan)
             if dq is None and least_squares:
                 dq = self._least_squares_step(q, theta2)
             if dq is None:
-                return q, steps, res, SINGULAR_STEP, None, math.nan
+                return NewtonResult(q, steps, res, SINGULAR_STEP, None, math.nan)
             ratio = size = 0.0
             for a, lim, sc in zip(dq, limit, scale):
                 a = abs(a)
@@ -329,11 +319,12 @@ class LoopSystem:
                 if a > size * sc:
                     size = a / sc
             if size <= step_tol:
-                return [x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED, slope, orient
+                return NewtonResult([x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED,
+                                    slope, orient)
             if res <= floor:        # round-off already: at a singular root the step is noise
-                return q, steps, res, CONVERGED, slope, orient
+                return NewtonResult(q, steps, res, CONVERGED, slope, orient)
             if steps == max_iterations:
-                return q, steps, res, NOT_CLOSED, None, math.nan
+                return NewtonResult(q, steps, res, NOT_CLOSED, None, math.nan)
             if ratio > 1.0:  # never leap to another assembly in one step
                 q = [x + y / ratio for x, y in zip(q, dq)]
             else:
@@ -349,22 +340,6 @@ class LoopSystem:
         if not np.all(np.isfinite(dx)):
             return None
         return [float(v) for v in dx]
-
-    def solve_position(self, q0, theta2, tol=DEFAULT_TOL):
-        """Newton-Raphson at one position from q0 to machine precision.
-
-        Returns ``(q, iterations, residual_norm, J, slope)`` with ``slope`` =
-        dq/dtheta2 there (the continuation predictor); raises NoConvergence
-        (with the residual it reached) when the loops do not close.
-        """
-        theta2 = float(theta2)
-        q, it, res, reason, slope, _ = self.newton1(q0, theta2, tol)
-        if reason != CONVERGED:
-            raise no_convergence(theta2, res, it, reason)
-        q = np.array(q)
-        J = self.evaluate(q[None], np.array([theta2]))[1][0]
-        slope = np.full(len(q), np.nan) if slope is None else np.array(slope)
-        return q, it, res, J, slope
 
 
 def _solve_stack(J, rhs):

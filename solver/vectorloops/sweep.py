@@ -44,9 +44,10 @@ import math
 import numpy as np
 
 from ..errors import Singular
-from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR, SINGULAR_CONDITION
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 from .crossing import ambiguity_message, singular_passage_note, singular_start_note
-from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_STEP, condition,
+from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_CONDITION,
+                     SINGULAR_STEP, condition,
                      no_convergence, step_tolerance)
 from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, Walks, _sign
 
@@ -215,7 +216,7 @@ class _Sweep(Walks):
             return False
         pred, change = self.predict(t)
         leaving = self.singular_last and self.state is not None
-        if result is None or (leaving and result[3] == SINGULAR_STEP):
+        if result is None or (leaving and result.reason == SINGULAR_STEP):
             result = self.system.newton1(pred, t, self.tol, least_squares=leaving)
         q, it, res, reason, slope, orient = result
         if reason == SINGULAR_STEP:
@@ -256,11 +257,11 @@ class _Sweep(Walks):
         then accepted and reported ``singular``); otherwise None: the guesses,
         not the position, are singular, and they choose no assembly."""
         result = self.system.newton1(q0, t, self.tol, least_squares=True)
-        if result[3] != CONVERGED:
+        if result.reason != CONVERGED:
             return None
         if self.state is not None:
             return result
-        J = self.system.evaluate(np.array([result[0]]), np.array([t]))[1]
+        J = self.system.evaluate(np.array([result.q]), np.array([t]))[1]
         if not condition(J, self.system.model)[0] < SINGULAR_CONDITION:
             return None
         return result

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ..errors import NotAssemblable, Singular
-from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 from .crossing import SWITCH_DISTANCE, ambiguity_message, crossing_note, other_branch
 from .newton import CONVERGED, ORIENTATION_FLOOR
 

@@ -36,7 +36,7 @@ class LoopReference:
 
     Parameters
     ----------
-    case : :class:`~solver.bench.cases.Case`
+    case : :class:`~benchmarks.cases.Case`
     """
 
     def __init__(self, case):
