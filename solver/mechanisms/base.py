@@ -475,6 +475,47 @@ class Mechanism:
         return self._outputs
 
     # --- solving ----------------------------------------------------------
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit=None, order=3):
+        """Solve at one or many input angles.
+
+        Parameters
+        ----------
+        theta2 : Quantity or str, scalar or array
+            Input (crank) angle from the global x axis [angle].
+        omega2, alpha2, jerk2 : Quantity or str
+            Its angular velocity [1/time], acceleration [1/time^2] and jerk
+            [1/time^3]; scalars or arrays broadcast with theta2 (alpha2 and
+            jerk2 default to 0).
+        circuit : {'open', 'crossed'}, optional
+            The assembly (see the class); 'open' by default.
+        order : int
+            Highest derivative to compute (0 position .. 3 jerk).
+
+        Returns
+        -------
+        Result
+            Lazy Quantities (see the class for the outputs).
+
+        Raises
+        ------
+        NotAssemblable, Singular
+            For a scalar theta2 that cannot be assembled or is at a limit
+            position. Arrays get a ``valid`` mask instead.
+        """
+        circuit = self._circuit(circuit)
+        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
+
+    def solve_si(self, motion, circuit=None, order=3):
+        """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
+        and jerk2 [rad, rad/s, rad/s^2, rad/s^3] (what the batch format has
+        already read)."""
+        circuit = self._circuit(circuit)
+        return self._finish(self._kernel(motion, circuit, check_order(order)), motion)
+
+    def _kernel(self, motion, circuit, order):
+        """The unit-free kernel's Motion for SI ``motion``."""
+        raise NotImplementedError
+
     def _motion_inputs(self, theta2, omega2, alpha2, jerk2):
         inputs = {p.name: to_si(v, p.name, p.kind)
                   for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))}
@@ -493,11 +534,18 @@ class Mechanism:
             inputs["theta2"] = np.broadcast_to(inputs["theta2"], shape)
         return inputs
 
-    def _check_circuit(self, circuit):
+    def _circuit(self, circuit):
+        """The circuit asked for (None: the first, 'open'), or InvalidInput."""
         circuits = self.declaration().circuits
+        if circuit is None:
+            return circuits[0] if circuits else None
         if not isinstance(circuit, str) or circuit not in circuits:
+            if not circuits:
+                raise InvalidInput(f"a {type(self).__name__} has one assembly: give no circuit "
+                                   f"(got {show(circuit)})", "circuit")
             raise InvalidInput(f"circuit must be one of {', '.join(map(repr, circuits))} "
                                f"(got {show(circuit)})", "circuit")
+        return circuit
 
     def _finish(self, motion, inputs, raise_errors=True, pts=None):
         scalar = np.ndim(motion.status) == 0

@@ -3,7 +3,7 @@
 import numpy as np
 
 from ..kernels import fivebar as kernel
-from .base import Mechanism, check_order
+from .base import Mechanism
 
 
 class GearedFiveBar(Mechanism):
@@ -40,20 +40,10 @@ class GearedFiveBar(Mechanism):
     def _pivot(self, key):
         return self._f * np.exp(1j * self._theta1) if key == "O5" else 0j
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many input angles (see :meth:`FourBar.solve` for the arguments)."""
-        self._check_circuit(circuit)
-        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
-
-    def solve_si(self, motion, circuit="open", order=3):
-        """:meth:`solve` from SI floats (theta2, omega2, alpha2, jerk2 in ``motion``)."""
-        self._check_circuit(circuit)
-        order = check_order(order)
-        m = kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam,
-                         self._phi, motion["theta2"], motion["omega2"], motion["alpha2"],
-                         motion["jerk2"], self._theta1, circuit, order)
-        return self._finish(m, motion)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam, self._phi,
+                            motion["theta2"], motion["omega2"], motion["alpha2"],
+                            motion["jerk2"], self._theta1, circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         return (f"the couplers b = {self._given_text('b')} and c = {self._given_text('c')} "

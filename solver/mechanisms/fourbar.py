@@ -66,7 +66,7 @@ class FourBar(Mechanism):
             For a scalar theta2 that cannot be assembled or is at a toggle
             position. Arrays get a ``valid`` mask instead.
         """
-        self._check_circuit(circuit)
+        circuit = self._circuit(circuit)
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         point = {}
         if p is not None:
@@ -77,7 +77,7 @@ class FourBar(Mechanism):
     def solve_si(self, motion, circuit="open", order=3, p=None, delta3=0.0):
         """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
         and jerk2 [rad, rad/s, ...], ``p`` [m] and ``delta3`` [rad] the coupler point."""
-        self._check_circuit(circuit)
+        circuit = self._circuit(circuit)
         order = check_order(order)
         inputs = dict(motion)
         pts = None

@@ -5,7 +5,7 @@ import numpy as np
 
 from ..errors import InvalidInput
 from ..kernels import invertedslidercrank as kernel
-from .base import Mechanism, check_order
+from .base import Mechanism
 
 
 class InvertedSliderCrank(Mechanism):
@@ -63,20 +63,10 @@ class InvertedSliderCrank(Mechanism):
             return si("A_B") + si("b") * (1j * si("alpha3") - si("omega3") ** 2) * e3
         return None
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many crank angles (see :meth:`FourBar.solve` for the arguments)."""
-        self._check_circuit(circuit)
-        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
-
-    def solve_si(self, motion, circuit="open", order=3):
-        """:meth:`solve` from SI floats (theta2, omega2, alpha2, jerk2 in ``motion``)."""
-        self._check_circuit(circuit)
-        order = check_order(order)
-        m = kernel.solve(self._a, self._c, self._d, self._gamma, motion["theta2"],
-                         motion["omega2"], motion["alpha2"], motion["jerk2"], self._theta1,
-                         circuit, order)
-        return self._finish(m, motion)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._c, self._d, self._gamma, motion["theta2"],
+                            motion["omega2"], motion["alpha2"], motion["jerk2"], self._theta1,
+                            circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1

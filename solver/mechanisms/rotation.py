@@ -20,14 +20,9 @@ class RotatingPoint(Mechanism):
     name = "rotation"
     _outputs = ("R", "V", "A", "A_t", "A_n", "J")
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0):
-        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2))
-
-    def solve_si(self, motion, circuit=None):
-        """:meth:`solve` from SI floats (theta2, omega2, alpha2, jerk2 in ``motion``)."""
-        m = kernel.rotating_point(self._p, motion["theta2"], motion["omega2"],
-                                  motion["alpha2"], motion["jerk2"])
-        return self._finish(m, motion)
+    def _kernel(self, motion, circuit, order):
+        return kernel.rotating_point(self._p, motion["theta2"], motion["omega2"],
+                                     motion["alpha2"], motion["jerk2"])
 
 
 class SlottedLink(Mechanism):

@@ -3,7 +3,7 @@
 import numpy as np
 
 from ..kernels import slidercrank as kernel
-from .base import Mechanism, check_order
+from .base import Mechanism
 
 
 class SliderCrank(Mechanism):
@@ -17,6 +17,11 @@ class SliderCrank(Mechanism):
         Slider offset [length], signed, default 0.
     theta1 : Quantity or str, optional
         Angle of the slide axis [angle], default 0.
+
+    ``circuit='open'`` (of :meth:`solve`) has the slider on the +x side of the
+    crank pin (cos theta3 < 0 in the slide-axis frame). Outputs: theta3,
+    omega3, alpha3, jerk3, d [length] (the slider's position along the axis),
+    d_dot, d_ddot, d_dddot, A_A, A_B, A_BA, J_A, J_B ...
 
     Examples
     --------
@@ -40,26 +45,9 @@ class SliderCrank(Mechanism):
             return (result.si("d") + 1j * self._c) * axis
         return result.si(("d_dot", "d_ddot", "d_dddot")[order - 1]) * axis
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many crank angles.
-
-        ``circuit='open'`` has the slider on the +x side of the crank pin
-        (cos theta3 < 0 in the slide-axis frame). See :meth:`FourBar.solve`
-        for the meaning of the other arguments and of the returned Result
-        (theta3, omega3, alpha3, jerk3, d [length], d_dot, d_ddot, d_dddot,
-        A_A, A_B, A_BA, J_A, J_B ...).
-        """
-        self._check_circuit(circuit)
-        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
-
-    def solve_si(self, motion, circuit="open", order=3):
-        """:meth:`solve` from SI floats (theta2, omega2, alpha2, jerk2 in ``motion``)."""
-        self._check_circuit(circuit)
-        order = check_order(order)
-        m = kernel.solve(self._a, self._b, self._c, motion["theta2"], motion["omega2"],
-                         motion["alpha2"], motion["jerk2"], self._theta1, circuit, order)
-        return self._finish(m, motion)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._b, self._c, motion["theta2"], motion["omega2"],
+                            motion["alpha2"], motion["jerk2"], self._theta1, circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
