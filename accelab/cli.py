@@ -8,7 +8,6 @@ returns the exit status). This module only puts them together, in the order
 
 import argparse
 import importlib
-import sys
 
 import benchmarks.cli
 import exercises.cli

@@ -8,7 +8,6 @@ in the units the user wrote.
 """
 
 import argparse
-import json
 import math
 import sys
 

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from ..status import NOT_ASSEMBLABLE, OK, SINGULAR, STATUS_NAMES  # noqa: F401 (re-exported)
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 
 EPS = float(np.finfo(float).eps)
 

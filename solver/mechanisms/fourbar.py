@@ -95,7 +95,6 @@ class FourBar(Mechanism):
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._d - self._a * np.cos(t), self._a * np.sin(t)))
-        b, c = self._b, self._c
         need = (f"the coupler (b = {self._given_text('b')}) and rocker (c = "
                 f"{self._given_text('c')}) must span the distance |A - O4| = {self._show(s)}, "
                 f"which needs |b - c| <= |A - O4| <= b + c")
