@@ -1,10 +1,11 @@
 """What the tests of solver.vectorloops share: example linkages, comparisons,
-the closed-form fourbar's assemblies, and the loops closed by mpmath.findroot
-(an independent solution: its own Jacobian by finite differences)."""
+the closed-form fourbar's assemblies, and the loops closed in mpmath by the
+project's one high-precision reference (benchmarks.reference)."""
 
-import mpmath as mp
 import numpy as np
 
+from benchmarks.cases import from_example
+from benchmarks.reference import LoopReference
 from solver import Q_
 from solver.kernels import fourbar as fourbar_kernel
 from solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
@@ -130,45 +131,30 @@ def counting(monkeypatch, name):
 
 
 def mp_solver(desc):
-    """q(theta2) of a description, by mpmath.findroot on the loop equations alone."""
+    """The project's reference (benchmarks.reference: Newton-Raphson in mpmath on
+    the loop equations alone) for a description: ``(model, q_at, points_at)``
+    with ``q_at(theta2, start)`` the unknowns in the order of
+    ``model.unknown_names`` and ``points_at(theta2, q)`` every named point."""
     model = read_description(desc)
-
-    def closure(theta2):
-        def f(*q):
-            z = []
-            for v in range(len(model.names)):
-                lu, au = model.length_unknown[v], model.angle_unknown[v]
-                L = q[lu] if lu >= 0 else mp.mpf(model.length[v])
-                base = theta2 if model.angle_input[v] else (q[au] if au >= 0 else 0)
-                th = mp.mpf(model.angle_ratio[v]) * base + mp.mpf(model.angle_offset[v])
-                z.append(L * mp.mpc(mp.cos(th), mp.sin(th)))
-            out = []
-            for row in model.signs:
-                s = mp.fsum(int(k) * zv for k, zv in zip(row, z) if k)
-                out += [mp.re(s), mp.im(s)]
-            return out
-        return f
+    ref = LoopReference(from_example("test", "", desc))
+    order = [ref.index[(vec, what)] for vec, what in (u.split(".") for u in model.unknown_names)]
+    terms = [ref.parse(desc["points"][name]) for name in model.point_names]
 
     def q_at(theta2, start):
-        q = mp.findroot(closure(theta2), [mp.mpf(x) for x in start],
-                        tol=mp.mpf(10) ** (-2 * mp.mp.dps + 10))
-        q = [q[i] for i in range(len(start))] if len(start) > 1 else [q]
-        assert max(abs(r) for r in closure(theta2)(*q)) < mp.mpf(10) ** (-mp.mp.dps + 5)
-        return q
+        guess = [None] * len(order)
+        for u, k in enumerate(order):
+            guess[k] = start[u]
+        q = ref.position(guess, theta2)
+        return [q[k] for k in order]
 
-    return model, q_at
+    def points_at(theta2, q):
+        q_ref = [None] * len(order)
+        for u, k in enumerate(order):
+            q_ref[k] = q[u]
+        state = ref.state([q_ref], [theta2])
+        return [ref.sum(state, t, 0) for t in terms]
 
-
-def mp_points(model, q, theta2):
-    """Every named point of a description at the mpmath solution ``q``."""
-    z = []
-    for v in range(len(model.names)):
-        lu, au = model.length_unknown[v], model.angle_unknown[v]
-        L = q[lu] if lu >= 0 else mp.mpf(model.length[v])
-        base = theta2 if model.angle_input[v] else (q[au] if au >= 0 else 0)
-        th = mp.mpf(model.angle_ratio[v]) * base + mp.mpf(model.angle_offset[v])
-        z.append(L * mp.mpc(mp.cos(th), mp.sin(th)))
-    return [mp.fsum(int(k) * zv for k, zv in zip(row, z) if k) for row in model.point_signs]
+    return model, q_at, points_at
 
 
 def jet_of_vector(L, th):
