@@ -8,8 +8,8 @@ derivative of every loop,
 
     sum_v s_v z_v^(n) = 0,   z_v = L_v e^{j theta_v},
 
-whose unknown part is J q^(n) with the position Jacobian J (eq. 7.33, and
-eq. 7.19 for a vector of varying length). Named points are signed sums of
+whose unknown part is J q^(n) with the position Jacobian J (eqs. 7.2 and 7.40
+for a vector of constant length, 7.19 for one whose length varies). Named points are signed sums of
 vectors, differentiated the same way.
 """
 
@@ -107,7 +107,7 @@ class LoopReference:
 
     @staticmethod
     def dz(L, th, e, n):
-        """n-th time derivative of z = L e^{j theta} (eqs. 7.2, 7.19, 7.33)."""
+        """n-th time derivative of z = L e^{j theta} (eqs. 7.2, 7.19, 7.40)."""
         if n == 0:
             return L[0] * e
         w = th[1]

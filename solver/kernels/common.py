@@ -4,7 +4,7 @@ pieces, and the derivative terms of a rotating vector.
 
 The derivative terms are the building blocks of every differentiated loop
 equation. For a vector of constant length L at angle theta(t) (Chapter 7,
-eqs. 7.2 and 7.33):
+eqs. 7.2 and 7.40):
 
     z    = L e^{j theta}
     z'   = L (j omega) e^{j theta}
@@ -219,7 +219,7 @@ def acc_term(L, cos, sin, omega, alpha):
 
 
 def jerk_term(L, cos, sin, omega, alpha, jerk):
-    """Components of L (-3 omega alpha + j (jerk - omega^3)) e^{j theta} [L/s^3] (eq. 7.33)."""
+    """Components of L (-3 omega alpha + j (jerk - omega^3)) e^{j theta} [L/s^3] (eq. 7.40)."""
     re = -3.0 * L * omega * alpha
     im = L * (jerk - omega * omega * omega)
     return re * cos - im * sin, re * sin + im * cos

@@ -1,6 +1,6 @@
 """The geared fivebar, position to jerk, in closed form (unit-free).
 
-Vector loop (Chapter 7, eq. 7.28; CONVENTIONS):
+Vector loop (CONVENTIONS; its first and second derivatives are eqs. 6.32a and 7.28a):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta5} - f e^{j theta1} = 0
     theta5 = lam theta2 + phi   (angles measured from the ground line O2->O5)
 
@@ -8,8 +8,8 @@ The gears make link 5 a known function of the input, so the loop has two
 unknowns (theta3, theta4) like a fourbar whose "ground pivot" C = O5 + d e^{j theta5}
 moves. The triangle A-B-C with sides b, c, s = |C - A| gives the position;
 ``open`` puts B on the same side of the line A->C as the fourbar's open
-circuit puts B relative to A->O4 (the chapter's eq. 4.24 sign convention for
-the equivalent fourbar), ``crossed`` on the other side.
+circuit puts B relative to A->O4 (as for the equivalent fourbar), ``crossed``
+on the other side.
 
 Derivatives (eq. 7.29 for n = 2): differentiating n times,
 

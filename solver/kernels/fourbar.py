@@ -23,11 +23,11 @@ with e^{j theta4} and e^{j theta3} eliminates one unknown each:
     x3 = (K_n . e4) / (b sin(theta3 - theta4))
     x4 = (K_n . e3) / (c sin(theta3 - theta4))
 
-This is the solution of eqs. 7.11 (eq. 7.12) and of eqs. 7.35 (eqs. 7.36-7.37)
+This is the solution of eqs. 7.11 (eq. 7.12) and of eqs. 7.35 (eqs. 7.36-7.39)
 written without the chapter's auxiliary constants; the same 2x2 matrix
 serves every order. With
 Lk (j x_k - w_k^2) e_k for the acceleration of a link (eq. 7.2) and
-Lk (-3 w_k x_k + j (j_k - w_k^3)) e_k for its jerk (eq. 7.33):
+Lk (-3 w_k x_k + j (j_k - w_k^3)) e_k for its jerk (eq. 7.40):
 
     K_1 = j a omega2 e2
     K_2 = a (j alpha2 - omega2^2) e2 - b omega3^2 e3 + c omega4^2 e4
@@ -156,7 +156,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
 
     Notes
     -----
-    Chapter 7, eqs. 7.7-7.12 (acceleration) and 7.34-7.37 (jerk), derived
+    Chapter 7, eqs. 7.7-7.12 (acceleration) and 7.34-7.39 (jerk), derived
     here as described in the module docstring.
     """
     sigma = CIRCUITS[circuit]

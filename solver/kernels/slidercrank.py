@@ -1,6 +1,6 @@
 """The offset slider-crank, position to jerk, in closed form (unit-free).
 
-Vector loop (Chapter 7, eq. 7.14; CONVENTIONS):
+Vector loop (eq. 4.14b, repeated in section 7.3; CONVENTIONS):
     a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
     theta4 = theta1 + 90 deg, c = slider offset (signed), d = slider position.
 
@@ -13,8 +13,8 @@ Derivatives: differentiating n times,
     K_n - j b x3 e^{j theta3} - d^(n) = 0
 
 with K_n the known terms. The imaginary part gives
-x3 = Im(K_n) / (b cos theta3) (omega3, alpha3, jerk3; eq. 7.16b for n = 2),
-the real part d^(n) = Re(K_n) + b x3 sin theta3 (eq. 7.16c). The position is
+x3 = Im(K_n) / (b cos theta3) (omega3, alpha3, jerk3; eqs. 7.16c-d for n = 2),
+the real part d^(n) = Re(K_n) + b x3 sin theta3 (eqs. 7.16b, e). The position is
 singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 """
 
