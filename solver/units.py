@@ -288,8 +288,20 @@ def _text_to_si(value, name, kind, positive, nonzero):
     return _to_si(value, name, kind, positive, nonzero)
 
 
+#: (unit items, kind) -> factor to SI, for the units of Quantities already read once
+#: by :func:`parse_quantity` (a Quantity's checks depend only on its units and kind)
+_ACCEPTED = {}
+
+
 def _to_si(value, name, kind, positive, nonzero):
     dim, si, example, words = KINDS[kind]
+    if type(value) is Q_:   # the common case: a Quantity of this registry
+        mag = value.magnitude
+        factor = _ACCEPTED.get((tuple(value.unit_items()), kind))
+        if factor is not None and type(mag) is float:
+            out = mag * factor if factor != 1.0 else mag
+            if math.isfinite(out) and (out > 0 or not positive and not (nonzero and out == 0)):
+                return out
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
             raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
@@ -298,6 +310,7 @@ def _to_si(value, name, kind, positive, nonzero):
     if isinstance(q, pint.Quantity):
         mag = q.magnitude
         factor = _factor(q.units, kind)
+        _ACCEPTED[(tuple(q.unit_items()), kind)] = factor
         out = mag * factor if factor != 1.0 else mag
         if isinstance(mag, (list, tuple)):
             out = np.asarray(mag, dtype=float) * factor

@@ -95,6 +95,29 @@ def classify(gap, span):
     return status, roundoff
 
 
+def length_unit(*lengths):
+    """A power of two near the longest of ``lengths`` [m] (1.0 if none is
+    finite and non-zero).
+
+    The kernels divide every length by it before they compute and multiply
+    the lengths they return by it after: dividing by a power of two is exact,
+    and every formula is homogeneous in the lengths, so this changes no bit of
+    any answer whose intermediate values stay within float64, and makes the
+    geometry scale-free: a linkage scaled by any factor float64 can hold gives
+    the same angles (the squares and fourth powers of the lengths that enter
+    the formulas would otherwise overflow beyond about 1e77 m and underflow
+    below 1e-77 m).
+    """
+    m = 0.0
+    for x in lengths:
+        x = abs(x) if type(x) is float else float(np.max(np.abs(x)))
+        if x > m:
+            m = x
+    if not 0.0 < m < math.inf:
+        return 1.0
+    return math.ldexp(1.0, math.frexp(m)[1])
+
+
 def as_input(x):
     """A float for a scalar, else a float ndarray (the kernels keep a single
     position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""
@@ -119,11 +142,13 @@ def masked(bad, x):
 
 
 def without_float_warnings(func):
-    """Run a kernel with numpy's invalid/divide warnings off: NaN marks the
-    positions that do not assemble, and the status says so."""
+    """Run a kernel with numpy's floating-point warnings off: NaN marks the
+    positions that do not assemble, and the status says so; an overflow
+    (inputs too large for float64's range) is refused by the unit-aware layer
+    and the batch, which check the outputs they give."""
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
     return wrapper
 

@@ -23,7 +23,8 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
+from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
                      piecewise, without_float_warnings, triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
@@ -60,6 +61,8 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
+    unit = length_unit(a, b, c, d, f)      # scale-free: lengths near 1, exactly
+    a, b, c, d, f = a / unit, b / unit, c / unit, d / unit, f / unit
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
         return in_pieces(lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit,
                                                order), theta2, omega2, alpha2, jerk2)

@@ -60,7 +60,8 @@ import numpy as np
 
 from . import common
 from .common import (EPS, MAX_ROUNDOFF, OK, ROUNDOFF_GAIN, SINGULAR, Motion, as_input,
-                     classify, masked, pieces, same_shapes, without_float_warnings)
+                     classify, length_unit, masked, pieces, same_shapes,
+                     without_float_warnings)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -132,7 +133,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     ----------
     a, b, c, d : float
         Crank, coupler, rocker and ground lengths [m] (any one length unit
-        works, outputs follow it).
+        works; only their ratios matter, at any scale float64 holds).
     theta2 : float or array
         Crank angle from the global x axis [rad].
     omega2, alpha2, jerk2 : float or array
@@ -162,6 +163,8 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
+    unit = length_unit(a, b, c, d)      # scale-free: lengths near 1, exactly
+    a, b, c, d = a / unit, b / unit, c / unit, d / unit
     if (type(theta2) is not float and theta2.size >= MIN_IN_PLACE
             and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))):
         return _solve_in_place(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,

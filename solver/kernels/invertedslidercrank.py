@@ -30,7 +30,8 @@ perpendicular from the slide line to O4's circle: a limit position).
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
+from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
                      piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
@@ -64,11 +65,24 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
         (see :func:`solver.kernels.fourbar.solve`).
     """
+    unit = length_unit(a, c, d)      # scale-free: lengths near 1, exactly
+    out = _solve(a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit,
+                 order)
+    if unit != 1.0:
+        for name in ('b', 'b_dot', 'b_ddot', 'b_dddot'):
+            value = getattr(out, name)
+            if value is not None:
+                setattr(out, name, value * unit)
+    return out
+
+
+def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
+    """:func:`solve` with lengths of order 1 (see :func:`~.common.length_unit`)."""
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
-        return in_pieces(lambda *motion: solve(a, c, d, gamma, *motion, theta1, circuit, order),
+        return in_pieces(lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)

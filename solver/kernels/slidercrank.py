@@ -20,7 +20,8 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
+from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
                      piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
@@ -54,11 +55,24 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
         ``roundoff`` (see :func:`solver.kernels.fourbar.solve`).
     """
+    unit = length_unit(a, b, c)      # scale-free: lengths near 1, exactly
+    out = _solve(a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit,
+                 order)
+    if unit != 1.0:
+        for name in ('d', 'd_dot', 'd_ddot', 'd_dddot'):
+            value = getattr(out, name)
+            if value is not None:
+                setattr(out, name, value * unit)
+    return out
+
+
+def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
+    """:func:`solve` with lengths of order 1 (see :func:`~.common.length_unit`)."""
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
-        return in_pieces(lambda *motion: solve(a, b, c, *motion, theta1, circuit, order),
+        return in_pieces(lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)

@@ -2,6 +2,7 @@
 the declarations of :mod:`solver.parameters`), the lazy result object, and
 the errors raised for one position."""
 
+import cmath
 import functools
 import math
 
@@ -99,15 +100,35 @@ class Result(Kinematics):
 
     # --- unit-free access -------------------------------------------------
     def si(self, name):
-        """The SI value (float, complex, or array) of an output, unit-free."""
+        """The SI value (float, complex, or array) of an output, unit-free.
+
+        Raises InvalidInput where it overflows float64 at a position the
+        result vouches for (inputs too large for float64's range): never an
+        answer of Infinity or NaN.
+        """
         cache = self._cache
         if name in cache:
             return cache[name]
-        value = self._compute(name)
+        with np.errstate(all="ignore"):
+            value = self._compute(name)
         if self._scalar and isinstance(value, np.ndarray):
             value = value[()]
+        self._check_finite(name, value)
         cache[name] = value
         return value
+
+    def _check_finite(self, name, value):
+        if self._scalar:
+            if cmath.isfinite(value) or self._motion.status != OK:
+                return
+        else:
+            finite = np.isfinite(value)
+            if finite.all() or not (~finite & (self._motion.status == OK)).any():
+                return
+        raise InvalidInput(
+            f"{name} overflows float64: the inputs are too large for its range (up to about "
+            f"1.8e308 in SI units). Give smaller speeds or lengths (the angles do not depend "
+            f"on the scale of the lengths), or solve to a lower order", name)
 
     def kind(self, name):
         return kind_of(name)
@@ -552,6 +573,12 @@ class Mechanism:
         result = Result(self, motion, scalar, inputs, pts)
         if scalar and raise_errors and motion.status != OK:
             self._raise(motion, inputs)
+        if scalar:   # an overflow of the kernel's outputs is refused now, not when read
+            for name in motion.keys():
+                value = getattr(motion, name)
+                if type(value) is float and not math.isfinite(value) or \
+                        isinstance(value, np.floating) and not np.isfinite(value):
+                    result._check_finite(name, value)
         return result
 
     def _raise(self, motion, inputs):

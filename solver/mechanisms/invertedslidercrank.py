@@ -60,7 +60,7 @@ class InvertedSliderCrank(Mechanism):
                 return si("b_ddot") * e3
             if name == "V_slip":
                 return si("b_dot") * e3
-            return si("A_B") + si("b") * (1j * si("alpha3") - si("omega3") ** 2) * e3
+            return si("A_B") + si("b") * (1j * si("alpha3") - si("omega3") * si("omega3")) * e3
         return None
 
     def _kernel(self, motion, circuit, order):

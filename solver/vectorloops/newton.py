@@ -25,12 +25,14 @@ singular, and its size says how far the position is from a singular one
 (:mod:`.sweep` follows one sign).
 """
 
+import dataclasses
 import math
 from typing import NamedTuple
 
 import numpy as np
 
 from ..errors import InvalidInput, NoConvergence
+from ..kernels.common import length_unit
 from .products import rows_times
 from .straightline import compile_kernel
 
@@ -90,10 +92,22 @@ def step_tolerance(tol):
 
 
 class LoopSystem:
-    """Index arrays of a :class:`~.description.LoopModel`, ready for fast evaluation."""
+    """Index arrays of a :class:`~.description.LoopModel`, ready for fast evaluation.
+
+    Lengths inside are the model's divided by ``unit``, a power of two near its
+    longest length (:func:`solver.kernels.common.length_unit`): exact, and the
+    solver is then the same at any scale float64 holds (``model`` is the
+    normalized model, ``si_model`` the one read; :func:`.solve.solve` multiplies
+    the lengths it returns by ``unit``).
+    """
 
     def __init__(self, model):
-        self.model = model
+        self.si_model = model
+        self.unit = unit = length_unit(model.length_scale)
+        guess = np.where(model.unknown_is_length, model.guess / unit, model.guess)
+        self.model = model = dataclasses.replace(
+            model, length=model.length / unit, guess=guess,
+            length_scale=model.length_scale / unit)
         m = model
         self.signs = m.signs
         self.n_loops = nl = m.signs.shape[0]

@@ -86,6 +86,12 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
             i = int(np.flatnonzero(singular)[0])
             out.message = out.message or Singular(singular_message(theta2[i], out.condition[i]),
                                                   condition=float(out.condition[i]))
+    unit = system.unit              # back from the system's normalized lengths
+    if unit != 1.0:
+        q[:, system.model.unknown_is_length] *= unit
+        L *= unit
+        for x in dL + pts:
+            x *= unit
     out.L, out.theta, out.dL, out.dth, out.points = L, theta, dL, dth, pts
     return out
 

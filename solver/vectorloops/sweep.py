@@ -224,7 +224,7 @@ class _Sweep(Walks):
             if result is not None:
                 q, it, res, reason, slope, orient = result
         if reason != CONVERGED:
-            self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res, it, reason))
+            self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res * self.system.unit, it, reason))
             return False
         trusted = abs(orient) >= self.sample_singular
         if self.gap:  # across a gap the prediction means little: walk to check instead
