@@ -7,7 +7,10 @@ returns the exit status). This module only puts them together, in the order
 """
 
 import argparse
+import errno
 import importlib
+import os
+import sys
 
 import benchmarks.cli
 import exercises.cli
@@ -56,13 +59,55 @@ def build_parser():
 
 
 def main(argv=None):
-    """Run ``accelab`` with ``argv`` (default: the command line); returns the exit status."""
+    """Run ``accelab`` with ``argv`` (default: the command line); returns the exit status.
+
+    No traceback reaches the user: a reader that leaves (``| head``) ends the
+    command quietly, an output that cannot be written (a full disk) is said
+    in one line with exit status 2, Ctrl-C exits with 130, and anything else
+    unexpected is reported as an internal error to report, with status 1.
+    """
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args, extra = parser.parse_known_args(argv)
+    if extra:   # name=value after an option (accelab solve fourbar --json a="2 in" ...)
+        if getattr(args, "intermixed", False) and all("=" in e and not e.startswith("-")
+                                                      for e in extra):
+            args.values = list(args.values) + extra
+        else:
+            parser.error(f"unrecognized arguments: {' '.join(e[:60] for e in extra)}")
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
     try:
-        return args.func(args) or 0
-    except BrokenPipeError:  # e.g. piped into head: the reader left, nothing to say
-        return 0
+        status = args.func(args) or 0
+        sys.stdout.flush()
+        return status
+    except KeyboardInterrupt:
+        print("accelab: interrupted", file=sys.stderr)
+        return 130
+    except OSError as exc:
+        if exc.errno not in (errno.EPIPE, errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EFBIG):
+            return _internal(exc)
+        _silence_stdout()
+        if exc.errno == errno.EPIPE:  # e.g. piped into head: the reader left, nothing to say
+            return 0
+        print(f"accelab: cannot write the output: {exc.strerror}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - no traceback ever reaches a user
+        return _internal(exc)
+
+
+def _internal(exc):
+    print(f"accelab: internal error, please report it with the command you ran: "
+          f"{type(exc).__name__}: {str(exc)[:300]}", file=sys.stderr)
+    return 1
+
+
+def _silence_stdout():
+    """Point stdout at the null device, so that what is left in its buffer
+    goes nowhere at exit instead of failing again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass

@@ -191,6 +191,10 @@ def _check_number(value, name, kind):
     if isinstance(value, np.ma.MaskedArray):
         raise InvalidInput(f"{name} is a masked array; pass the positions you want as a plain "
                            f"array (masked values cannot be solved or left out silently)", name)
+    if isinstance(value, (list, tuple)) and not all(
+            isinstance(x, numbers.Real) and not isinstance(x, bool) for x in value):
+        raise InvalidInput(f"{name} must be one quantity like {KINDS[kind][2]} (got a "
+                           f"{type(value).__name__}: {show(value)})", name)
     if isinstance(value, (numbers.Complex, np.ndarray, list, tuple)):
         _check_magnitude(value, name, kind, value)
         return
@@ -320,7 +324,13 @@ def _to_si(value, name, kind, positive, nonzero):
         raise InvalidInput(
             f"{name} needs units (got the bare number {show(value)}). Example: {name}={example}, "
             f"or Q_({show(value)}, '{si or 'dimensionless'}')", name)
-    if type(out) is float or type(out) is int:  # fast path for scalars
+    if type(out) is int:
+        try:
+            out = float(out)
+        except OverflowError:
+            raise InvalidInput(f"{name} = {show(value)} is too large for a float "
+                               f"(about 1.8e308 at most). Example: {name}={example}", name) from None
+    if type(out) is float:  # fast path for scalars
         if not math.isfinite(out):
             raise InvalidInput(_not_finite(name, value, example, out), name)
         if positive and not out > 0:
