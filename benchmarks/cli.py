@@ -46,10 +46,10 @@ def register(sub):
     p.set_defaults(func=run)
 
 
-def missing():
-    """The modules of :data:`NEEDS` this installation lacks."""
+def missing(names=NEEDS):
+    """The modules of ``names`` this installation lacks."""
     import importlib.util
-    return [name for name in NEEDS if importlib.util.find_spec(name) is None]
+    return [name for name in names if importlib.util.find_spec(name) is None]
 
 
 def run(args):
@@ -79,6 +79,12 @@ def run(args):
             f"{name} ({NEEDS[name]})" for name in lacking) + f"; install it with: {INSTALL}",
             file=sys.stderr)
         return 2
+    if not args.no_peers:
+        from .peers import PEERS
+        absent = missing(PEERS)
+        if absent:
+            print(f"accelab bench: {', '.join(absent)} not installed, so not measured "
+                  f"(all the peers come with: {INSTALL})", file=sys.stderr)
     from .run import run_benchmark
     mode = "tiny" if args.tiny else "quick" if args.quick else "full"
     with warnings.catch_warnings():

@@ -221,7 +221,7 @@ def _loops_with(tol):
 
 
 # --- finite differences of the position ----------------------------------------------
-def _fd_with(h):
+def fd_with(h):
     def prepare(case, theta2):
         _closed_form(case)
         groups = {}
@@ -304,7 +304,7 @@ def methods(include_peers=True):
                                   3, _loops_with(tol), setting=tol, vectorised=False))
     for h in FD_STEPS:
         out.append(Method(f"fd-h{h:.0e}", f"finite differences, h = {h:.0e} rad", "fd", 3,
-                          _fd_with(h), setting=h))
+                          fd_with(h), setting=h))
     out.append(Method("graphical", "graphical construction", "graphical", 2, _graphical,
                       vectorised=False))
     if include_peers:

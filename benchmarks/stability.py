@@ -102,8 +102,8 @@ def _values(key, case, theta2, h):
     if key == "loops":
         m = next(m for k, m in table.items() if k.startswith("loops"))
     elif key == "fd":
-        from .methods import Method, _fd_with
-        m = Method("fd", "fd", "fd", 3, _fd_with(h))
+        from .methods import Method, fd_with
+        m = Method("fd", "fd", "fd", 3, fd_with(h))
     elif key in table:
         m = table[key]
     else:

@@ -25,6 +25,7 @@ import re
 
 import numpy as np
 import pint
+from pint.util import UnitsContainer
 
 from .errors import InvalidInput
 
@@ -54,6 +55,10 @@ KINDS = {
 }
 
 SI_UNITS = {kind: ureg.Unit(si) for kind, (_, si, _, _) in KINDS.items()}
+# the same units as pint's public UnitsContainer, which its Quantity constructor takes
+# directly (a little faster than a Unit, for the many outputs a result wraps)
+_SI_CONTAINERS = {kind: UnitsContainer(dict(Q_(1.0, unit).unit_items()))
+                  for kind, unit in SI_UNITS.items()}
 _DIMS = {kind: ureg.get_dimensionality(dim) if dim else ureg.get_dimensionality("")
          for kind, (dim, _, _, _) in KINDS.items()}
 _ANGULAR = {"angular_velocity", "angular_acceleration", "angular_jerk"}
@@ -306,6 +311,12 @@ def _to_si(value, name, kind, positive, nonzero):
             out = mag * factor if factor != 1.0 else mag
             if math.isfinite(out) and (out > 0 or not positive and not (nonzero and out == 0)):
                 return out
+        elif factor is not None and type(mag) is np.ndarray and mag.dtype == np.float64 \
+                and mag.ndim and not positive and not nonzero:
+            with np.errstate(over="ignore"):
+                out = mag * factor if factor != 1.0 else mag
+            if np.isfinite(out).all():
+                return out
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
             raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
@@ -371,4 +382,4 @@ def _not_finite(name, value, example, si):
 
 def quantity(si_value, kind):
     """Wrap an SI float or array (real or complex) as one Quantity of :data:`ureg`."""
-    return Q_(si_value, SI_UNITS[kind])
+    return Q_(si_value, _SI_CONTAINERS[kind])

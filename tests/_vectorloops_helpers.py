@@ -120,13 +120,13 @@ def start_on_crossed_once(system, monkeypatch, a, b, c, d, thetas):
 
 def counting(monkeypatch, name):
     calls = {"n": 0}
-    method = getattr(sweep_module._Sweep, name)
+    method = getattr(sweep_module.Sweep, name)
 
     def counted(self, *args):
         calls["n"] += 1
         return method(self, *args)
 
-    monkeypatch.setattr(sweep_module._Sweep, name, counted)
+    monkeypatch.setattr(sweep_module.Sweep, name, counted)
     return calls
 
 

@@ -22,7 +22,7 @@ def test_straight_line_kernel_matches_the_batched_evaluation(name):
     for _ in range(20):
         q = system.model.guess + rng.normal(scale=0.3, size=system.n_unknowns) * system.scale
         t = float(rng.uniform(-np.pi, np.pi))
-        res, orient, dq, slope = system._kernel(list(q), t)
+        res, orient, dq, slope = system.step(list(q), t)
         F, J, Ft = system.evaluate(q[None], np.array([t]))
         assert res == pytest.approx(np.linalg.norm(F[0]), rel=1e-12)
         assert orient == pytest.approx(float(orientation(J[0])), rel=1e-9, abs=1e-14)
@@ -40,6 +40,6 @@ def test_generated_step_is_the_plain_step_bit_for_bit(name):
     for _ in range(200):
         q = list(system.model.guess + rng.normal(0.0, 0.3, nu) * system.scale)
         theta2 = float(rng.uniform(-7.0, 7.0))
-        fast = system._kernel(q, theta2)
-        plain = plain_step(system._py_vectors, nu, q, theta2)
+        fast = system.step(q, theta2)
+        plain = plain_step(system.step_tables, nu, q, theta2)
         assert fast == plain

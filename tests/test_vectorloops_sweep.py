@@ -66,7 +66,7 @@ def test_forced_fallbacks_and_restart_give_the_same_sweep(monkeypatch):
     the walk disagrees and the chain restarts there: still the same sweep."""
     system = system_of(EXAMPLES["sixbar_slider"]())
     reference = solve(system, CYCLE, 10.0, -5.0, 40.0, batch=False)
-    original = sweep_module._Sweep.batch
+    original = sweep_module.Sweep.batch
     calls = {"walks": 0, "spoiled": False}
 
     def all_bad(self, intervals):
@@ -77,14 +77,14 @@ def test_forced_fallbacks_and_restart_give_the_same_sweep(monkeypatch):
             calls["spoiled"] = True
         return intervals
 
-    walk = sweep_module._Sweep.walk_dense
+    walk = sweep_module.Sweep.walk_dense
 
     def counting_walk(self, start, stop):
         calls["walks"] += 1
         return walk(self, start, stop)
 
-    monkeypatch.setattr(sweep_module._Sweep, "batch", all_bad)
-    monkeypatch.setattr(sweep_module._Sweep, "walk_dense", counting_walk)
+    monkeypatch.setattr(sweep_module.Sweep, "batch", all_bad)
+    monkeypatch.setattr(sweep_module.Sweep, "walk_dense", counting_walk)
     fast = solve(system, CYCLE, 10.0, -5.0, 40.0)
     assert calls["spoiled"] and calls["walks"] >= 3
     same_motion(fast, reference)
@@ -109,7 +109,7 @@ def test_fourbar_keeps_its_assembly_through_full_cycles(linkage, circuit, step_d
 def test_batched_guesses_that_land_on_the_other_assembly_are_caught(monkeypatch):
     a, b, c, d = LINKAGES["crank_rocker"]
     system = system_of(fourbar_desc(a, b, c, d, *guesses_on("open", a, b, c, d, 0.0)))
-    sw = sweep_module._Sweep(system, CYCLE, system.model.guess, 1e-13)
+    sw = sweep_module.Sweep(system, CYCLE, system.model.guess, 1e-13)
     sw.run()
     inner = np.flatnonzero(~sw.sequential)[[5, 6, 150]]      # positions the batch solves
     bad = start_on_crossed_once(system, monkeypatch, a, b, c, d, CYCLE[inner])
@@ -141,6 +141,6 @@ def test_short_sweeps_solve_most_positions_in_the_batch():
     system = system_of(EXAMPLES["watt2_sixbar"]())
     for n in (72, 100):
         t2 = np.radians(np.linspace(0.0, 360.0, n, endpoint=False))
-        sw = sweep_module._Sweep(system, t2, system.model.guess, 1e-13)
+        sw = sweep_module.Sweep(system, t2, system.model.guess, 1e-13)
         sw.run()
         assert (sw.status == 0).all() and sw.sequential.sum() < n / 3

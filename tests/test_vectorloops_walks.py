@@ -48,7 +48,7 @@ def test_unverifiable_reassembly_is_reported_not_returned():
     assert on_circuit(m, a, b, c, d, t2 / 2, "open")[ok].all()
     assert not ok[171:].any()
     assert "did not close" in str(m.message)       # the first failure: the gap itself
-    sw = sweep_module._Sweep(system_of(desc), t2, system_of(desc).model.guess, 1e-13)
+    sw = sweep_module.Sweep(system_of(desc), t2, system_of(desc).model.guess, 1e-13)
     sw.run()
     after = [str(e) for i, e in sw.errors.items() if np.degrees(t2[i]) >= 560]
     honest = [e for e in after if "not on the assembly this sweep follows" in e]

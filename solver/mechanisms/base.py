@@ -67,6 +67,10 @@ def check_order(order):
     return int(order)
 
 
+#: (mechanism class, order) -> the kernel outputs of that order (see Result._verify)
+_TOPS = {}
+
+
 def _fmt_angle(rad):
     return f"{math.degrees(float(rad)):.6g} deg"
 
@@ -97,6 +101,7 @@ class Result(Kinematics):
         self._cache = {}
         self._status = motion.status
         self._condition = motion.condition
+        self._verified = ()
 
     # --- unit-free access -------------------------------------------------
     def si(self, name):
@@ -109,13 +114,27 @@ class Result(Kinematics):
         cache = self._cache
         if name in cache:
             return cache[name]
-        with np.errstate(all="ignore"):
-            value = self._compute(name)
-        if self._scalar and isinstance(value, np.ndarray):
-            value = value[()]
+        value = self._motion.get(name)
+        if value is not None and name in self._verified:    # checked when solved
+            cache[name] = value
+            return value
+        if value is None:
+            with np.errstate(all="ignore"):
+                value = self._compute(name)
+            if self._scalar and isinstance(value, np.ndarray):
+                value = value[()]
         self._check_finite(name, value)
         cache[name] = value
         return value
+
+    def _verify(self, names):
+        """Check the kernel's highest-order outputs ``names`` and mark every
+        output the kernel solved as checked: a value that overflows spreads
+        to every higher derivative (each is computed from the ones below), so
+        finite highest orders vouch for the lower ones."""
+        for name in names:
+            self._check_finite(name, getattr(self._motion, name))
+        self._verified = self._mech._solved
 
     def _check_finite(self, name, value):
         if self._scalar:
@@ -132,6 +151,10 @@ class Result(Kinematics):
 
     def kind(self, name):
         return kind_of(name)
+
+    def has_point(self, name):
+        """Whether this result has the point ``name`` (A, B, P ...)."""
+        return name in self._pts
 
     def _compute(self, name):
         value = self._motion.get(name)
@@ -379,6 +402,9 @@ class Mechanism:
     _link_bases = {}  # link number -> the pin a point on it is measured from
     _pivots = ("O2",)
     _outputs = ()
+    #: the real outputs a kernel computes (links' angles and derivatives, sliders)
+    _solved = tuple(f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345") + \
+        tuple(f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot"))
 
     def __init__(self, **geometry):
         decl = self.declaration()
@@ -573,12 +599,13 @@ class Mechanism:
         result = Result(self, motion, scalar, inputs, pts)
         if scalar and raise_errors and motion.status != OK:
             self._raise(motion, inputs)
-        if scalar:   # an overflow of the kernel's outputs is refused now, not when read
-            for name in motion.keys():
-                value = getattr(motion, name)
-                if type(value) is float and not math.isfinite(value) or \
-                        isinstance(value, np.floating) and not np.isfinite(value):
-                    result._check_finite(name, value)
+        # an overflow of the kernel's outputs is refused now, not when read
+        key = (type(self), motion.order)
+        top = _TOPS.get(key)
+        if top is None:
+            top = _TOPS[key] = [n for n in self._solved if order_of(n) == motion.order
+                                and getattr(motion, n) is not None]
+        result._verify(top)
         return result
 
     def _raise(self, motion, inputs):

@@ -90,7 +90,7 @@ class FourBar(Mechanism):
         return self._finish(m, inputs, pts=pts)
 
     def outputs(self, result):
-        return self._outputs + (self._point_outputs if "P" in result._pts else ())
+        return self._outputs + (self._point_outputs if result.has_point("P") else ())
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1

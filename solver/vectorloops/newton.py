@@ -156,9 +156,9 @@ class LoopSystem:
         # number of times per crank turn (a gear ratio like -2), else none
         k = self.ratio[self.vin]
         self.period = 2 * np.pi if np.all(k == np.round(k)) else None
-        self._tables()
+        self._step_tables()
 
-    def _tables(self):
+    def _step_tables(self):
         """Plain-Python tables for :meth:`newton1` (one position, no numpy): per
         vector its base index, ratio, offset, length (or unknown index) and the
         rows and columns it adds to (F, J, dF/dtheta2); and from them the
@@ -179,10 +179,10 @@ class LoopSystem:
             rows.append((int(self.base_index[v]), float(self.ratio[v]), float(self.offset[v]),
                          int(m.length_unknown[v]), float(self.fixed_length[v]),
                          tuple(fterms), tuple(aterms), tuple(lterms), tuple(dterms)))
-        self._py_vectors = tuple(rows)
+        self.step_tables = tuple(rows)
         self._py_scale = [float(x) for x in self.scale]
         self._py_limit = [float(x) for x in self.step_limit]
-        self._kernel = compile_kernel(self._py_vectors, self.n_unknowns)
+        self.step = compile_kernel(self.step_tables, self.n_unknowns)
 
     # --- geometry of a stack of positions --------------------------------
     def vectors(self, q, theta2):
@@ -261,7 +261,7 @@ class LoopSystem:
             F, J, Ft = self.evaluate(qa, ta)
             res = np.sqrt(np.einsum("ij,ij->i", F, F))
             residual[active] = res
-            sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
+            sol, bad = solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
             dq = -sol[:, :, 0]
             size = np.max(np.abs(dq) / self.scale, axis=1)
             small = size <= step_tol
@@ -312,7 +312,7 @@ class LoopSystem:
         q = [float(x) for x in q0]
         if not math.isfinite(theta2):
             return NewtonResult(q, 0, math.nan, NOT_CLOSED, None, math.nan)
-        kernel = self._kernel
+        kernel = self.step
         scale, limit = self._py_scale, self._py_limit
         step_tol = step_tolerance(tol)
         floor = min(tol, ROUNDOFF_RESIDUAL) * self.model.length_scale
@@ -356,7 +356,7 @@ class LoopSystem:
         return [float(v) for v in dx]
 
 
-def _solve_stack(J, rhs):
+def solve_stack(J, rhs):
     """Solve M small systems; a singular one gives NaN and a True in ``bad``."""
     bad = np.zeros(J.shape[0], dtype=bool)
     try:

@@ -14,7 +14,7 @@ tables, which the tests check it against bit for bit).
 
 The entries are those of :class:`~.newton.LoopSystem` (rows: real and
 imaginary part of each loop; columns: the unknowns, then -F, then
--dF/dtheta2), from its per-vector tables (``_py_vectors``):
+-dF/dtheta2), from its per-vector tables (``LoopSystem.step_tables``):
 
     dz_v/dq_u      = k_v j L_v e^{j theta_v}   (v's angle follows unknown u)
     dz_v/dq_u      = e^{j theta_v}             (u is v's length)

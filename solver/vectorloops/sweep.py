@@ -49,7 +49,7 @@ from .crossing import ambiguity_message, singular_passage_note, singular_start_n
 from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_CONDITION,
                      SINGULAR_STEP, condition,
                      no_convergence, step_tolerance)
-from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, Walks, _sign
+from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, Walks, sign_of
 
 COARSE_STEP = 0.25      # [rad] first theta2 step between sequentially solved positions
 COARSE_RANGE = (0.02, 0.6)  # [rad] the step adapts within this range
@@ -63,7 +63,7 @@ SAMPLE_SINGULAR = 100.0  # a solved position whose |orientation| is below this m
                          # its orientation's sign and its slope are not trusted
 
 
-class _Sweep(Walks):
+class Sweep(Walks):
     """The state of one sweep: results so far and the continuation state."""
 
     def __init__(self, system, theta2, q0, tol):
@@ -112,7 +112,7 @@ class _Sweep(Walks):
         self.sequential[i] = True
         t = float(self.theta2[i])
         if not singular and self.sign is None:
-            self.sign = _sign(orient)
+            self.sign = sign_of(orient)
             if self.singular_start is not None:
                 self.notes[i] = singular_start_note(float(self.theta2[self.singular_start]), t)
                 self.singular_start = None
@@ -162,7 +162,7 @@ class _Sweep(Walks):
     def flipped(self, orient):
         """Is ``orient`` (trusted in sign) the other orientation than the followed one?"""
         return (self.sign is not None and abs(orient) >= ORIENTATION_FLOOR
-                and _sign(orient) != self.sign)
+                and sign_of(orient) != self.sign)
 
     def predict(self, t):
         """Continuation predictor from the last solved position to theta2 = t:
@@ -455,7 +455,7 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
     afterwards, on the whole stack at once.
     """
     theta2 = np.asarray(theta2, dtype=float)
-    sweep = _Sweep(system, theta2, q0, tol)
+    sweep = Sweep(system, theta2, q0, tol)
     q, status, iterations, message = sweep.run(batch)
     return q, status, iterations, message, {int(i): sweep.notes[i] for i in sorted(sweep.notes)}
 
