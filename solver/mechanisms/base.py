@@ -132,8 +132,14 @@ class Result(Kinematics):
         output the kernel solved as checked: a value that overflows spreads
         to every higher derivative (each is computed from the ones below), so
         finite highest orders vouch for the lower ones."""
-        for name in names:
-            self._check_finite(name, getattr(self._motion, name))
+        motion = self._motion
+        if self._scalar:
+            for name in names:
+                if not math.isfinite(getattr(motion, name)):
+                    self._check_finite(name, getattr(motion, name))
+        else:
+            for name in names:
+                self._check_finite(name, getattr(motion, name))
         self._verified = self._mech._solved
 
     def _check_finite(self, name, value):
@@ -403,8 +409,8 @@ class Mechanism:
     _pivots = ("O2",)
     _outputs = ()
     #: the real outputs a kernel computes (links' angles and derivatives, sliders)
-    _solved = tuple(f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345") + \
-        tuple(f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot"))
+    _solved = frozenset([f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
+                        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")])
 
     def __init__(self, **geometry):
         decl = self.declaration()
@@ -603,8 +609,8 @@ class Mechanism:
         key = (type(self), motion.order)
         top = _TOPS.get(key)
         if top is None:
-            top = _TOPS[key] = [n for n in self._solved if order_of(n) == motion.order
-                                and getattr(motion, n) is not None]
+            top = _TOPS[key] = sorted(n for n in self._solved if order_of(n) == motion.order
+                                      and getattr(motion, n) is not None)
         result._verify(top)
         return result
 
