@@ -42,17 +42,17 @@ from IPython.display import Image, display
 
 from coursekit import explore, use_style
 from solver import FourBar, Q_, Singular, VectorLoopLinkage
-from solver.bench import accuracy
-from solver.bench.cases import all_cases
-from solver.bench.charts import STYLE
-from solver.bench.methods import methods as bench_methods
-from solver.bench.timing import measure_interleaved
+from benchmarks import accuracy
+from benchmarks.cases import all_cases
+from benchmarks.charts import STYLE
+from benchmarks.methods import methods as bench_methods
+from benchmarks.timing import measure_interleaved
 from solver.graphical import construct
 from solver.kernels import MAX_ROUNDOFF
 from solver.kernels import fourbar as closed_form
 
 try:  # the reference needs mpmath (installed with the test extra: pip install -e ".[test]")
-    from solver.bench.reference import at_points
+    from benchmarks.reference import at_points
     HAVE_MPMATH = True
 except ImportError:
     HAVE_MPMATH = False
@@ -258,7 +258,7 @@ METHODS = {   # name: (run, read, family in the benchmark's charts)
                            alpha2=-5.0).values for t in as_floats], from_list, "graphical"),
 }
 
-# the finite differences above are the benchmark's (solver.bench.methods), written out; the
+# the finite differences above are the benchmark's (benchmarks.methods), written out; the
 # two agree to round-off (which, divided by h^3 in the jerk, is about 1e-7 here)
 run, read = next(m for m in bench_methods(include_peers=False)
                  if m.key == "fd-h1e-03").prepare(case, theta2)
@@ -268,7 +268,7 @@ assert max(np.max(d) for d in differences.values()) < 1e-5
 
 # %% [markdown]
 # Now time each one and measure its worst error up to acceleration and up to jerk. The clock
-# (`solver.bench.timing`) warms each method up, then times them in turn within each of five
+# (`benchmarks.timing`) warms each method up, then times them in turn within each of five
 # repeats, so that a busy machine slows them all alike, and reports the median:
 
 # %%
@@ -577,7 +577,7 @@ print(f"FourBar: 100 calls cost {t_call['FourBar, 100 calls'] / t_call['FourBar,
 # %% [markdown]
 # ### 5. The same questions at scale: the benchmark
 #
-# `make bench` (`accelab bench`) asks these questions of every linkage in `solver/bench/cases.py`
+# `make bench` (`accelab bench`) asks these questions of every linkage in `benchmarks/cases.py`
 # over full cycles, adds three packages from other authors for comparison, and publishes its
 # charts in `figures/` (the README's *Speed and accuracy* section lists the numbers). First,
 # time against error for every method and setting on the fourbar of example 1, to jerk:
