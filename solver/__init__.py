@@ -1,6 +1,6 @@
 """accelab's solver: acceleration analysis of planar linkages, position to jerk.
 
-Two layers (see the README):
+Two layers (see the README, "How the code is laid out"):
 
 * :mod:`solver.kernels` -- unit-free closed forms on numpy arrays of SI floats;
 * the unit-aware classes below, which take and return pint Quantities built on
@@ -10,19 +10,26 @@ Two layers (see the README):
 >>> r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
 ...     theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
 >>> r.alpha3.to("rad/s^2")
+
+The general vector-loop solver (:mod:`solver.vectorloops`, section 7.8) and
+the graphical constructions (:mod:`solver.graphical`, section 7.2) sit beside
+them; :mod:`solver.parameters` declares every mechanism's parameters once and
+:mod:`solver.cases` reads a case of the batch format into SI floats once.
+
+References
+----------
+R. L. Norton, *Design of Machinery*, McGraw-Hill, chapter 7, "Acceleration
+Analysis". Equation, figure and example numbers in the docstrings (eq. 7.7,
+Figure 7-4, Example 7-1 ...) are that chapter's; the position and velocity
+equations of chapters 4 and 6 are cited where the chapter repeats them.
 """
 
 from .errors import AccelabError, InvalidInput, NotAssemblable, NoConvergence, Singular
 from .units import Q_, ureg
 from .mechanisms import (FourBar, GearedFiveBar, InvertedSliderCrank, MECHANISMS,
                          RotatingPoint, SliderCrank, SlottedLink)
+from .vectorloops import VectorLoopLinkage
 
 __all__ = ["ureg", "Q_", "FourBar", "SliderCrank", "InvertedSliderCrank", "GearedFiveBar",
-           "RotatingPoint", "SlottedLink", "AccelabError", "InvalidInput", "NotAssemblable",
-           "Singular", "NoConvergence", "MECHANISMS"]
-
-try:  # the general vector-loop solver (section 7.8)
-    from .vectorloops import VectorLoopLinkage  # noqa: F401
-    __all__.append("VectorLoopLinkage")
-except ImportError:  # pragma: no cover - while it is being built
-    pass
+           "RotatingPoint", "SlottedLink", "VectorLoopLinkage", "AccelabError", "InvalidInput",
+           "NotAssemblable", "Singular", "NoConvergence", "MECHANISMS"]

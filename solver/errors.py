@@ -5,7 +5,8 @@ contract (``invalid_input``, ``not_assemblable``, ``singular``), and a message
 that says what to change.
 """
 
-__all__ = ["AccelabError", "InvalidInput", "NotAssemblable", "Singular", "NoConvergence"]
+__all__ = ["AccelabError", "InvalidInput", "NotAssemblable", "Singular", "NoConvergence",
+           "error_object"]
 
 
 class AccelabError(Exception):
@@ -58,3 +59,16 @@ class NoConvergence(NotAssemblable):
         super().__init__(message)
         self.residual = residual
         self.iterations = iterations
+
+
+def error_object(exc):
+    """The batch contract's error object for an exception raised by one case.
+
+    Errors of the :class:`AccelabError` family give their own kind and message;
+    anything else is a bug, reported as ``internal_error`` in the case so that
+    the rest of the batch goes on.
+    """
+    if isinstance(exc, AccelabError):
+        return {"ok": False, "error": exc.kind, "message": str(exc)}
+    return {"ok": False, "error": "internal_error",
+            "message": f"{type(exc).__name__}: {str(exc)[:200]} (please report this case)"}

@@ -1,24 +1,44 @@
 """The package's one pint registry and the conversions at the unit boundary.
 
 Everything below this layer works in SI floats (m, rad, s). Quantities enter
-through :func:`to_si` (one conversion per argument, never per array element)
-and leave through :func:`quantity`.
+through :func:`parse_quantity` and :func:`to_si` (one conversion per
+argument, never per array element) and leave through :func:`quantity`.
+
+The reading rules, the same wherever a quantity is read (the Python API, the
+batch format, the command line, a student's graded answer):
+
+* text is at most :data:`MAX_TEXT` characters, so that any field is read in
+  bounded time (pint's parser grows with the square of the length);
+* a quantity needs the dimension of its parameter; an angle needs angle
+  units (a bare ``"30"`` could be degrees or radians); a bare number is
+  accepted only for a plain number (a ratio) and for zero;
+* units that mean two things are refused with both readings: a frequency
+  (Hz) for an angular velocity (10 Hz is 10 rad/s to pint, but 10 rev/s to
+  most readers), and an angle or percent for a plain ratio;
+* values are finite, and stay finite in SI.
 """
 
 from functools import lru_cache
 import math
 import numbers
+import re
 
 import numpy as np
 import pint
+from pint.util import UnitsContainer
 
 from .errors import InvalidInput
 
-__all__ = ["ureg", "Q_", "to_si", "quantity", "KINDS"]
+__all__ = ["ureg", "Q_", "parse_quantity", "to_si", "quantity", "KINDS", "SI_UNITS",
+           "MAX_TEXT", "show"]
 
 ureg = pint.UnitRegistry()
+ureg.define("rev = revolution")  # '10 rev/s', the unambiguous way to say 10 Hz of a crank
 pint.set_application_registry(ureg)
 Q_ = ureg.Quantity
+
+#: the longest text read as a quantity [characters]
+MAX_TEXT = 100
 
 # kind -> (pint dimensionality, SI unit, example for error messages, words)
 KINDS = {
@@ -35,8 +55,33 @@ KINDS = {
 }
 
 SI_UNITS = {kind: ureg.Unit(si) for kind, (_, si, _, _) in KINDS.items()}
+# the same units as pint's public UnitsContainer, which its Quantity constructor takes
+# directly (a little faster than a Unit, for the many outputs a result wraps)
+_SI_CONTAINERS = {kind: UnitsContainer(dict(Q_(1.0, unit).unit_items()))
+                  for kind, unit in SI_UNITS.items()}
 _DIMS = {kind: ureg.get_dimensionality(dim) if dim else ureg.get_dimensionality("")
          for kind, (dim, _, _, _) in KINDS.items()}
+_ANGULAR = {"angular_velocity", "angular_acceleration", "angular_jerk"}
+# a power in a unit expression: its exponent must be a plain number of at most
+# two digits, and not itself raised to a power ('9**9**9' would take forever)
+_POWER = re.compile(r"(\*\*|\^)")
+_EXPONENT = re.compile(r"\s*\(?\s*[+-]?\s*\d{1,2}(\.\d*)?\s*\)?")
+
+
+def show(value):
+    """The user's value as it reads in a message: text quoted, a long one cut
+    (with its length), a Quantity or number as written."""
+    if isinstance(value, str):
+        if len(value) > 40:
+            return f"a text of {len(value)} characters starting {value[:20]!r}"
+        return repr(value)
+    if isinstance(value, pint.Quantity):
+        return f"{value:~}" if np.ndim(value.magnitude) == 0 else \
+            f"an array in {value.units:~}"
+    if isinstance(value, np.ndarray):
+        return f"an array of {value.size} numbers"
+    text = repr(value)
+    return text if len(text) <= 40 else f"a {type(value).__name__}"
 
 
 @lru_cache(maxsize=1024)
@@ -48,21 +93,176 @@ def _factor(units, kind):
     return Q_(1.0, units).to(SI_UNITS[kind]).magnitude
 
 
+@lru_cache(maxsize=1024)
+def _unit_names(units):
+    """The names of the units a Unit is made of (e.g. ('hertz',))."""
+    return tuple(name for name, _ in Q_(1.0, units).unit_items())
+
+
+@lru_cache(maxsize=1024)
+def _is_angle_unit(units):
+    """Whether ``units`` measure an angle (degree, radian, revolution ...):
+    dimensionless to pint, but a multiple of the radian."""
+    items = dict(Q_(1.0, units).to_root_units().unit_items())
+    return items == {"radian": 1}
+
+
+def _check_text(text, name, kind):
+    if len(text) > MAX_TEXT:
+        raise InvalidInput(f"{name} is a text of {len(text)} characters; a quantity is at most "
+                           f"{MAX_TEXT} (e.g. {name}={KINDS[kind][2]})", name)
+    for m in _POWER.finditer(text):
+        after = _EXPONENT.match(text, m.end())
+        if not after or text[after.end():].lstrip().startswith(("**", "^")):
+            raise InvalidInput(f"{name} = {show(text)} raises to a power that is not a plain "
+                               f"number of one or two digits; write units like 's^2' "
+                               f"(e.g. {name}={KINDS[kind][2]})", name)
+
+
 @lru_cache(maxsize=4096)
 def _parse_text(text):
     """Parse a quantity string once; the same text is common (defaults, batch files)."""
     return Q_(text)
 
 
-def _parse(value, name, kind):
+def _reason(exc):
+    """Why pint could not read a text, in words (pint's own text where it has some)."""
+    if isinstance(exc, pint.UndefinedUnitError):
+        return str(exc).strip() or "an unknown unit"
+    return "it is not a number followed by units"
+
+
+def parse_quantity(value, kind, name):
+    """Read ``value`` as a quantity of ``kind``: the one reading rule of the package.
+
+    Parameters
+    ----------
+    value : str, pint.Quantity, or number
+        Text such as ``"2 in"`` or ``"600 rpm"`` (at most :data:`MAX_TEXT`
+        characters), a Quantity (of this or another pint registry; scalar or
+        array), or a bare number (a plain ratio, or zero).
+    kind : str
+        One of :data:`KINDS`: ``'length'``, ``'angle'``, ``'angular_velocity'``,
+        ``'dimensionless'`` ...
+    name : str
+        The parameter's name, for the messages.
+
+    Returns
+    -------
+    pint.Quantity of :data:`ureg`, or the number itself for a bare number.
+
+    Raises
+    ------
+    InvalidInput
+        Unreadable or too long text; the wrong dimension (saying which one it
+        has, degrees included); an angle without angle units; units with two
+        readings (Hz for an angular quantity; an angle or percent for a
+        plain number), with both readings and how to say which; a complex,
+        masked or object value. The message shows the user's text once.
+    """
+    example = KINDS[kind][2]
     if isinstance(value, str):
+        text = value.strip()
+        _check_text(value, name, kind)
+        if not text:
+            raise InvalidInput(f"{name} is empty; give a number with units "
+                               f"(e.g. {name}={example})", name)
         try:
-            return _parse_text(value)
-        except Exception as exc:  # pint raises several unrelated types
+            q = _parse_text(text)
+        except Exception as exc:  # pint raises many unrelated types
+            raise InvalidInput(f"{name} = {show(value)} could not be read as a quantity "
+                               f"({_reason(exc)}). Example: {name}={example}", name) from None
+    elif isinstance(value, pint.Quantity):
+        q = value
+        if not isinstance(value, Q_):  # another registry: read its units by name
+            try:
+                q = Q_(value.magnitude, str(value.units))
+            except Exception as exc:
+                raise InvalidInput(f"{name} = {show(value)} comes from another pint "
+                                   f"registry whose units this one cannot read "
+                                   f"({_reason(exc)}); build it with solver.Q_", name) from None
+    elif isinstance(value, (bool, np.bool_)):
+        raise InvalidInput(f"{name} must be {KINDS[kind][3]}, not a truth value ({value!r}). "
+                           f"Example: {name}={example}", name)
+    else:
+        _check_number(value, name, kind)
+        return value
+    _check_magnitude(q.magnitude, name, kind, value)
+    _check_units(q, name, kind, value)
+    return q
+
+
+def _check_number(value, name, kind):
+    if isinstance(value, np.ma.MaskedArray):
+        raise InvalidInput(f"{name} is a masked array; pass the positions you want as a plain "
+                           f"array (masked values cannot be solved or left out silently)", name)
+    if isinstance(value, (list, tuple)) and not all(
+            isinstance(x, numbers.Real) and not isinstance(x, bool) for x in value):
+        raise InvalidInput(f"{name} must be one quantity like {KINDS[kind][2]} (got a "
+                           f"{type(value).__name__}: {show(value)})", name)
+    if isinstance(value, (numbers.Complex, np.ndarray, list, tuple)):
+        _check_magnitude(value, name, kind, value)
+        return
+    raise InvalidInput(f"{name} must be {KINDS[kind][3]} (got {type(value).__name__} "
+                       f"{show(value)}). Example: {name}={KINDS[kind][2]}", name)
+
+
+def _check_magnitude(mag, name, kind, value):
+    if isinstance(mag, np.ma.MaskedArray):
+        raise InvalidInput(f"{name} is a masked array; pass the positions you want as a plain "
+                           f"array (masked values cannot be solved or left out silently)", name)
+    if isinstance(mag, (complex, np.complexfloating)) or (
+            isinstance(mag, np.ndarray) and np.iscomplexobj(mag)):
+        raise InvalidInput(f"{name} = {show(value)} is complex; give a real value "
+                           f"(e.g. {name}={KINDS[kind][2]})", name)
+    if isinstance(mag, np.ndarray) and mag.dtype.kind not in "biuf":
+        raise InvalidInput(f"{name} must hold numbers (got an array of {mag.dtype})", name)
+
+
+def _check_units(q, name, kind, value):
+    dim, si, example, words = KINDS[kind]
+    units = q.units
+    factor = _factor(units, kind)
+    if factor is None:
+        if q.dimensionless and _is_angle_unit(units):
+            given = f"angle units ({units:~})"
+        elif q.dimensionless:
+            given = "no units" if not _unit_names(units) else f"no dimension ({units:~})"
+        else:
+            given = f"the dimension {q.dimensionality} of {units:~}"
+        raise InvalidInput(f"{name} must be {words} (got {show(value)}, which has {given}). "
+                           f"Example: {name}={example}", name)
+    names = _unit_names(units)
+    if kind == "angle" and not _is_angle_unit(units):
+        if not names and isinstance(value, str):
             raise InvalidInput(
-                f"{name} could not be read as a quantity ({value!r}: {exc}). "
-                f"Example: {name}={KINDS[kind][2]}", name) from None
-    return value
+                f"{name} needs angle units (a bare {show(value)} could be degrees or radians). "
+                f"Example: {name}={example}", name)
+        if names:
+            raise InvalidInput(f"{name} must be an angle (got {show(value)}, whose units "
+                               f"{units:~} are not angle units). Example: {name}={example}",
+                               name)
+    if kind in _ANGULAR and any(n.endswith("hertz") for n in names):
+        mag = q.magnitude
+        one = float(np.ravel(mag)[0]) if np.size(mag) else 0.0
+        as_rad = one * factor
+        per = {"angular_velocity": "s", "angular_acceleration": "s^2",
+               "angular_jerk": "s^3"}[kind]
+        raise InvalidInput(
+            f"{name} = {show(value)} has two readings: {as_rad:.6g} rad/{per} (a hertz taken "
+            f"as one radian per second) or {as_rad * 2 * math.pi:.6g} rad/{per} (a hertz taken "
+            f"as one revolution per second). Say which: write rad/{per}, or rev/{per}"
+            + (" (or rpm)" if kind == "angular_velocity" else ""), name)
+    if kind == "dimensionless" and names:
+        mag = q.magnitude
+        one = float(np.ravel(mag)[0]) if np.size(mag) else 0.0
+        what = "an angle unit" if _is_angle_unit(units) else f"the unit {units:~}"
+        raise InvalidInput(
+            f"{name} is a plain number, but {show(value)} has {what}, so it has two readings: "
+            f"{one:.6g} (the number written) or {one * factor:.6g} (converted by its unit). "
+            f"Write the number alone, e.g. {name}=-2", name)
+    if not names and kind not in ("dimensionless", "angle") and isinstance(value, str):
+        raise InvalidInput(f"{name} needs units. Example: {name}={example}", name)
 
 
 def to_si(value, name, kind, *, positive=False, nonzero=False):
@@ -71,9 +271,9 @@ def to_si(value, name, kind, *, positive=False, nonzero=False):
     Parameters
     ----------
     value : pint.Quantity, str, or number
-        A Quantity (scalar or wrapping an array) or a string pint parses.
-        Bare numbers are accepted only for ``kind='dimensionless'``, and a
-        bare 0 for any kind (zero needs no unit).
+        As :func:`parse_quantity` reads it. Bare numbers are accepted only
+        for ``kind='dimensionless'``, and a bare 0 for any kind (zero needs
+        no unit).
     name : str
         The parameter's name, used in error messages.
     kind : str
@@ -97,79 +297,89 @@ def _text_to_si(value, name, kind, positive, nonzero):
     return _to_si(value, name, kind, positive, nonzero)
 
 
+#: (unit items, kind) -> factor to SI, for the units of Quantities already read once
+#: by :func:`parse_quantity` (a Quantity's checks depend only on its units and kind)
+_ACCEPTED = {}
+
+
 def _to_si(value, name, kind, positive, nonzero):
     dim, si, example, words = KINDS[kind]
+    if type(value) is Q_:   # the common case: a Quantity of this registry
+        mag = value.magnitude
+        factor = _ACCEPTED.get((tuple(value.unit_items()), kind))
+        if factor is not None and type(mag) is float:
+            out = mag * factor if factor != 1.0 else mag
+            if math.isfinite(out) and (out > 0 or not positive and not (nonzero and out == 0)):
+                return out
+        elif factor is not None and type(mag) is np.ndarray and mag.dtype == np.float64 \
+                and mag.ndim and not positive and not nonzero:
+            with np.errstate(over="ignore"):
+                out = mag * factor if factor != 1.0 else mag
+            if np.isfinite(out).all():
+                return out
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
             raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
         return 0.0  # zero needs no unit
-    q = _parse(value, name, kind)
-    if isinstance(q, Q_):
-        units = q._units
-        factor = _factor(units, kind)
-        if factor is None:
-            given = ("no units" if q.dimensionless
-                     else f"the dimension {q.dimensionality} of {q.units:~}")
-            raise InvalidInput(
-                f"{name} must be {words} (got {value!s}, which has {given}). "
-                f"Example: {name}={example}", name)
-        if not units and kind not in ("dimensionless", "angle"):
-            raise InvalidInput(f"{name} needs units. Example: {name}={example}", name)
-        if not units and kind == "angle" and isinstance(value, str):
-            raise InvalidInput(
-                f"{name} needs angle units (a bare {value!r} could be degrees or radians). "
-                f"Example: {name}={example}", name)
-        mag = q._magnitude
+    q = parse_quantity(value, kind, name)
+    if isinstance(q, pint.Quantity):
+        mag = q.magnitude
+        factor = _factor(q.units, kind)
+        _ACCEPTED[(tuple(q.unit_items()), kind)] = factor
         out = mag * factor if factor != 1.0 else mag
-    elif isinstance(value, (numbers.Real, np.ndarray, list, tuple)) and kind == "dimensionless":
+        if isinstance(mag, (list, tuple)):
+            out = np.asarray(mag, dtype=float) * factor
+    elif kind == "dimensionless":
         out = value
-    elif isinstance(value, (numbers.Number, np.ndarray, list, tuple)):
-        raise InvalidInput(
-            f"{name} needs units (got the bare number {value!r}). Example: {name}={example}, "
-            f"or Q_({value!r}, '{si or 'dimensionless'}')", name)
     else:
-        raise InvalidInput(f"{name} must be {words} (got {type(value).__name__} {value!r}). "
-                           f"Example: {name}={example}", name)
-    if type(out) is float or type(out) is int:  # fast path for scalars
+        raise InvalidInput(
+            f"{name} needs units (got the bare number {show(value)}). Example: {name}={example}, "
+            f"or Q_({show(value)}, '{si or 'dimensionless'}')", name)
+    if type(out) is int:
+        try:
+            out = float(out)
+        except OverflowError:
+            raise InvalidInput(f"{name} = {show(value)} is too large for a float "
+                               f"(about 1.8e308 at most). Example: {name}={example}", name) from None
+    if type(out) is float:  # fast path for scalars
         if not math.isfinite(out):
-            raise InvalidInput(f"{name} must be finite (got {value!s}). Example: {name}={example}",
-                               name)
+            raise InvalidInput(_not_finite(name, value, example, out), name)
         if positive and not out > 0:
-            raise InvalidInput(f"{name} must be positive (got {value!s}): a link length is > 0. "
-                               f"Example: {name}={example}", name)
+            raise InvalidInput(f"{name} must be positive (got {show(value)}): a link length "
+                               f"is > 0. Example: {name}={example}", name)
         if nonzero and out == 0:
-            raise InvalidInput(f"{name} must not be zero (got {value!s})", name)
+            raise InvalidInput(f"{name} must not be zero (got {show(value)})", name)
         return float(out)
     try:
-        arr = np.asarray(out, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidInput(f"{name} must be numeric (got {value!r})", name) from None
+        with np.errstate(over="ignore", invalid="ignore"):
+            arr = np.asarray(out, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InvalidInput(f"{name} must be numeric (got {show(value)})", name) from None
     if not np.all(np.isfinite(arr)):
-        raise InvalidInput(f"{name} must be finite (got {value!s}). Example: {name}={example}", name)
+        raise InvalidInput(_not_finite(name, value, example, arr), name)
     if positive and not np.all(arr > 0):
-        raise InvalidInput(f"{name} must be positive (got {value!s}): a link length is > 0. "
+        raise InvalidInput(f"{name} must be positive (got {show(value)}): a link length is > 0. "
                            f"Example: {name}={example}", name)
     if nonzero and not np.all(arr != 0):
-        raise InvalidInput(f"{name} must not be zero (got {value!s})", name)
+        raise InvalidInput(f"{name} must not be zero (got {show(value)})", name)
     return float(arr) if arr.ndim == 0 else arr
 
 
-_SI_CONTAINERS = {kind: unit._units for kind, unit in SI_UNITS.items()}
-_PLAIN = (float, complex, np.ndarray, np.floating, np.complexfloating)
+def _not_finite(name, value, example, si):
+    given = value.magnitude if isinstance(value, pint.Quantity) else value
+    if isinstance(value, str):
+        try:
+            given = _parse_text(value.strip()).magnitude
+        except Exception:  # noqa: BLE001 - it was read before; only the wording depends on it
+            given = np.nan
+    with np.errstate(invalid="ignore"):
+        overflowed = bool(np.all(np.isfinite(np.asarray(given, dtype=float))))
+    if overflowed:
+        return (f"{name} = {show(value)} is too large: it overflows a float in SI units. "
+                f"Example: {name}={example}")
+    return f"{name} must be finite (got {show(value)}). Example: {name}={example}"
 
 
 def quantity(si_value, kind):
-    """Wrap an SI float or array (real or complex) as one Quantity.
-
-    For the magnitudes the solver produces (floats, complex, ndarrays) the
-    Quantity is assembled directly, as pint's own constructor would leave it
-    (the registry's Quantity class, the magnitude untouched, the SI unit's
-    container): a microsecond instead of twenty, which a sweep reading a
-    dozen outputs notices. Anything else goes through ``Q_``.
-    """
-    if isinstance(si_value, _PLAIN):
-        q = object.__new__(Q_)
-        q._magnitude = si_value
-        q._units = _SI_CONTAINERS[kind]
-        return q
-    return Q_(si_value, SI_UNITS[kind])
+    """Wrap an SI float or array (real or complex) as one Quantity of :data:`ureg`."""
+    return Q_(si_value, _SI_CONTAINERS[kind])

@@ -1,8 +1,10 @@
 """Accuracy of the closed forms against an independent 50-digit computation.
 
-The reference (tests/_mp_reference.py) finds each mechanism's position by
-plain geometry in mpmath and differentiates it numerically in time at several
-hundred bits, so it shares neither formulas nor round-off with the kernels.
+The reference (benchmarks/reference) solves each mechanism's vector loops in
+mpmath, from its position by plain geometry, and differentiates the loops at
+50 digits, so it shares neither formulas nor round-off with the kernels (and
+is itself checked against numerical differentiation of the geometric position,
+tests/test_benchmarks_reference.py).
 At well-conditioned positions every output (angles, omega, alpha, jerk, the
 sliders' d .. d_dddot and b .. b_dddot, points' R V A J, A_BA, the Coriolis
 term, link 5 of the fivebar, points anywhere on any link) must agree to 1e-12
@@ -24,7 +26,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-import _mp_reference as ref
+import _checks as check
+import benchmarks.reference as ref
 from conftest import (fivebars, fourbars, invertedslidercranks, points_on_links,
                       slidercranks)
 from solver.kernels import OK, fivebar, fourbar, invertedslidercrank, points, rotation, slidercrank
@@ -117,10 +120,10 @@ def reference(mech, case, circuit, extra=()):
 
 
 def assert_agree(got, want, rtol=RTOL, floor=FLOOR, expected=None):
-    """Every output of ``got`` agrees with ``want`` (see _mp_reference.errors)."""
+    """Every output of ``got`` agrees with ``want`` (see _checks.errors)."""
     missing = set(expected or ()) - set(got)
     assert not missing, f"kernel did not report {sorted(missing)}"
-    err = ref.errors(got, want, floor)
+    err = check.errors(got, want, floor)
     assert set(err) >= set(expected or ()), "reference lacks outputs"
     bad = {k: f"{e:.1e}" for k, e in err.items() if not e <= rtol}
     assert not bad, f"outputs off (relative error): {bad}"
@@ -224,8 +227,8 @@ def test_open_circuit_is_the_chapter_minus_sign():
         for circuit, sign in (("open", -1), ("crossed", 1)):
             t4 = 2 * math.atan((-B + sign * math.sqrt(B * B - 4 * A * C)) / (2 * A))
             want = ref.solve("fourbar", dict(a=a, b=b, c=c, d=d), t2, 1.0, circuit=circuit)
-            assert ref.angle_error(t4, want["theta4"]) < 1e-13
-            assert ref.angle_error(t4, fourbar.solve(a, b, c, d, t2, 1.0, circuit=circuit,
+            assert check.angle_error(t4, want["theta4"]) < 1e-13
+            assert check.angle_error(t4, fourbar.solve(a, b, c, d, t2, 1.0, circuit=circuit,
                                                      order=0).theta4) < 1e-13
 
 
@@ -428,7 +431,7 @@ def test_batch_matches_reference_cases():
                 case["id"]
             continue
         assert res["ok"], (case["id"], res)
-        why = ref.compare_to_branches(case["input"]["mechanism"], res, expect["ok"], 1e-8,
+        why = check.compare_to_branches(case["input"]["mechanism"], res, expect["ok"], 1e-8,
                                       case["input"].get("circuit"))
         assert not why, f"{case['id']}: {why}"
 

@@ -345,7 +345,8 @@ def plain_docstring(app, what, name, obj, options, lines):
             while end > j and not lines[end - 1].strip():
                 end -= 1
             block = lines[j:end]
-            if head.lstrip().startswith(("``", "*", "-")):   # a list or a definition term
+            if (head.lstrip().startswith(("``", "*", "-"))   # a list or a definition term
+                    or re.match(r"\d+[.)] ", head.lstrip())):
                 if end < len(lines) and lines[end].strip():
                     lines.insert(end, "")       # it must end with a blank line
                 i = end

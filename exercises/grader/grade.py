@@ -5,7 +5,8 @@ per-question CSV over the whole roster.
 1. Each submission is sanitized by nbgrader's own preprocessors (locked and test
    cells restored from the source notebook), turned into a plan, and run in its
    sandbox, ``jobs`` at a time (:mod:`.supervisor`).
-2. ``nbgrader autograde`` runs in this process; its execution step,
+2. ``nbgrader autograde`` runs in this process, on each submission as soon as
+   its run is done (while the next ones run); its execution step,
    :class:`~.nbgrader_step.JudgeSubmission`, takes each prepared run (or runs the
    plan itself if the notebook differs), judges it against the submitter's key
    and lets nbgrader score the test cells and write the gradebook.
@@ -164,35 +165,40 @@ def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=
         slots.put(slot)
     subs = {}
     t0 = time.monotonic()
+    spent = {"sandbox runs": 0.0, "judging and gradebook (nbgrader autograde)": 0.0}
     if show_progress:
         progress(0, len(chosen))
-    with ThreadPoolExecutor(max_workers=max(1, int(jobs))) as pool:
+    # each run is judged and scored as soon as it is done, while the next ones run
+    with ThreadPoolExecutor(max_workers=max(1, int(jobs))) as pool, \
+            warnings.catch_warnings():
+        warnings.simplefilter("ignore")
         futures = [pool.submit(prepare, config, course_dir, assignment, spec, s, command,
                                limits, slots) for s in chosen]
         for n, fut in enumerate(as_completed(futures), start=1):
             sub = fut.result()
             subs[sub.student] = sub
+            if sub.readable:
+                t1 = time.monotonic()
+                result = api.autograde(assignment, sub.student, force=True, create=True)
+                spent["judging and gradebook (nbgrader autograde)"] += time.monotonic() - t1
+                sub.graded = bool(result.get("success"))
+                if not sub.graded:
+                    sub.problem = _last_error(result.get("log", ""))
             if show_progress:
                 progress(n, len(chosen))
-    timings["sandbox runs"] = time.monotonic() - t0
-    t0 = time.monotonic()
-    for student in chosen:
-        sub = subs[student]
-        if not sub.readable:
-            continue
-        result = api.autograde(assignment, student, force=True, create=True)
-        sub.graded = bool(result.get("success"))
-        if not sub.graded:
-            sub.problem = _last_error(result.get("log", ""))
-    timings["judging and gradebook (nbgrader autograde)"] = time.monotonic() - t0
+    timings["sandbox runs and judging, overlapped"] = time.monotonic() - t0
+    timings["of which judging and gradebook (nbgrader autograde)"] = \
+        spent["judging and gradebook (nbgrader autograde)"]
     t0 = time.monotonic()
     for student in chosen:
         if not subs[student].graded:
             zero_and_explain(api, course_dir, assignment, student, subs[student].problem)
     graded = [s for s in chosen if subs[s].graded]
     if graded:
-        api.generate_feedback(assignment, student_id=graded[0] if len(graded) == 1 else None,
-                              force=True)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            api.generate_feedback(assignment,
+                                  student_id=graded[0] if len(graded) == 1 else None, force=True)
     timings["feedback"] = time.monotonic() - t0
     t0 = time.monotonic()
     path, rows = export_csv(course_dir, assignment, csv_path)

@@ -1,58 +1,24 @@
-"""The ``accelab`` command: one entry point, one module per subcommand.
+"""The solver library's subcommands of ``accelab``: ``solve``, ``draw``, ``figures``.
 
-Each subcommand module exposes ``register(subparsers)``, which adds its parser
-and sets ``func`` to the function that runs it (returning the exit status).
+:func:`register` adds them to the command that the application layer
+(:mod:`accelab.cli`) builds; each module here exposes its own ``register``
+and the function that runs it. Nothing here knows the layers above.
 """
 
-import argparse
-import importlib
-import sys
+from . import draw, figures, solve
 
-# (module, attribute holding register) in the order --help lists them.
-SUBCOMMANDS = [
-    "solver.cli.solve",
-    "solver.cli.draw",
-    "solver.cli.figures",
-    "solver.cli.bench",
-    "exercises.cli",
-]
-
-EPILOG = """examples:
-  accelab solve fourbar a="2 in" b="6 in" c="9 in" d="7 in" theta2="30 deg" omega2="10 rad/s" alpha2="-5 rad/s^2"
-  accelab solve --cases cases.json
-  accelab demo
-run 'accelab COMMAND --help' for each command's options and an example."""
+__all__ = ["register", "main"]
 
 
-def build_parser():
-    parser = argparse.ArgumentParser(
-        prog="accelab",
-        description="Acceleration analysis of planar linkages: solve, draw, benchmark, "
-                    "and generate and grade exercises.",
-        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in SUBCOMMANDS:
-        try:
-            module = importlib.import_module(name)
-        except ModuleNotFoundError as exc:
-            if exc.name and name.startswith(exc.name):  # a subcommand not built yet
-                continue
-            raise
-        module.register(sub)
-    return parser
+def register(subparsers):
+    """Add ``solve``, ``draw`` and ``figures`` to an argparse subparsers object."""
+    for command in (solve, draw, figures):
+        command.register(subparsers)
 
 
 def main(argv=None):
-    parser = build_parser()
-    args = parser.parse_args(argv)
-    if not getattr(args, "func", None):
-        parser.print_help()
-        return 2
-    try:
-        return args.func(args) or 0
-    except BrokenPipeError:  # e.g. piped into head
-        return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+    """The whole ``accelab`` command, for callers written before it moved to
+    :func:`accelab.cli.main` (the one import of the application layer from
+    the library, allowed as a compatibility entry point in tests/test_layers.py)."""
+    from accelab.cli import main as accelab_main
+    return accelab_main(argv)

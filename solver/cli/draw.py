@@ -6,6 +6,10 @@ import json
 import os
 import sys
 
+from ..errors import InvalidInput, error_object
+from ..results import finite_or_refused
+from .io import read_batch
+
 EPILOG = """example:
   echo '[{"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
           "theta2": "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2",
@@ -49,20 +53,20 @@ def register(sub):
 
 def draw_case(case, outdir, stem, formats=("png", "svg"), step=None):
     """Construct, draw and read one case; never raises (errors become error objects)."""
-    from ..batch import error_object
     try:
         from ..graphical import construct_case
         from ..graphical.draw import save
         con = construct_case(case)
         if step is not None and not 0 <= step <= len(con.steps):
-            from ..errors import InvalidInput
             raise InvalidInput(f"--step must be between 0 and {len(con.steps)} for this "
                                f"{con.mechanism} construction (got {step})", "step")
         out = {"ok": True}
         if con.circuit:
             out["circuit"] = con.circuit
         out.update(con.to_dict())
-        out["figures"] = save(con, outdir, f"{stem}-{con.mechanism}", formats, step)
+        out = finite_or_refused(out)
+        if out["ok"]:
+            out["figures"] = save(con, outdir, f"{stem}-{con.mechanism}", formats, step)
         return out
     except Exception as exc:  # noqa: BLE001 - one bad case never stops the batch
         return error_object(exc)
@@ -73,13 +77,9 @@ def run(args):
     if not args.cases:
         print("accelab draw: give a batch FILE (see accelab draw --help)", file=sys.stderr)
         return 2
-    try:
-        text = sys.stdin.read() if args.cases == "-" else open(args.cases).read()
-        cases = json.loads(text)
-        if not isinstance(cases, list):
-            raise ValueError("the file must hold a JSON list of case objects")
-    except (OSError, ValueError) as exc:
-        print(f"accelab draw: cannot use {args.cases}: {exc}", file=sys.stderr)
+    cases, problem = read_batch(args.cases)
+    if problem:
+        print(f"accelab draw: cannot use {args.cases}: {problem}", file=sys.stderr)
         return 2
     formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
     bad = [f for f in formats if f not in ("png", "svg", "pdf")]
@@ -102,7 +102,8 @@ def run(args):
     else:
         results = [draw_case(*w) for w in work]
     # a JSON list, one case per line (as readable as JSON lines, and one document)
-    sys.stdout.write("[\n" + ",\n".join(json.dumps(r) for r in results) + "\n]\n")
+    sys.stdout.write("[\n" + ",\n".join(json.dumps(r, allow_nan=False) for r in results)
+                     + "\n]\n")
     return 0 if all(r.get("ok") for r in results) else 1
 
 

@@ -24,6 +24,33 @@ __all__ = ["construct", "construct_case", "DRAWABLE", "Construction", "Step", "A
 #: batch mechanisms that have a construction
 DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")
 
+#: the range the constructions draw: lengths (non-zero) between these [m] and
+#: |omega2| up to MAX_RATE [rad/s], |alpha2| up to its square, keep every vector
+#: of a construction (lengths times rates squared, and their squares) within
+#: float64. The analytic solver (accelab solve) answers any scale.
+LENGTH_RANGE = (1e-50, 1e50)
+MAX_RATE = 1e50
+
+
+def _check_range(mechanism, params):
+    """InvalidInput for a parameter outside what the constructions draw."""
+    from ..errors import InvalidInput
+    from ..parameters import PARAMETERS
+    decl = PARAMETERS.get(mechanism)
+    lengths = [p.name for p in decl.geometry + decl.point if p.kind == "length"] if decl else []
+    lo, hi = LENGTH_RANGE
+    for name in lengths:
+        x = abs(params.get(name) or 0.0)
+        if x and not lo <= x <= hi:
+            raise InvalidInput(f"the graphical construction draws lengths between {lo:g} and "
+                               f"{hi:g} m, and {name} is {x:.3g} m; 'accelab solve' answers any "
+                               f"scale", name)
+    for name, limit in (("omega2", MAX_RATE), ("alpha2", MAX_RATE ** 2)):
+        if abs(params.get(name, 0.0)) > limit:
+            raise InvalidInput(f"the graphical construction draws |{name}| up to {limit:g} (SI), "
+                               f"and {name} is {params[name]:.3g}; 'accelab solve' answers it",
+                               name)
+
 
 def construct(mechanism, circuit=None, **params):
     """Build the construction of ``mechanism`` from SI parameters (the names
@@ -32,6 +59,7 @@ def construct(mechanism, circuit=None, **params):
     from ..errors import InvalidInput
     params = dict(params)
     params.pop("jerk2", None)
+    _check_range(mechanism, params)
     kw = {"circuit": circuit} if circuit else {}
     if mechanism == "fourbar":
         return fourbar.construct(**params, **kw)
@@ -52,20 +80,18 @@ def construct(mechanism, circuit=None, **params):
 
 
 def construct_case(case):
-    """Construction of one batch case (CONVENTIONS format, parsed by
-    :func:`solver.batch.read_case`). Raises the AccelabError family."""
-    from ..batch import read_case
+    """Construction of one batch case (CONVENTIONS format, read by
+    :func:`solver.cases.read_case`). Raises the AccelabError family."""
+    from ..cases import check_mechanism, read_case
     from ..errors import InvalidInput
-    if isinstance(case, dict) and case.get("mechanism") == "loops":
+    if check_mechanism(case) == "loops":
         raise InvalidInput("there is no graphical construction for 'loops'; draw one of "
                            f"{', '.join(DRAWABLE)} (use 'accelab solve' for it)", "mechanism")
-    ci = read_case(case)
-    params = dict(ci.params)
-    if ci.mechanism == "fourbar" and "p" in params:
-        params.setdefault("delta3", 0.0)
-    if ci.mechanism == "rotation":
-        params.pop("theta1", None)
-    con = construct(ci.mechanism, ci.circuit, **params)
+    c = read_case(case)
+    params = dict(c.params)
+    if "p" not in params:
+        params.pop("delta3", None)
+    con = construct(c.mechanism, c.circuit, **params)
     con.units = units_of_case(case)
     return con
 
@@ -75,7 +101,8 @@ _US_LENGTHS = ("in", "inch", "inches", "ft", "foot", "feet")
 
 
 def units_of_case(case):
-    """``"US"`` if the case gives its lengths in inches or feet, else ``"SI"``."""
+    """``"US"`` if the case gives its lengths in inches or feet, else ``"SI"``
+    (the drawings follow: in, in/s and in/s^2, or mm, m/s and m/s^2)."""
     for key in ("a", "b", "c", "d", "f", "p"):
         value = case.get(key) if isinstance(case, dict) else None
         if isinstance(value, str):

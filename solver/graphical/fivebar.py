@@ -17,6 +17,7 @@ import cmath
 import math
 
 from ..errors import NotAssemblable
+from . import crank
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_circles, intersect_lines
 
@@ -133,8 +134,7 @@ def construct(a, b, c, d, f, lam, phi, theta2, omega2, alpha2, theta1=0.0, circu
                   "Polygon: A_A^t, A_A^n, then A_BA^n and a line parallel to qq; from the pole "
                   "also A_C^t, A_C^n, then A_BC^n and a line parallel to pp; they meet at the "
                   "tip of A_B.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, A_A_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A}^{n}", A_A_t, A_A_n, "normal", "acceleration"),
+    st.arrows += crank.polygon(A_A_n, A_A_t) + [
                   Arrow(r"\mathbf{A}_{BA}^{n}", A_A, A_BA_n, "normal", "acceleration"),
                   Arrow(r"\mathbf{A}_{C}^{t}", 0j, A_C_t, "tangential", "acceleration"),
                   Arrow(r"\mathbf{A}_{C}^{n}", A_C_t, A_C_n, "normal", "acceleration"),

@@ -17,6 +17,7 @@ import math
 
 from ..errors import NotAssemblable
 
+from . import crank
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_circles, intersect_lines
 
@@ -94,10 +95,7 @@ def construct(a, b, c, d, theta2, omega2, alpha2, theta1=0.0, circuit="open",
         st.text += " P is fixed to link 3 at p from A, delta3 from AB."
 
     # -- velocity polygon: V_B = V_A + V_BA (eq. 6.5)
-    V_A = 1j * omega2 * A
-    st = con.step("V1", "velocity",
-                  "Velocity polygon: draw V_A = a omega2, perpendicular to O2A, from the pole.")
-    st.arrows.append(Arrow(r"\mathbf{V}_{A}", 0j, V_A, "velocity", "velocity"))
+    V_A, st = crank.velocity(con, A, omega2)
     st = con.step("V2", "velocity",
                   "V_B is perpendicular to O4B: line through the pole; V_BA is perpendicular "
                   "to AB: line through the tip of V_A.")
@@ -111,16 +109,7 @@ def construct(a, b, c, d, theta2, omega2, alpha2, theta1=0.0, circuit="open",
     v.update(omega3=omega3, omega4=omega4, R_A=A, R_B=B, V_A=V_A, V_B=V_B)
 
     # -- acceleration, Example 7-1 steps 1..8
-    A_A_n = -omega2 ** 2 * A
-    A_A_t = alpha2 * 1j * A
-    con.step("1", "acceleration",
-             f"A_A^n = a omega2^2 = {abs(A_A_n):.4g} m/s^2, A_A^t = a alpha2 = "
-             f"{a * alpha2:.4g} m/s^2 (eq. 7.6).")
-    st = con.step("2", "acceleration",
-                  "At A: A_A^n along AO2 toward O2, A_A^t perpendicular to O2A in the sense "
-                  "of alpha2.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{n}", A, A_A_n, "normal", "linkage"),
-                  Arrow(r"\mathbf{A}_{A}^{t}", A, A_A_t, "tangential", "linkage")]
+    A_A_n, A_A_t = crank.acceleration(con, A, a, omega2, alpha2)
     st = con.step("3", "acceleration",
                   "Construction line pp through B perpendicular to BO4: the direction of A_B^t.")
     st.lines.append(Line("pp", B, 1j * R_BO4, "linkage"))
@@ -148,8 +137,7 @@ def construct(a, b, c, d, theta2, omega2, alpha2, theta1=0.0, circuit="open",
                   "also the known part of the left side, A_B^n, and a line parallel to pp "
                   "through its tip. The lines cross at the tip of A_B: A_BA^t and A_B^t "
                   "close the two chains.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, A_A_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A}^{n}", A_A_t, A_A_n, "normal", "acceleration"),
+    st.arrows += crank.polygon(A_A_n, A_A_t) + [
                   Arrow(r"\mathbf{A}_{BA}^{n}", A_A, A_BA_n, "normal", "acceleration"),
                   Arrow(r"\mathbf{A}_{B}^{n}", 0j, A_B_n, "normal", "acceleration")]
     st.lines += [Line("qq", A_A + A_BA_n, 1j * R_BA, "acceleration"),

@@ -20,6 +20,7 @@ import math
 
 from ..errors import NotAssemblable
 
+from . import crank
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_line_circle, intersect_lines
 
@@ -97,11 +98,9 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
     theta4 = cmath.phase(e4 / e1) + theta1
     v.update(theta3=theta4 + gamma, theta4=theta4, b=b, R_A=A, R_B=B)
 
-    V_A = 1j * omega2 * A
-    st = con.step("V1", "velocity",
-                  "Velocity polygon: V_A = a omega2 perpendicular to O2A. V_A = V_A4 + V_slip: "
-                  "A4 is the point of link 4 under A.")
-    st.arrows.append(Arrow(r"\mathbf{V}_{A}", 0j, V_A, "velocity", "velocity"))
+    V_A, st = crank.velocity(con, A, omega2,
+                             "Velocity polygon: V_A = a omega2 perpendicular to O2A. V_A = V_A4 "
+                             "+ V_slip: A4 is the point of link 4 under A.")
     st = con.step("V2", "velocity",
                   "V_A4 is perpendicular to O4A: line through the pole; V_slip is along the "
                   "slide: line through the tip of V_A.")
@@ -117,16 +116,8 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
     V_B = 1j * omega4 * (B - O4)
     v.update(omega3=omega4, omega4=omega4, b_dot=b_dot, V_A=V_A, V_B=V_B)
 
-    A_A_n = -omega2 ** 2 * A
-    A_A_t = alpha2 * 1j * A
+    A_A_n, A_A_t = crank.acceleration(con, A, a, omega2, alpha2)
     A_A = A_A_n + A_A_t
-    con.step("1", "acceleration",
-             f"A_A^n = a omega2^2 = {abs(A_A_n):.4g} m/s^2, A_A^t = a alpha2 = "
-             f"{a * alpha2:.4g} m/s^2 (eq. 7.6).")
-    st = con.step("2", "acceleration",
-                  "At A: A_A^n toward O2, A_A^t perpendicular to O2A in the sense of alpha2.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{n}", A, A_A_n, "normal", "linkage"),
-                  Arrow(r"\mathbf{A}_{A}^{t}", A, A_A_t, "tangential", "linkage")]
     A_A4_n = -omega4 ** 2 * R_AO4
     st = con.step("3", "acceleration",
                   f"A4 turns about O4: A_A4^n = O4A omega4^2 = {abs(A_A4_n):.4g} m/s^2 toward "
@@ -154,8 +145,7 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
                   "Polygon: A_A (A_A^t, A_A^n) from the pole; from the pole also A_A4^n, then "
                   "A_coriolis; a line parallel to rr through its tip and one parallel to pp "
                   "through the tip of A_A meet: A_slip and A_A4^t close the polygon.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, A_A_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A}^{n}", A_A_t, A_A_n, "normal", "acceleration"),
+    st.arrows += crank.polygon(A_A_n, A_A_t) + [
                   Arrow(r"\mathbf{A}_{A_4}^{n}", 0j, A_A4_n, "normal", "acceleration"),
                   Arrow(r"\mathbf{A}_{cor}", A_A4_n, A_cor, "coriolis", "acceleration")]
     st.lines += [Line("rr", T, e3, "acceleration"), Line("pp", A_A, 1j * R_AO4, "acceleration")]

@@ -12,6 +12,7 @@ import math
 
 from ..errors import NotAssemblable
 
+from . import crank
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_line_circle, intersect_lines
 
@@ -72,9 +73,7 @@ def construct(a, b, theta2, omega2, alpha2, c=0.0, theta1=0.0, circuit="open"):
              f"the slide axis at B ({circuit} circuit).")
     v.update(theta3=cmath.phase((A - B) / e1) + theta1, d=d)
 
-    V_A = 1j * omega2 * A
-    st = con.step("V1", "velocity", "Velocity polygon: V_A = a omega2 perpendicular to O2A.")
-    st.arrows.append(Arrow(r"\mathbf{V}_{A}", 0j, V_A, "velocity", "velocity"))
+    V_A, st = crank.velocity(con, A, omega2)
     st = con.step("V2", "velocity",
                   "V_B is along the slide: line through the pole; V_BA is perpendicular to "
                   "AB: line through the tip of V_A.")
@@ -87,15 +86,7 @@ def construct(a, b, theta2, omega2, alpha2, c=0.0, theta1=0.0, circuit="open"):
                   Arrow(r"\mathbf{V}_{BA}", V_A, V_B - V_A, "velocity", "velocity")]
     v.update(omega3=omega3, d_dot=d_dot, R_A=A, R_B=B, V_A=V_A, V_B=V_B)
 
-    A_A_n = -omega2 ** 2 * A
-    A_A_t = alpha2 * 1j * A
-    con.step("1", "acceleration",
-             f"A_A^n = a omega2^2 = {abs(A_A_n):.4g} m/s^2, A_A^t = a alpha2 = "
-             f"{a * alpha2:.4g} m/s^2 (eq. 7.6).")
-    st = con.step("2", "acceleration",
-                  "At A: A_A^n toward O2, A_A^t perpendicular to O2A in the sense of alpha2.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{n}", A, A_A_n, "normal", "linkage"),
-                  Arrow(r"\mathbf{A}_{A}^{t}", A, A_A_t, "tangential", "linkage")]
+    A_A_n, A_A_t = crank.acceleration(con, A, a, omega2, alpha2)
     st = con.step("3", "acceleration",
                   "The slider translates: A_B lies along the slide axis, construction line pp.")
     st.lines.append(Line("pp", B, e1, "linkage"))
@@ -114,9 +105,8 @@ def construct(a, b, theta2, omega2, alpha2, c=0.0, theta1=0.0, circuit="open"):
     st = con.step("6", "acceleration",
                   "Polygon: A_A^t, A_A^n, A_BA^n tip to tail; a line parallel to qq through "
                   "the tip and one parallel to pp through the pole meet at the tip of A_B.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, A_A_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A}^{n}", A_A_t, A_A_n, "normal", "acceleration"),
-                  Arrow(r"\mathbf{A}_{BA}^{n}", A_A, A_BA_n, "normal", "acceleration")]
+    st.arrows += crank.polygon(A_A_n, A_A_t) + [
+        Arrow(r"\mathbf{A}_{BA}^{n}", A_A, A_BA_n, "normal", "acceleration")]
     st.lines += [Line("qq", T, 1j * R_BA, "acceleration"),
                  Line("pp", 0j, e1, "acceleration")]
     st.arrows += [Arrow(r"\mathbf{A}_{BA}^{t}", T, A_BA_t, "tangential", "acceleration"),

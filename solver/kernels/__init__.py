@@ -8,8 +8,7 @@ decides which positions are too near a limit to vouch for; :mod:`solver.kernels.
 point positions, velocities, accelerations and jerks only when asked.
 """
 
-from .common import (OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, SINGULAR_CONDITION, MAX_ROUNDOFF,
-                     Motion)
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR, STATUS_NAMES
+from .common import MAX_ROUNDOFF, Motion
 
-__all__ = ["OK", "NOT_ASSEMBLABLE", "SINGULAR", "STATUS_NAMES", "SINGULAR_CONDITION",
-           "MAX_ROUNDOFF", "Motion"]
+__all__ = ["OK", "NOT_ASSEMBLABLE", "SINGULAR", "STATUS_NAMES", "MAX_ROUNDOFF", "Motion"]

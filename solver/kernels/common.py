@@ -1,9 +1,10 @@
-"""What every closed-form kernel shares: status codes, the singularity
-threshold, the result container, and the derivative terms of a rotating vector.
+"""What every closed-form kernel shares: the refusal rule (round-off near a
+limit position), the result record (:class:`Motion`), solving long sweeps in
+pieces, and the derivative terms of a rotating vector.
 
 The derivative terms are the building blocks of every differentiated loop
 equation. For a vector of constant length L at angle theta(t) (Chapter 7,
-eqs. 7.2 and 7.33):
+eqs. 7.2 and 7.40):
 
     z    = L e^{j theta}
     z'   = L (j omega) e^{j theta}
@@ -19,19 +20,13 @@ and for a vector whose length b(t) also varies (a slider, eq. 7.19):
 Each helper returns the (x, y) components of such a term.
 """
 
+from dataclasses import dataclass, field, fields
 import functools
 import math
 
 import numpy as np
 
-OK, NOT_ASSEMBLABLE, SINGULAR = 0, 1, 2
-STATUS_NAMES = {OK: "ok", NOT_ASSEMBLABLE: "not_assemblable", SINGULAR: "singular"}
-
-#: A position whose condition measure (1 best, 0 at a toggle) falls below this
-#: is reported ``singular`` by the general vector-loop solver
-#: (:mod:`solver.vectorloops`), whose measure is that of its Jacobian. The
-#: closed-form kernels decide by :data:`MAX_ROUNDOFF` instead (see there).
-SINGULAR_CONDITION = 1e-4
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 
 EPS = float(np.finfo(float).eps)
 
@@ -43,7 +38,7 @@ EPS = float(np.finfo(float).eps)
 #: eps * span (span: the sum of the link lengths that enter it). The outputs
 #: grow like gap**(-1/2) (omega) .. gap**(-5/2) (jerk), so their relative
 #: error is about ROUNDOFF_GAIN * eps * span / gap: that is ``Motion.roundoff``.
-#: Measured against the 50-digit reference of the tests (tests/_mp_reference.py:
+#: Measured against the 50-digit reference (benchmarks/reference.py:
 #: about 850 random geometries, lengths spread over three decades, theta2 from
 #: 1e-3 to 1e-11 rad from a limit, all four mechanisms) the worst output's
 #: error was at most 1.1 (fourbar, fivebar, inverted slider-crank) and 2.5
@@ -100,6 +95,29 @@ def classify(gap, span):
     return status, roundoff
 
 
+def length_unit(*lengths):
+    """A power of two near the longest of ``lengths`` [m] (1.0 if none is
+    finite and non-zero).
+
+    The kernels divide every length by it before they compute and multiply
+    the lengths they return by it after: dividing by a power of two is exact,
+    and every formula is homogeneous in the lengths, so this changes no bit of
+    any answer whose intermediate values stay within float64, and makes the
+    geometry scale-free: a linkage scaled by any factor float64 can hold gives
+    the same angles (the squares and fourth powers of the lengths that enter
+    the formulas would otherwise overflow beyond about 1e77 m and underflow
+    below 1e-77 m).
+    """
+    m = 0.0
+    for x in lengths:
+        x = abs(x) if type(x) is float else float(np.max(np.abs(x)))
+        if x > m:
+            m = x
+    if not 0.0 < m < math.inf:
+        return 1.0
+    return math.ldexp(1.0, math.frexp(m)[1])
+
+
 def as_input(x):
     """A float for a scalar, else a float ndarray (the kernels keep a single
     position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""
@@ -123,34 +141,88 @@ def masked(bad, x):
     return np.where(bad, np.nan, x) if bad.any() else x
 
 
-def quiet(func):
-    """Run a kernel with numpy's invalid/divide warnings off: NaN marks the
-    positions that do not assemble, and the status says so."""
+def without_float_warnings(func):
+    """Run a kernel with numpy's floating-point warnings off: NaN marks the
+    positions that do not assemble, and the status says so; an overflow
+    (inputs too large for float64's range) is refused by the unit-aware layer
+    and the batch, which check the outputs they give."""
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
     return wrapper
 
 
+@dataclass(eq=False)
 class Motion:
-    """Kinematic state of a mechanism over one or many positions.
+    """Kinematic state of a mechanism over one or many positions (SI floats).
 
-    Attributes are float arrays in SI units (rad, rad/s, rad/s^2, rad/s^3, m,
-    m/s, ...), named as in the chapter (theta3, omega4, alpha3, jerk4, b_dot,
-    d_ddot, ...), plus ``status`` (int8: 0 ok, 1 not assemblable, 2 singular)
-    and ``condition`` (dimensionless; 1 is best, 0 is a toggle position).
+    Every kernel fills the fields its mechanism has and leaves the rest None:
+    link angles and their derivatives (``theta2`` .. ``jerk5`` [rad, rad/s,
+    rad/s^2, rad/s^3]), a slider's position and derivatives (``d`` ..
+    ``d_dddot``, ``b`` .. ``b_dddot`` [m, m/s, ...]), or a single point's
+    vectors (``R`` .. ``J``, complex). Always: ``status`` (int8 per position,
+    :mod:`solver.status`), ``condition`` (dimensionless; 1 best, 0 at a
+    toggle), ``roundoff`` (estimated relative round-off of the derivatives)
+    and ``order``, the highest derivative computed (0 position .. 3 jerk).
+    ``directions`` maps a link number ("2", "3" ...) to the cosine and sine
+    of its angle in the ground frame, which the kernel computed anyway (the
+    points of the links are built from them).
     """
 
-    def __init__(self, **fields):
-        self.__dict__.update(fields)
+    status: object
+    condition: object = 1.0
+    roundoff: object = 0.0
+    order: int = 3
+    circuit: str = None
+    directions: dict = field(default_factory=dict)
+    theta2: object = None
+    theta3: object = None
+    theta4: object = None
+    theta5: object = None
+    omega2: object = None
+    omega3: object = None
+    omega4: object = None
+    omega5: object = None
+    alpha2: object = None
+    alpha3: object = None
+    alpha4: object = None
+    alpha5: object = None
+    jerk2: object = None
+    jerk3: object = None
+    jerk4: object = None
+    jerk5: object = None
+    gamma: object = None
+    d: object = None
+    d_dot: object = None
+    d_ddot: object = None
+    d_dddot: object = None
+    b: object = None
+    b_dot: object = None
+    b_ddot: object = None
+    b_dddot: object = None
+    R: object = None
+    V: object = None
+    V_t: object = None
+    V_slip: object = None
+    A: object = None
+    A_t: object = None
+    A_n: object = None
+    A_coriolis: object = None
+    A_slip: object = None
+    J: object = None
 
-    def __repr__(self):
-        names = ", ".join(sorted(k for k in self.__dict__))
-        return f"Motion({names})"
+    def get(self, name):
+        """The field ``name``, or None when this mechanism has no such field
+        (or it was not computed at this order)."""
+        return getattr(self, name, None) if name in _MOTION_FIELDS else None
 
     def keys(self):
-        return self.__dict__.keys()
+        """The names of the fields that hold values."""
+        return [f for f in _MOTION_FIELDS if getattr(self, f) is not None]
+
+
+_MOTION_FIELDS = frozenset(f.name for f in fields(Motion))
 
 
 def rotate(x, y, cos1, sin1):
@@ -172,7 +244,7 @@ def acc_term(L, cos, sin, omega, alpha):
 
 
 def jerk_term(L, cos, sin, omega, alpha, jerk):
-    """Components of L (-3 omega alpha + j (jerk - omega^3)) e^{j theta} [L/s^3] (eq. 7.33)."""
+    """Components of L (-3 omega alpha + j (jerk - omega^3)) e^{j theta} [L/s^3] (eq. 7.40)."""
     re = -3.0 * L * omega * alpha
     im = L * (jerk - omega * omega * omega)
     return re * cos - im * sin, re * sin + im * cos
@@ -189,7 +261,7 @@ def triangle_angles(s, b, c, span):
     Heron form, which keeps the relative accuracy of the gap as the triangle
     flattens (a toggle position). A gap within round-off (2 eps span) below
     zero is taken as zero: the toggle position itself. Call it with numpy's
-    invalid/divide warnings off (see :func:`quiet`).
+    invalid/divide warnings off (see :func:`without_float_warnings`).
     """
     f2 = s + b - c
     f3 = s - b + c
@@ -208,14 +280,21 @@ def triangle_angles(s, b, c, span):
 
 
 #: positions per piece when a kernel solves a long sweep piece by piece
-#: (:func:`in_pieces`), and the sweeps it does so: the temporaries of a piece
-#: (64 kB each) stay in the cache and come from the heap without page faults.
-#: Measured on the 2-core AMD EPYC (16 MB L3) at 10^5 / 10^6 positions: the
-#: slider-crank, inverted slider-crank and fivebar 5-15 % / 12-20 % faster
-#: with pieces of 8192 (4096, 16384 and 32768 did worse); below some 5 x 10^4
-#: positions the pieces' fixed cost and copies made them slower.
+#: (:func:`in_pieces`; the fourbar's in-place path works in pieces of the
+#: same size): the temporaries of a piece (64 kB each) stay in the cache and
+#: come from the heap without page faults. Measured on the 2-core AMD EPYC
+#: (16 MB L3) at 10^5 positions: the slider-crank, inverted slider-crank and
+#: fivebar 5-15 % faster than whole arrays with pieces of 8192 (4096, 16384
+#: and 32768 did worse); the fourbar the same with 8192 and 16384.
 PIECE = 8192
+#: sweeps shorter than this are solved as whole arrays: below some 5 x 10^4
+#: positions the pieces' fixed cost and copies made them slower
 MIN_PIECEWISE = 65536
+
+
+def pieces(n):
+    """The slices of :data:`PIECE` positions that cover ``n`` positions."""
+    return [slice(start, min(start + PIECE, n)) for start in range(0, n, PIECE)]
 
 
 def piecewise(theta2, motion, others):
@@ -225,6 +304,11 @@ def piecewise(theta2, motion, others):
     angles) scalars."""
     if type(theta2) is float or theta2.size < max(MIN_PIECEWISE, PIECE + 1):
         return False
+    return same_shapes(theta2, motion, others)
+
+
+def same_shapes(theta2, motion, others):
+    """Each of ``motion`` a scalar or of theta2's shape, and ``others`` scalars."""
     shape = theta2.shape
     return (all(np.ndim(x) == 0 or np.shape(x) == shape for x in motion)
             and all(np.ndim(x) == 0 for x in others))
@@ -234,47 +318,41 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
     """A kernel's Motion over a long sweep, solved :data:`PIECE` positions at a time.
 
     ``solve(theta2, omega2, alpha2, jerk2)`` solves one piece (the same
-    vectorized formulas, so the same bits as one whole-array call). Arrays of
-    one value per position (and the link unit vectors ``_unit``) are gathered
-    into arrays of theta2's shape; everything else is taken from the first
-    piece, and the inputs are the caller's own.
+    vectorized formulas, so the same bits as one whole-array call). Fields of
+    one value per position (and the links' ``directions``) are gathered into
+    arrays of theta2's shape; everything else is taken from the first piece,
+    and the inputs are the caller's own.
     """
     shape = theta2.shape
     flat = theta2.reshape(-1)
     n = flat.size
     motion = [np.ravel(x) if np.ndim(x) else x for x in (omega2, alpha2, jerk2)]
     inputs = {"theta2": theta2, "omega2": omega2, "alpha2": alpha2, "jerk2": jerk2}
-    out = full = units = None
-    for start in range(0, n, PIECE):
-        sl = slice(start, start + PIECE)
+    out = full = directions = None
+    for sl in pieces(n):
         part = solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
-        fields = part.__dict__
         if out is None:
             m = min(n, PIECE)
 
             def per_position(v):
                 return isinstance(v, np.ndarray) and v.shape == (m,)
-            full = {k: np.empty(n, v.dtype) for k, v in fields.items()
-                    if k not in inputs and per_position(v)}
-            units = {k: [np.empty(n) if per_position(x) else x for x in v]
-                     for k, v in fields.get("_unit", {}).items()}
-            out = Motion(**{k: v for k, v in fields.items() if k not in full})
+            full = {k: np.empty(n, getattr(part, k).dtype) for k in part.keys()
+                    if k not in inputs and per_position(getattr(part, k))}
+            directions = {k: [np.empty(n) if per_position(x) else x for x in v]
+                          for k, v in part.directions.items()}
+            out = Motion(**{f: (None if f in full else getattr(part, f))
+                            for f in _MOTION_FIELDS})
         for k, v in full.items():
-            v[sl] = fields[k]
-        for k, v in units.items():
-            for whole, piece in zip(v, fields["_unit"][k]):
+            v[sl] = getattr(part, k)
+        for k, v in directions.items():
+            for whole, piece in zip(v, part.directions[k]):
                 if whole is not piece:
                     whole[sl] = piece
-    out.__dict__.update({k: v.reshape(shape) for k, v in full.items()})
-    if units:
-        out._unit = {k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
-                     for k, v in units.items()}
-    out.__dict__.update({k: v for k, v in inputs.items() if k in out.__dict__})
+    for k, v in full.items():
+        setattr(out, k, v.reshape(shape))
+    out.directions = {k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
+                      for k, v in directions.items()}
+    for k, v in inputs.items():
+        if getattr(out, k) is not None:
+            setattr(out, k, v)
     return out
-
-
-def as_arrays(*values):
-    """Broadcast inputs to float arrays of one shape; report whether all were scalars."""
-    scalar = all(np.ndim(v) == 0 for v in values)
-    arrays = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])
-    return scalar, arrays

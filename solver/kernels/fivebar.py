@@ -1,6 +1,6 @@
 """The geared fivebar, position to jerk, in closed form (unit-free).
 
-Vector loop (Chapter 7, eq. 7.28; CONVENTIONS):
+Vector loop (CONVENTIONS; its first and second derivatives are eqs. 6.32a and 7.28a):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta5} - f e^{j theta1} = 0
     theta5 = lam theta2 + phi   (angles measured from the ground line O2->O5)
 
@@ -8,8 +8,8 @@ The gears make link 5 a known function of the input, so the loop has two
 unknowns (theta3, theta4) like a fourbar whose "ground pivot" C = O5 + d e^{j theta5}
 moves. The triangle A-B-C with sides b, c, s = |C - A| gives the position;
 ``open`` puts B on the same side of the line A->C as the fourbar's open
-circuit puts B relative to A->O4 (the chapter's eq. 4.24 sign convention for
-the equivalent fourbar), ``crossed`` on the other side.
+circuit puts B relative to A->O4 (as for the equivalent fourbar), ``crossed``
+on the other side.
 
 Derivatives (eq. 7.29 for n = 2): differentiating n times,
 
@@ -23,13 +23,14 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, triangle_angles)
+from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
+                     piecewise, without_float_warnings, triangle_angles)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Geared fivebar kinematics from position to jerk.
@@ -59,6 +60,9 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
+    unit = length_unit(a, b, c, d, f)      # scale-free: lengths near 1, exactly
+    a, b, c, d, f = a / unit, b / unit, c / unit, d / unit, f / unit
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
         return in_pieces(lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit,
                                                order), theta2, omega2, alpha2, jerk2)
@@ -83,10 +87,10 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
-    out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
                  status=status, condition=condition, roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
     if order < 1:
         return out
     S = masked(status != OK, S)

@@ -1,6 +1,6 @@
 """The pin-jointed fourbar, position to jerk, in closed form (unit-free).
 
-Vector loop (Chapter 7, eq. 7.6; CONVENTIONS):
+Vector loop (eq. 4.5c, repeated in section 7.3; CONVENTIONS):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0
 
 Position. With A = a e^{j theta2} and O4 = d e^{j theta1}, the triangle
@@ -16,17 +16,18 @@ Derivatives. Differentiating the loop n times gives, at every order,
 
     K_n + j b x3 e^{j theta3} - j c x4 e^{j theta4} = 0
 
-where x3, x4 are omega (n=1), alpha (n=2, eq. 7.12) or jerk (n=3, eqs.
-7.34-7.39) of links 3 and 4 and K_n holds the already known terms. Dotting
+where x3, x4 are omega (n=1, eq. 6.14c), alpha (n=2, eq. 7.7) or jerk (n=3,
+eq. 7.34) of links 3 and 4 and K_n holds the already known terms. Dotting
 with e^{j theta4} and e^{j theta3} eliminates one unknown each:
 
     x3 = (K_n . e4) / (b sin(theta3 - theta4))
     x4 = (K_n . e3) / (c sin(theta3 - theta4))
 
-This is eq. 7.12 (and 6.18 for velocity) written without the chapter's
-auxiliary constants A..F; the same 2x2 matrix serves every order. With
+This is the solution of eqs. 7.11 (eq. 7.12) and of eqs. 7.35 (eqs. 7.36-7.39)
+written without the chapter's auxiliary constants; the same 2x2 matrix
+serves every order. With
 Lk (j x_k - w_k^2) e_k for the acceleration of a link (eq. 7.2) and
-Lk (-3 w_k x_k + j (j_k - w_k^3)) e_k for its jerk (eq. 7.33):
+Lk (-3 w_k x_k + j (j_k - w_k^3)) e_k for its jerk (eq. 7.40):
 
     K_1 = j a omega2 e2
     K_2 = a (j alpha2 - omega2^2) e2 - b omega3^2 e3 + c omega4^2 e4
@@ -43,30 +44,32 @@ where the terms of K_2 cancel; the jerk, which depends on both, then lost up
 to 2.5e-12 relative on 1500 of the tests' well-conditioned fourbars, against
 3.6e-13 this way.)
 
-Arrays are solved in blocks of :data:`BLOCK` positions with every operation
-writing into a few preallocated work arrays, so that they stay in the cache;
-a single position is solved by the same formulas in the same order, so a
-sweep gives, position by position, exactly the scalar answers.
+Two implementations of these formulas, the same operations in the same
+order: :func:`solve` (plain expressions, for one position in Python floats
+and for short arrays) and :func:`_solve_in_place` (sweeps of
+:data:`MIN_IN_PLACE` positions or more, in pieces of
+:data:`~solver.kernels.common.PIECE` positions with every operation writing
+into a few preallocated work arrays, so that they stay in the cache). The
+benchmark shows the second is needed (10^5 positions: 0.11 against 0.14
+us/position); tests/test_kernels_common.py checks that both give the same bits.
 """
 
 import threading
 
 import numpy as np
 
+from . import common
 from .common import (EPS, MAX_ROUNDOFF, OK, ROUNDOFF_GAIN, SINGULAR, Motion, as_input,
-                     classify, masked, quiet)
+                     classify, length_unit, masked, pieces, same_shapes,
+                     without_float_warnings)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
-#: positions per block of the array path. The block's 13 work arrays and its
-#: part of the 16 outputs (3.8 MB) stay in the 16 MB third-level cache of the
-#: 2-core AMD EPYC this was measured on; smaller blocks pay the fixed cost of
-#: some 110 ufunc calls more often (at 10^5 positions, against 16384: 2048
-#: +30 %, 4096 +12 %, 8192 +4 %, 32768 the same)
-BLOCK = 16384
 #: fewer positions than this are solved by plain whole-array expressions, whose
-#: fixed cost per call is lower (the same formulas: the same bits)
-MIN_BLOCKED = 2000
+#: fixed cost per call is lower (the same formulas: the same bits); from here
+#: on the in-place path, piece by piece (its 13 work arrays, kept between
+#: calls, and its part of the 16 outputs stay in the cache)
+MIN_IN_PLACE = 2000
 _KEPT = threading.local()
 
 
@@ -121,7 +124,7 @@ def _coefficients(a, omega2, alpha2, jerk2):
             a * (jerk2 - omega2 * omega2 * omega2))
 
 
-@quiet
+@without_float_warnings
 def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Fourbar kinematics from position to jerk.
@@ -130,7 +133,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     ----------
     a, b, c, d : float
         Crank, coupler, rocker and ground lengths [m] (any one length unit
-        works, outputs follow it).
+        works; only their ratios matter, at any scale float64 holds).
     theta2 : float or array
         Crank angle from the global x axis [rad].
     omega2, alpha2, jerk2 : float or array
@@ -154,15 +157,18 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
 
     Notes
     -----
-    Chapter 7, eqs. 7.12-7.13 (acceleration) and 7.34-7.39 (jerk), derived
+    Chapter 7, eqs. 7.7-7.12 (acceleration) and 7.34-7.39 (jerk), derived
     here as described in the module docstring.
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
-    if (type(theta2) is not float and theta2.size >= MIN_BLOCKED
-            and _blockable(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))):
-        return _solve_blocks(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,
-                             jerk2, float(theta1), sigma, circuit, order)
+    order = min(order, 3)
+    unit = length_unit(a, b, c, d)      # scale-free: lengths near 1, exactly
+    a, b, c, d = a / unit, b / unit, c / unit, d / unit
+    if (type(theta2) is not float and theta2.size >= MIN_IN_PLACE
+            and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))):
+        return _solve_in_place(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,
+                               jerk2, float(theta1), sigma, circuit, order)
     turned = np.ndim(theta1) > 0 or theta1 != 0.0
     t2 = theta2 - theta1 if turned else theta2
     cos2, sin2 = np.cos(t2), np.sin(t2)
@@ -173,10 +179,10 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     theta4 = np.arctan2(s4, c4)
     if turned:
         theta3, theta4 = theta3 + theta1, theta4 + theta1
-    out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, status=status,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
     cond = masked(status != OK, condition)
@@ -214,20 +220,12 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     return out
 
 
-def _blockable(theta2, motion, lengths):
-    """Whether the block path takes these inputs: theta2 an array, each of
-    omega2, alpha2, jerk2 a scalar or an array of theta2's shape, the
-    lengths and theta1 scalars (anything else broadcasts in :func:`solve`)."""
-    shape = theta2.shape
-    return (all(np.ndim(x) == 0 or np.shape(x) == shape for x in motion)
-            and all(np.ndim(x) == 0 for x in lengths))
-
-
-def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circuit, order):
-    """:func:`solve` over an array of positions, block by block, in place.
+def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circuit,
+                    order):
+    """:func:`solve` over an array of positions, piece by piece, in place.
 
     The same operations as :func:`solve` and :func:`position` in the same
-    order (so the same bits), each writing into a work array of the block.
+    order (so the same bits), each writing into a work array of the piece.
     """
     shape = theta2.shape
     t2all = theta2.reshape(-1)
@@ -252,10 +250,8 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
     m3b, m3c = -3.0 * b, -3.0 * c
     plus, minus = (np.add, np.subtract) if sigma > 0 else (np.subtract, np.add)
     work = _work()
-    for start in range(0, n, BLOCK):
-        stop = min(start + BLOCK, n)
-        sl = slice(start, stop)
-        rx, ry, ss, s, f2, f3, f4, gap, P, Q, inv3, inv4, t = work[:, :stop - start]
+    for sl in pieces(n):
+        rx, ry, ss, s, f2, f3, f4, gap, P, Q, inv3, inv4, t = work[:, :sl.stop - sl.start]
         cos2, sin2 = res["cos2"][sl], res["sin2"][sl]
         c3, s3, c4, s4 = res["c3"][sl], res["s3"][sl], res["c4"][sl], res["s4"][sl]
         condition, roundoff = res["condition"][sl], res["roundoff"][sl]
@@ -283,7 +279,7 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
         prod *= f3
         prod *= f4
         gmin = gap.min()
-        if not gmin > 0.0:   # a limit position, or past one, in this block
+        if not gmin > 0.0:   # a limit position, or past one, in this piece
             np.copyto(prod, 0.0, where=(gap <= 0.0) & (gap > -tol))
         area4 = np.sqrt(prod, out=prod)
         np.divide(area4, two_bc, out=condition)
@@ -380,10 +376,10 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
         np.multiply(p4, w4, out=t)
         j4 += t
     res = {k: v.reshape(shape) for k, v in res.items()}
-    out = Motion(theta2=theta2, theta3=res["theta3"], theta4=res["theta4"],
+    out = Motion(order=order, theta2=theta2, theta3=res["theta3"], theta4=res["theta4"],
                  status=status.reshape(shape), condition=res["condition"],
                  roundoff=res["roundoff"], circuit=circuit)
-    out._unit = {"2": (res["cos2"], res["sin2"]), "3": (res["c3"], res["s3"]),
+    out.directions = {"2": (res["cos2"], res["sin2"]), "3": (res["c3"], res["s3"]),
                  "4": (res["c4"], res["s4"])}
     if order >= 1:
         out.omega2, out.omega3, out.omega4 = omega2, res["omega3"], res["omega4"]
@@ -395,11 +391,11 @@ def _solve_blocks(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circ
 
 
 def _work():
-    """The block's 13 work arrays, kept from call to call (one set per thread):
-    a fresh 1.7 MB array would cost the page faults of new memory at every call."""
+    """The piece's 13 work arrays, kept from call to call (one set per thread):
+    fresh arrays would cost the page faults of new memory at every call."""
     work = getattr(_KEPT, "work", None)
-    if work is None or work.shape[1] != BLOCK:
-        work = _KEPT.work = np.empty((13, BLOCK))
+    if work is None or work.shape[1] != common.PIECE:
+        work = _KEPT.work = np.empty((13, common.PIECE))
     return work
 
 

@@ -1,6 +1,6 @@
 """The inverted slider-crank, position to jerk, with its Coriolis term (unit-free).
 
-Vector loop (Chapter 7, eq. 7.20; CONVENTIONS):
+Vector loop (CONVENTIONS; its second derivative is eq. 7.20):
     a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
     theta3 = theta4 + gamma,  b(t) the varying (signed) length from B to A.
 
@@ -30,13 +30,14 @@ perpendicular from the slide line to O4's circle: a limit position).
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, where)
+from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
+                     piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Inverted slider-crank kinematics from position to jerk.
@@ -64,10 +65,24 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
         (see :func:`solver.kernels.fourbar.solve`).
     """
+    unit = length_unit(a, c, d)      # scale-free: lengths near 1, exactly
+    out = _solve(a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit,
+                 order)
+    if unit != 1.0:
+        for name in ('b', 'b_dot', 'b_ddot', 'b_dddot'):
+            value = getattr(out, name)
+            if value is not None:
+                setattr(out, name, value * unit)
+    return out
+
+
+def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
+    """:func:`solve` with lengths of order 1 (see :func:`~.common.length_unit`)."""
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
-        return in_pieces(lambda *motion: solve(a, c, d, gamma, *motion, theta1, circuit, order),
+        return in_pieces(lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
@@ -93,10 +108,10 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
-    out = Motion(theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
                  condition=condition, roundoff=roundoff, circuit=circuit, gamma=gamma)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
     den = masked(status != OK, sigma * root)  # = b + c cos gamma

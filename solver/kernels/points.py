@@ -48,7 +48,7 @@ def relative_position(L, theta, offset=0.0, e=None):
 
 
 def relative_velocity(L, theta, omega, offset=0.0, e=None, je=None):
-    """V_XY = L omega j e^{j(theta + offset)} [m/s] (eq. 6.7)."""
+    """V_XY = L omega j e^{j(theta + offset)} [m/s] (eq. 6.3)."""
     e, je = _pair(theta, offset, e, je)
     return (L * omega) * je
 
@@ -66,6 +66,7 @@ def relative_acceleration(L, theta, omega, alpha, offset=0.0, e=None, je=None):
 
 
 def relative_jerk(L, theta, omega, alpha, jerk, offset=0.0, e=None, je=None):
-    """J_XY = L (-3 omega alpha + j (jerk - omega^3)) e^{j(theta + offset)} [m/s^3] (eq. 7.41)."""
+    """J_XY = L (-3 omega alpha + j (jerk - omega^3)) e^{j(theta + offset)} [m/s^3] (eq. 7.40;
+    J_X = J_Y + J_XY is eq. 7.41)."""
     e, je = _pair(theta, offset, e, je)
     return (-3.0 * L * omega * alpha) * e + (L * (jerk - omega * omega * omega)) * je

@@ -15,21 +15,29 @@ and the jerk of the same variable-length vector (see common.py).
 
 import numpy as np
 
-from .common import Motion
+from .common import OK, Motion, without_float_warnings
 
 
+@without_float_warnings
 def rotating_point(p, theta, omega, alpha=0.0, jerk=0.0):
     """Position to jerk of a point at radius ``p`` [m] on a link turning about
     the origin. Returns complex arrays R [m], V [m/s], A_t, A_n, A [m/s^2],
-    J [m/s^3] in a Motion."""
+    J [m/s^3] in a Motion (every position ``OK``: a point in rotation has no
+    limit position)."""
     e = np.exp(1j * np.asarray(theta, dtype=float))
     je = 1j * e
     A_t = p * alpha * je
     A_n = -p * omega * omega * e
-    return Motion(R=p * e, V=p * omega * je, A_t=A_t, A_n=A_n, A=A_t + A_n,
-                  J=p * (-3.0 * omega * alpha + 1j * (jerk - omega ** 3)) * e)
+    return Motion(_all_ok(A_t), R=p * e, V=p * omega * je, A_t=A_t, A_n=A_n, A=A_t + A_n,
+                  J=p * (-3.0 * omega * alpha + 1j * (jerk - omega * omega * omega)) * e)
 
 
+def _all_ok(x):
+    shape = np.shape(x)
+    return np.zeros(shape, dtype=np.int8) if shape else np.int8(OK)
+
+
+@without_float_warnings
 def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.0):
     """A block sliding along a rotating link (Figure 7-7, eq. 7.19).
 
@@ -56,6 +64,6 @@ def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.
     w2 = omega * omega
     J = (p_dddot - 3.0 * p_dot * w2 - 3.0 * p * omega * alpha
          + 1j * (3.0 * p_ddot * omega + 3.0 * p_dot * alpha + p * jerk - p * w2 * omega)) * e
-    return Motion(R=p * e, V_t=p * omega * je, V_slip=p_dot * e, V=(p_dot + 1j * p * omega) * e,
-                  A_t=A_t, A_n=A_n, A_coriolis=A_coriolis, A_slip=A_slip,
-                  A=A_t + A_n + A_coriolis + A_slip, J=J)
+    return Motion(_all_ok(A_t), R=p * e, V_t=p * omega * je, V_slip=p_dot * e,
+                  V=(p_dot + 1j * p * omega) * e, A_t=A_t, A_n=A_n, A_coriolis=A_coriolis,
+                  A_slip=A_slip, A=A_t + A_n + A_coriolis + A_slip, J=J)

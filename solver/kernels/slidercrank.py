@@ -1,6 +1,6 @@
 """The offset slider-crank, position to jerk, in closed form (unit-free).
 
-Vector loop (Chapter 7, eq. 7.14; CONVENTIONS):
+Vector loop (eq. 4.14b, repeated in section 7.3; CONVENTIONS):
     a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
     theta4 = theta1 + 90 deg, c = slider offset (signed), d = slider position.
 
@@ -13,20 +13,21 @@ Derivatives: differentiating n times,
     K_n - j b x3 e^{j theta3} - d^(n) = 0
 
 with K_n the known terms. The imaginary part gives
-x3 = Im(K_n) / (b cos theta3) (omega3, alpha3, jerk3; eq. 7.16b for n = 2),
-the real part d^(n) = Re(K_n) + b x3 sin theta3 (eq. 7.16c). The position is
+x3 = Im(K_n) / (b cos theta3) (omega3, alpha3, jerk3; eqs. 7.16c-d for n = 2),
+the real part d^(n) = Re(K_n) + b x3 sin theta3 (eqs. 7.16b, e). The position is
 singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 """
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term, masked,
-                     piecewise, quiet, where)
+from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
+                     length_unit, masked,
+                     piecewise, without_float_warnings, where)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
 
-@quiet
+@without_float_warnings
 def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
           circuit="open", order=3):
     """Slider-crank kinematics from position to jerk.
@@ -54,10 +55,24 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
         ``roundoff`` (see :func:`solver.kernels.fourbar.solve`).
     """
+    unit = length_unit(a, b, c)      # scale-free: lengths near 1, exactly
+    out = _solve(a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit,
+                 order)
+    if unit != 1.0:
+        for name in ('d', 'd_dot', 'd_ddot', 'd_dddot'):
+            value = getattr(out, name)
+            if value is not None:
+                setattr(out, name, value * unit)
+    return out
+
+
+def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
+    """:func:`solve` with lengths of order 1 (see :func:`~.common.length_unit`)."""
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
+    order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
-        return in_pieces(lambda *motion: solve(a, b, c, *motion, theta1, circuit, order),
+        return in_pieces(lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
                          theta2, omega2, alpha2, jerk2)
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
@@ -73,10 +88,10 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
-    out = Motion(theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
+    out = Motion(order=order, theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
                  roundoff=roundoff, circuit=circuit)
     # cos and sin of each link in the ground frame, for the points of the links
-    out._unit = {"2": (cos2, sin2), "3": (c3, s3)}
+    out.directions = {"2": (cos2, sin2), "3": (c3, s3)}
     if order < 1:
         return out
     bc3 = b * masked(status != OK, c3)

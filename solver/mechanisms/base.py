@@ -1,15 +1,19 @@
-"""What every unit-aware mechanism shares: argument conversion, the lazy
-result object, and the errors raised for scalar inputs."""
+"""What every unit-aware mechanism shares: its parameters read once (from
+the declarations of :mod:`solver.parameters`), the lazy result object, and
+the errors raised for one position."""
 
+import cmath
 import functools
 import math
 
 import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
-from ..kernels import OK, NOT_ASSEMBLABLE, SINGULAR, STATUS_NAMES, MAX_ROUNDOFF
+from ..kernels import MAX_ROUNDOFF, NOT_ASSEMBLABLE, OK
 from ..kernels import points
-from ..units import Q_, quantity, to_si
+from ..parameters import MOTION, PARAMETERS
+from ..results import Kinematics
+from ..units import SI_UNITS, parse_quantity, quantity, show, to_si
 
 #: name prefixes -> kind of quantity, longest prefix first
 _KINDS = [("theta", "angle"), ("gamma", "angle"), ("delta", "angle"), ("phi", "angle"),
@@ -18,10 +22,9 @@ _KINDS = [("theta", "angle"), ("gamma", "angle"), ("delta", "angle"), ("phi", "a
           ("A_", "acceleration"), ("J_", "jerk")]
 _SLIDER_KINDS = {"": "length", "_dot": "velocity", "_ddot": "acceleration",
                  "_dddot": "jerk"}
-_DERIV = {0: "theta", 1: "omega", 2: "alpha", 3: "jerk"}
 _VECTOR_ORDER = {"R": 0, "V": 1, "A": 2, "J": 3}
-
-
+_ANGLE_ORDER = {"theta": 0, "omega": 1, "alpha": 2, "jerk": 3}
+_SUFFIX_ORDER = {"_dddot": 3, "_ddot": 2, "_dot": 1}
 _EXACT = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk", "p": "length",
           "lam": "dimensionless", "condition": "dimensionless"}
 
@@ -35,16 +38,44 @@ def kind_of(name):
         if name.startswith(prefix):
             return kind
     base, _, _ = name.partition("_")
-    if len(base) == 1:  # d, d_dot, b_ddot, p ...
+    if len(base) == 1 and name[len(base):] in _SLIDER_KINDS:  # d, d_dot, b_ddot, p ...
         return _SLIDER_KINDS[name[len(base):]]
     raise AttributeError(name)
+
+
+@functools.lru_cache(maxsize=1024)
+def order_of(name):
+    """The derivative an output needs (0 position .. 3 jerk)."""
+    for prefix, n in _ANGLE_ORDER.items():
+        if name.startswith(prefix):
+            return n
+    head = name.partition("_")[0]
+    if head in _VECTOR_ORDER:
+        return _VECTOR_ORDER[head]
+    for suffix, n in _SUFFIX_ORDER.items():
+        if name.endswith(suffix):
+            return n
+    return 0
+
+
+def check_order(order):
+    """``order`` as an int 0..3 (position .. jerk), or InvalidInput."""
+    if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or \
+            not 0 <= order <= 3:
+        raise InvalidInput(f"order must be 0 (position), 1 (velocity), 2 (acceleration) or 3 "
+                           f"(jerk), got {show(order)}", "order")
+    return int(order)
+
+
+#: (mechanism class, order) -> the kernel outputs of that order (see Result._verify)
+_TOPS = {}
 
 
 def _fmt_angle(rad):
     return f"{math.degrees(float(rad)):.6g} deg"
 
 
-class Result:
+class Result(Kinematics):
     """Kinematics of a mechanism at one or many input positions.
 
     Attributes are computed when first read and returned as Quantities:
@@ -53,7 +84,8 @@ class Result:
     Quantities: ``R_X``, ``V_X``, ``A_X``, ``J_X`` for each point X of the
     mechanism, ``A_XY = A_X - A_Y`` (eq. 7.4) for any two points, and the
     tangential and normal components ``A_X_t``, ``A_X_n`` of a point about
-    its own base (``A_BA_t`` for B about A on link 3 ...).
+    its own base (``A_BA_t`` for B about A on link 3 ...). ``result[name]``
+    is the same (:mod:`solver.results`).
 
     ``valid`` is True where the mechanism assembles and is not singular,
     ``status`` names each position's state, ``condition`` is the kernel's
@@ -67,25 +99,79 @@ class Result:
         self._scalar = scalar
         self._inputs = inputs
         self._cache = {}
+        self._status = motion.status
+        self._condition = motion.condition
+        self._verified = ()
 
     # --- unit-free access -------------------------------------------------
     def si(self, name):
-        """The SI value (float, complex, or array) of an output, unit-free."""
+        """The SI value (float, complex, or array) of an output, unit-free.
+
+        Raises InvalidInput where it overflows float64 at a position the
+        result vouches for (inputs too large for float64's range): never an
+        answer of Infinity or NaN.
+        """
         cache = self._cache
         if name in cache:
             return cache[name]
-        value = self._compute(name)
-        if self._scalar and isinstance(value, np.ndarray):
-            value = value[()]
+        value = self._motion.get(name)
+        if value is not None and name in self._verified:    # checked when solved
+            cache[name] = value
+            return value
+        if value is None:
+            with np.errstate(all="ignore"):
+                value = self._compute(name)
+            if self._scalar and isinstance(value, np.ndarray):
+                value = value[()]
+        self._check_finite(name, value)
         cache[name] = value
         return value
 
+    def _verify(self, names):
+        """Check the kernel's highest-order outputs ``names`` and mark every
+        output the kernel solved as checked: a value that overflows spreads
+        to every higher derivative (each is computed from the ones below), so
+        finite highest orders vouch for the lower ones."""
+        motion = self._motion
+        if self._scalar:
+            for name in names:
+                if not math.isfinite(getattr(motion, name)):
+                    self._check_finite(name, getattr(motion, name))
+        else:
+            for name in names:
+                self._check_finite(name, getattr(motion, name))
+        self._verified = self._mech._solved
+
+    def _check_finite(self, name, value):
+        if self._scalar:
+            if cmath.isfinite(value) or self._motion.status != OK:
+                return
+        else:
+            finite = np.isfinite(value)
+            if finite.all() or not (~finite & (self._motion.status == OK)).any():
+                return
+        raise InvalidInput(
+            f"{name} overflows float64: the inputs are too large for its range (up to about "
+            f"1.8e308 in SI units). Give smaller speeds or lengths (the angles do not depend "
+            f"on the scale of the lengths), or solve to a lower order", name)
+
+    def kind(self, name):
+        return kind_of(name)
+
+    def has_point(self, name):
+        """Whether this result has the point ``name`` (A, B, P ...)."""
+        return name in self._pts
+
     def _compute(self, name):
-        motion = self._motion.__dict__
-        if name in motion:
-            return motion[name]
+        value = self._motion.get(name)
+        if value is not None:
+            return value
         if name in self._inputs:
             return self._inputs[name]
+        if order_of(name) > self._motion.order and self._names(name):
+            raise AttributeError(
+                f"{name} was not computed: this result was solved with order="
+                f"{self._motion.order}; solve with order={order_of(name)} or more to read it")
         value = self._mech._extra(self, name)
         if value is not None:
             return value
@@ -112,6 +198,14 @@ class Result:
         raise AttributeError(f"{type(self._mech).__name__} results have no output {name!r}; "
                              f"available: {', '.join(self.outputs())}")
 
+    def _names(self, name):
+        """Whether ``name`` is an output this mechanism would give at some order."""
+        everything = self._mech.outputs(self)
+        if name in everything:
+            return True
+        head, _, rest = name.partition("_")
+        return head in _VECTOR_ORDER and bool(rest)
+
     def _point(self, x, order):
         key = ("RVAJ"[order], x)
         if key in self._cache:
@@ -134,47 +228,46 @@ class Result:
         key = ("e", theta_key, offset)
         pair = self._cache.get(key)
         if pair is None:
-            m = self._motion.__dict__
-            known = m.get("_unit", {}).get(theta_key[len("theta"):])
+            known = self._motion.directions.get(theta_key[len("theta"):])
             if known is not None and offset == 0.0:
                 e = points.from_components(*known)
-                theta1 = getattr(self._mech, "_theta1", 0.0)
+                theta1 = self._mech._si.get("theta1", 0.0)
                 if theta1:
                     e = e * complex(math.cos(theta1), math.sin(theta1))
             else:
-                e = points.unit(m[theta_key], offset)
+                e = points.unit(self._motion.get(theta_key), offset)
             pair = self._cache[key] = (e, 1j * e)
         return pair
 
     def _relative(self, length, theta_key, offset, order):
         n = theta_key[len("theta"):]
-        m = self._motion.__dict__
-        theta = m[theta_key]
+        m = self._motion
+        theta = m.get(theta_key)
         e, je = self._unit(theta_key, offset)
         if order == 0:
             return points.relative_position(length, theta, offset, e)
         if order == 1:
-            return points.relative_velocity(length, theta, m["omega" + n], offset, e, je)
+            return points.relative_velocity(length, theta, m.get("omega" + n), offset, e, je)
         if order == 2:
-            return points.relative_acceleration(length, theta, m["omega" + n], m["alpha" + n],
-                                                offset, e, je)
-        return points.relative_jerk(length, theta, m["omega" + n], m["alpha" + n], m["jerk" + n],
-                                    offset, e, je)
+            return points.relative_acceleration(length, theta, m.get("omega" + n),
+                                                m.get("alpha" + n), offset, e, je)
+        return points.relative_jerk(length, theta, m.get("omega" + n), m.get("alpha" + n),
+                                    m.get("jerk" + n), offset, e, je)
 
     def _component(self, x, y, comp):
         rel = self._mech._relative.get(x + y)
         if rel is not None:
             length, theta_key, offset = rel
-            length = getattr(self._mech, "_" + length)
+            length = self._mech._si[length]
         else:
             base, length, theta_key, offset = self._pts[x]
             if base != y or callable(length):
                 raise AttributeError(f"no tangential/normal split of A_{x}{y}: {x} and {y} "
                                      f"are not two points of one rigid link")
         n = theta_key[len("theta"):]
-        m = self._motion.__dict__
-        t, nn = points.relative_acceleration_parts(length, m[theta_key], m["omega" + n],
-                                                  m["alpha" + n], offset,
+        m = self._motion
+        t, nn = points.relative_acceleration_parts(length, m.get(theta_key), m.get("omega" + n),
+                                                  m.get("alpha" + n), offset,
                                                   *self._unit(theta_key, offset))
         return t if comp == "t" else nn
 
@@ -197,20 +290,27 @@ class Result:
         Returns
         -------
         PointMotion
-            R, V, A, J (complex Quantities) and A_t, A_n, the tangential and
-            normal parts of the acceleration difference from ``base``. Use it
-            for a link's centre of gravity before F = m A.
+            R, V, A, J (complex Quantities, up to the order solved) and A_t,
+            A_n, the tangential and normal parts of the acceleration
+            difference from ``base``. Use it for a link's centre of gravity
+            before F = m A.
         """
         bases = self._mech._link_bases
-        if link not in bases:
-            raise InvalidInput(f"{type(self._mech).__name__} has no rotating link {link}; "
+        if isinstance(link, bool) or link not in bases:
+            raise InvalidInput(f"{type(self._mech).__name__} has no rotating link {show(link)}; "
                                f"use one of {sorted(bases)}", "link")
+        pins = sorted(set(self._pts) | set(self._mech._pivots))
+        if base is not None and (not isinstance(base, str) or base not in pins):
+            raise InvalidInput(f"base must be a pin of the {type(self._mech).__name__}: one of "
+                               f"{', '.join(pins)} (got {show(base)})", "base")
         base = base or bases[link]
         p_si = to_si(p, "p", "length")
         delta_si = to_si(delta, "delta", "angle")
+        if not (np.ndim(p_si) == 0 and np.ndim(delta_si) == 0):
+            raise InvalidInput("p and delta of a point must be single values", "p")
         key = f"theta{link}"
         parts = {}
-        for order, letter in enumerate("RVAJ"):
+        for order, letter in enumerate("RVAJ"[:self._motion.order + 1]):
             rel = self._relative(p_si, key, delta_si, order)
             if base in self._pts:
                 rel = rel + self._point(base, order)
@@ -218,9 +318,10 @@ class Result:
                 rel = rel + self._mech._pivot(base)
             parts[letter] = rel
         n = str(link)
-        m = self._motion.__dict__
-        parts["A_t"], parts["A_n"] = points.relative_acceleration_parts(
-            p_si, m[key], m["omega" + n], m["alpha" + n], delta_si)
+        m = self._motion
+        if m.order >= 2:
+            parts["A_t"], parts["A_n"] = points.relative_acceleration_parts(
+                p_si, m.get(key), m.get("omega" + n), m.get("alpha" + n), delta_si)
         if self._scalar:
             parts = {k: v[()] if isinstance(v, np.ndarray) else v for k, v in parts.items()}
         return PointMotion(parts)
@@ -236,53 +337,21 @@ class Result:
         return sorted(set(super().__dir__()) | set(self.outputs()))
 
     def outputs(self):
-        """Names of the outputs this result reports (as the batch contract lists them)."""
-        return list(self._mech.outputs(self))
-
-    @property
-    def valid(self):
-        """True where the result can be vouched for (bool or bool array)."""
-        v = self._motion.status == OK
-        return bool(v) if self._scalar else v
-
-    @property
-    def status(self):
-        """'ok', 'not_assemblable' or 'singular' (a str, or an array of str)."""
-        s = np.vectorize(STATUS_NAMES.get, otypes=[object])(self._motion.status)
-        return str(s[()]) if self._scalar else s
-
-    @property
-    def condition(self):
-        """Dimensionless condition measure (1 best, 0 at a toggle): the sine
-        of the transmission angle, or its analogue for each mechanism."""
-        c = self._motion.condition
-        return float(c) if self._scalar else c
+        """Names of the outputs this result reports (as the batch contract
+        lists them), those of its order."""
+        return [n for n in self._mech.outputs(self) if order_of(n) <= self._motion.order]
 
     @property
     def roundoff(self):
         """Estimated relative round-off of the derivative outputs (float or
         array); above :data:`~solver.kernels.MAX_ROUNDOFF` a position is
         ``singular``. Zero for mechanisms without limit positions."""
-        r = getattr(self._motion, "roundoff", 0.0)
+        r = self._motion.roundoff
         return float(r) if self._scalar else np.broadcast_to(r, np.shape(self._motion.status))
 
     @property
     def circuit(self):
         return self._motion.circuit
-
-    def to_dict(self, names=None):
-        """SI values as plain Python (vectors as [x, y]; arrays as lists)."""
-        out = {}
-        for name in names or self.outputs():
-            v = self.si(name)
-            if np.iscomplexobj(v):
-                v = np.stack([np.real(v), np.imag(v)], axis=-1).tolist()
-            elif isinstance(v, np.ndarray):
-                v = v.tolist()
-            else:
-                v = float(v)
-            out[name] = v
-        return out
 
     def __repr__(self):
         mech = type(self._mech).__name__
@@ -312,78 +381,140 @@ class PointMotion:
     def __getattr__(self, name):
         if name.startswith("_") or name not in self._KINDS:
             raise AttributeError(name)
+        if name not in self._si:
+            raise AttributeError(f"{name} of the point was not computed at the order this "
+                                 f"result was solved with; solve with a higher order")
         return quantity(self._si[name], self._KINDS[name])
 
     def __repr__(self):
-        return "<PointMotion " + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._KINDS) + ">"
+        return "<PointMotion " + ", ".join(f"{k}={getattr(self, k):.5g~P}"
+                                            for k in self._KINDS if k in self._si) + ">"
 
 
 class Mechanism:
     """Base of the unit-aware mechanisms.
 
-    Subclasses declare ``_geometry`` (name -> (kind, positive, default)),
-    ``_points`` (point -> (base point or pivot key, length attribute, theta
-    key, offset)), ``_outputs`` and implement ``_kernel``.
+    Subclasses name their declaration in :data:`solver.parameters.PARAMETERS`
+    (``name``) and declare ``_points`` (point -> (base point or pivot key,
+    length parameter, theta key, offset)), ``_pivots`` (fixed pins),
+    ``_outputs`` and a ``solve``/``solve_si`` pair: ``solve`` takes
+    Quantities or text and converts them to SI once; ``solve_si`` takes SI
+    floats (what the batch format has already read) and calls the kernel.
     """
 
-    _geometry = {}
+    name = None
     _points = {}
-    _relative = {}  # "XY" -> (length attribute, theta key, offset) for X, Y on one link
+    _relative = {}  # "XY" -> (length parameter, theta key, offset) for X, Y on one link
     _link_bases = {}  # link number -> the pin a point on it is measured from
+    _pivots = ("O2",)
     _outputs = ()
-    _circuits = ("open", "crossed")
-    _link_words = ""
+    #: the real outputs a kernel computes (links' angles and derivatives, sliders)
+    _solved = frozenset([f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
+                        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")])
 
     def __init__(self, **geometry):
-        unknown = set(geometry) - set(self._geometry)
+        decl = self.declaration()
+        names = [p.name for p in decl.geometry]
+        unknown = sorted(set(geometry) - set(names))
         if unknown:
             raise InvalidInput(f"{type(self).__name__} has no parameter "
-                               f"{', '.join(sorted(unknown))}; it takes "
-                               f"{', '.join(self._geometry)}", sorted(unknown)[0])
-        self._given = {}
-        for name, (kind, positive, default) in self._geometry.items():
-            value = geometry.get(name, default)
-            if value is None:
-                raise InvalidInput(f"{type(self).__name__} needs {name} "
-                                   f"(e.g. {name}='2 in')", name)
-            self._given[name] = value
-            setattr(self, "_" + name, to_si(value, name, kind, positive=positive))
+                               f"{', '.join(map(str, unknown))}; it takes {', '.join(names)}",
+                               unknown[0])
+        si, units = {}, {}
+        for p in decl.geometry:
+            if p.name not in geometry:
+                if p.required:
+                    raise InvalidInput(f"{type(self).__name__} needs {p.name} ({p.meaning}), "
+                                       f"e.g. {p.name}='2 in'", p.name)
+                si[p.name] = p.default
+                continue
+            q = parse_quantity(geometry[p.name], p.kind, p.name)
+            value = to_si(q, p.name, p.kind, positive=p.positive)
+            if np.ndim(value):
+                raise InvalidInput(
+                    f"{p.name} must be a single value: a {type(self).__name__} object is one "
+                    f"linkage (got an array). Sweep theta2 (an array) on one linkage, or make "
+                    f"one object per geometry", p.name)
+            si[p.name] = float(value)
+            units[p.name] = getattr(q, "units", None)
+        self._init(si, geometry, units)
+
+    @classmethod
+    def declaration(cls):
+        """This mechanism's parameters (:class:`solver.parameters.Declaration`)."""
+        return PARAMETERS[cls.name]
+
+    @classmethod
+    def from_si(cls, geometry, given=None, units=None):
+        """The mechanism from geometry already read into SI floats (the batch
+        format's path: no second conversion). ``given`` holds the user's own
+        values and ``units`` the units they were written in, for messages."""
+        obj = cls.__new__(cls)
+        si = {p.name: float(geometry[p.name]) if p.name in geometry else p.default
+              for p in cls.declaration().geometry}
+        missing = [p.name for p in cls.declaration().geometry if si[p.name] is None]
+        if missing:
+            raise InvalidInput(f"{cls.__name__} needs {missing[0]}", missing[0])
+        obj._init(si, {k: v for k, v in (given or {}).items() if k in si}, units or {})
+        return obj
+
+    def _init(self, si, given, units):
+        self._si = si
+        for name, value in si.items():
+            setattr(self, "_" + name, value)
+        self._given = given
+        self._units = units
         self._points = {k: self._resolve_point(v) for k, v in type(self)._points.items()}
         self._validate()
 
     def _resolve_point(self, spec):
         base, length, theta_key, offset = spec
         if isinstance(length, str):
-            length = getattr(self, "_" + length)
+            length = self._si[length]
         return base, length, theta_key, offset
 
     def _validate(self):
         """Hook for geometry checks beyond positivity."""
 
     def __getattr__(self, name):
-        if name.startswith("_") or name not in type(self)._geometry:
+        if name.startswith("_"):
             raise AttributeError(name)
-        return quantity(getattr(self, "_" + name), self._geometry[name][0])
+        for p in type(self).declaration().geometry:
+            if p.name == name:
+                return quantity(self._si[name], p.kind)
+        raise AttributeError(name)
 
     def __repr__(self):
-        args = ", ".join(f"{k}={v!r}" for k, v in self._given.items())
+        args = ", ".join(f"{k}={self._given_text(k)!r}" for k in self._si)
         return f"{type(self).__name__}({args})"
+
+    def _length_unit(self):
+        """The unit of the first length the user gave (None: metres)."""
+        for p in self.declaration().geometry:
+            if p.kind == "length" and self._units.get(p.name) is not None:
+                return self._units[p.name]
+        return None
 
     def _show(self, si_length):
         """A length [m] written in the unit the user gave the geometry in."""
-        for name, (kind, _, _) in self._geometry.items():
-            if kind == "length" and name in self._given:
-                given = self._given[name]
-                try:
-                    unit = (Q_(given) if isinstance(given, str) else given).units
-                    return f"{Q_(si_length, 'm').to(unit).magnitude:.6g} {unit:~}"
-                except Exception:
-                    break
-        return f"{si_length:.6g} m"
+        unit = self._length_unit()
+        if unit is None:
+            return f"{si_length:.6g} m"
+        value = quantity(float(si_length), "length").m_as(unit)
+        return f"{value:.6g} {unit:~}"
 
     def _given_text(self, name):
-        given = self._given[name]
-        return given if isinstance(given, str) else f"{given:~}"
+        """A parameter as the user wrote it (text, or a Quantity in its units)."""
+        given = self._given.get(name)
+        if isinstance(given, str):
+            return given.strip()
+        if given is not None and hasattr(given, "units"):
+            return f"{given:~}"
+        kind = next(p.kind for p in self.declaration().geometry if p.name == name)
+        if kind == "length":
+            return self._show(self._si[name])
+        unit = SI_UNITS[kind]
+        return f"{self._si[name]:.6g} {unit:~}".strip()
 
     def _pivot(self, key):
         """Position of a fixed pivot (complex, SI)."""
@@ -397,13 +528,50 @@ class Mechanism:
         return self._outputs
 
     # --- solving ----------------------------------------------------------
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit=None, order=3):
+        """Solve at one or many input angles.
+
+        Parameters
+        ----------
+        theta2 : Quantity or str, scalar or array
+            Input (crank) angle from the global x axis [angle].
+        omega2, alpha2, jerk2 : Quantity or str
+            Its angular velocity [1/time], acceleration [1/time^2] and jerk
+            [1/time^3]; scalars or arrays broadcast with theta2 (alpha2 and
+            jerk2 default to 0).
+        circuit : {'open', 'crossed'}, optional
+            The assembly (see the class); 'open' by default.
+        order : int
+            Highest derivative to compute (0 position .. 3 jerk).
+
+        Returns
+        -------
+        Result
+            Lazy Quantities (see the class for the outputs).
+
+        Raises
+        ------
+        NotAssemblable, Singular
+            For a scalar theta2 that cannot be assembled or is at a limit
+            position. Arrays get a ``valid`` mask instead.
+        """
+        circuit = self._circuit(circuit)
+        return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
+
+    def solve_si(self, motion, circuit=None, order=3):
+        """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
+        and jerk2 [rad, rad/s, rad/s^2, rad/s^3] (what the batch format has
+        already read)."""
+        circuit = self._circuit(circuit)
+        return self._finish(self._kernel(motion, circuit, check_order(order)), motion)
+
+    def _kernel(self, motion, circuit, order):
+        """The unit-free kernel's Motion for SI ``motion``."""
+        raise NotImplementedError
+
     def _motion_inputs(self, theta2, omega2, alpha2, jerk2):
-        inputs = {
-            "theta2": to_si(theta2, "theta2", "angle"),
-            "omega2": to_si(omega2, "omega2", "angular_velocity"),
-            "alpha2": to_si(alpha2, "alpha2", "angular_acceleration"),
-            "jerk2": to_si(jerk2, "jerk2", "angular_jerk"),
-        }
+        inputs = {p.name: to_si(v, p.name, p.kind)
+                  for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))}
         arrays = {k: v.shape for k, v in inputs.items() if type(v) is not float}
         if not arrays or len(arrays) == 1 and "theta2" in arrays:  # the common cases
             return inputs
@@ -419,16 +587,31 @@ class Mechanism:
             inputs["theta2"] = np.broadcast_to(inputs["theta2"], shape)
         return inputs
 
-    def _check_circuit(self, circuit):
-        if circuit not in self._circuits:
-            raise InvalidInput(f"circuit must be one of {', '.join(map(repr, self._circuits))} "
-                               f"(got {circuit!r})", "circuit")
+    def _circuit(self, circuit):
+        """The circuit asked for (None: the first, 'open'), or InvalidInput."""
+        circuits = self.declaration().circuits
+        if circuit is None:
+            return circuits[0] if circuits else None
+        if not isinstance(circuit, str) or circuit not in circuits:
+            if not circuits:
+                raise InvalidInput(f"a {type(self).__name__} has one assembly: give no circuit "
+                                   f"(got {show(circuit)})", "circuit")
+            raise InvalidInput(f"circuit must be one of {', '.join(map(repr, circuits))} "
+                               f"(got {show(circuit)})", "circuit")
+        return circuit
 
     def _finish(self, motion, inputs, raise_errors=True, pts=None):
         scalar = np.ndim(motion.status) == 0
         result = Result(self, motion, scalar, inputs, pts)
         if scalar and raise_errors and motion.status != OK:
             self._raise(motion, inputs)
+        # an overflow of the kernel's outputs is refused now, not when read
+        key = (type(self), motion.order)
+        top = _TOPS.get(key)
+        if top is None:
+            top = _TOPS[key] = sorted(n for n in self._solved if order_of(n) == motion.order
+                                      and getattr(motion, n) is not None)
+        result._verify(top)
         return result
 
     def _raise(self, motion, inputs):
@@ -436,7 +619,7 @@ class Mechanism:
         if motion.status == NOT_ASSEMBLABLE:
             raise NotAssemblable(f"{type(self).__name__} cannot be assembled at {where}: "
                                  f"{self._not_assemblable_reason(motion, inputs)}")
-        roundoff = float(getattr(motion, "roundoff", np.inf))
+        roundoff = float(motion.roundoff) if motion.roundoff is not None else math.inf
         cost = ("exactly there" if not np.isfinite(roundoff) else
                 f"round-off would spoil about {roundoff:.1e} of each output, more than the "
                 f"{MAX_ROUNDOFF:g} the solver vouches for")

@@ -27,10 +27,8 @@ class GearedFiveBar(Mechanism):
     circuit puts B relative to A->O4; ``crossed`` the mirror assembly.
     """
 
-    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
-                 "c": ("length", True, None), "d": ("length", True, None),
-                 "f": ("length", True, None), "lam": ("dimensionless", False, None),
-                 "phi": ("angle", False, None), "theta1": ("angle", False, "0 deg")}
+    name = "fivebar"
+    _pivots = ("O2", "O5")
     _points = {"A": ("O2", "a", "theta2", 0.0), "C": ("O5", "d", "theta5", 0.0),
                "B": ("A", "b", "theta3", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
@@ -42,15 +40,10 @@ class GearedFiveBar(Mechanism):
     def _pivot(self, key):
         return self._f * np.exp(1j * self._theta1) if key == "O5" else 0j
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many input angles (see :meth:`FourBar.solve` for the arguments)."""
-        self._check_circuit(circuit)
-        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        motion = kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam,
-                              self._phi, inputs["theta2"], inputs["omega2"], inputs["alpha2"],
-                              inputs["jerk2"], self._theta1, circuit, order)
-        return self._finish(motion, inputs)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam, self._phi,
+                            motion["theta2"], motion["omega2"], motion["alpha2"],
+                            motion["jerk2"], self._theta1, circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         return (f"the couplers b = {self._given_text('b')} and c = {self._given_text('c')} "

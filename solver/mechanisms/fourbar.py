@@ -2,10 +2,9 @@
 
 import numpy as np
 
-from ..errors import InvalidInput
 from ..kernels import fourbar as kernel
 from ..units import to_si
-from .base import Mechanism
+from .base import Mechanism, check_order
 
 
 class FourBar(Mechanism):
@@ -25,9 +24,8 @@ class FourBar(Mechanism):
     >>> r.alpha3, r.A_B
     """
 
-    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
-                 "c": ("length", True, None), "d": ("length", True, None),
-                 "theta1": ("angle", False, "0 deg")}
+    name = "fourbar"
+    _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
@@ -68,26 +66,35 @@ class FourBar(Mechanism):
             For a scalar theta2 that cannot be assembled or is at a toggle
             position. Arrays get a ``valid`` mask instead.
         """
-        self._check_circuit(circuit)
+        circuit = self._circuit(circuit)
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
+        point = {}
+        if p is not None:
+            point = {"p": to_si(p, "p", "length", positive=True),
+                     "delta3": to_si(delta3, "delta3", "angle")}
+        return self.solve_si(inputs, circuit, order, **point)
+
+    def solve_si(self, motion, circuit="open", order=3, p=None, delta3=0.0):
+        """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
+        and jerk2 [rad, rad/s, ...], ``p`` [m] and ``delta3`` [rad] the coupler point."""
+        circuit = self._circuit(circuit)
+        order = check_order(order)
+        inputs = dict(motion)
         pts = None
         if p is not None:
-            p_si = to_si(p, "p", "length", positive=True)
-            delta_si = to_si(delta3, "delta3", "angle")
-            inputs.update(p=p_si, delta3=delta_si)
-            pts = dict(self._points, P=("A", p_si, "theta3", delta_si))
-        motion = kernel.solve(self._a, self._b, self._c, self._d, inputs["theta2"],
-                              inputs["omega2"], inputs["alpha2"], inputs["jerk2"],
-                              self._theta1, circuit, order)
-        return self._finish(motion, inputs, pts=pts)
+            inputs.update(p=p, delta3=delta3)
+            pts = dict(self._points, P=("A", p, "theta3", delta3))
+        m = kernel.solve(self._a, self._b, self._c, self._d, inputs["theta2"],
+                         inputs["omega2"], inputs["alpha2"], inputs["jerk2"],
+                         self._theta1, circuit, order)
+        return self._finish(m, inputs, pts=pts)
 
     def outputs(self, result):
-        return self._outputs + (self._point_outputs if "P" in result._pts else ())
+        return self._outputs + (self._point_outputs if result.has_point("P") else ())
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._d - self._a * np.cos(t), self._a * np.sin(t)))
-        b, c = self._b, self._c
         need = (f"the coupler (b = {self._given_text('b')}) and rocker (c = "
                 f"{self._given_text('c')}) must span the distance |A - O4| = {self._show(s)}, "
                 f"which needs |b - c| <= |A - O4| <= b + c")

@@ -34,9 +34,8 @@ class InvertedSliderCrank(Mechanism):
     so that A_A = A_A4 + A_slip + A_coriolis.
     """
 
-    _geometry = {"a": ("length", True, None), "c": ("length", False, None),
-                 "d": ("length", True, None), "gamma": ("angle", False, None),
-                 "theta1": ("angle", False, "0 deg")}
+    name = "invertedslidercrank"
+    _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
     _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
@@ -45,34 +44,29 @@ class InvertedSliderCrank(Mechanism):
 
     def _validate(self):
         if self._c < 0:
-            raise InvalidInput(f"c must be >= 0 (got {self._given['c']}): it is the length "
+            raise InvalidInput(f"c must be >= 0 (got {self._given_text('c')}): it is the length "
                                f"O4B; turn the slide line with gamma instead", "c")
 
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
 
     def _extra(self, result, name):
-        m = result._motion
         if name in ("A_coriolis", "A_slip", "V_slip", "A_A4"):
-            e3 = np.exp(1j * m.theta3)
+            si = result.si
+            e3 = np.exp(1j * si("theta3"))
             if name == "A_coriolis":
-                return 2j * m.b_dot * m.omega3 * e3
+                return 2j * si("b_dot") * si("omega3") * e3
             if name == "A_slip":
-                return m.b_ddot * e3
+                return si("b_ddot") * e3
             if name == "V_slip":
-                return m.b_dot * e3
-            return result.si("A_B") + m.b * (1j * m.alpha3 - m.omega3 ** 2) * e3
+                return si("b_dot") * e3
+            return si("A_B") + si("b") * (1j * si("alpha3") - si("omega3") * si("omega3")) * e3
         return None
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many crank angles (see :meth:`FourBar.solve` for the arguments)."""
-        self._check_circuit(circuit)
-        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        motion = kernel.solve(self._a, self._c, self._d, self._gamma, inputs["theta2"],
-                              inputs["omega2"], inputs["alpha2"], inputs["jerk2"], self._theta1,
-                              circuit, order)
-        return self._finish(motion, inputs)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._c, self._d, self._gamma, motion["theta2"],
+                            motion["omega2"], motion["alpha2"], motion["jerk2"], self._theta1,
+                            circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1

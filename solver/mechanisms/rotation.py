@@ -1,8 +1,5 @@
 """A point on a rotating link and a block on a slotted link, with Quantities."""
 
-import numpy as np
-
-from ..kernels import Motion, OK
 from ..kernels import rotation as kernel
 from ..units import to_si
 from .base import Mechanism
@@ -20,18 +17,12 @@ class RotatingPoint(Mechanism):
     ...                               alpha2="15 rad/s^2").A_n
     """
 
-    _geometry = {"p": ("length", True, None)}
+    name = "rotation"
     _outputs = ("R", "V", "A", "A_t", "A_n", "J")
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0):
-        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        m = kernel.rotating_point(self._p, inputs["theta2"], inputs["omega2"],
-                                  inputs["alpha2"], inputs["jerk2"])
-        shape = np.shape(m.A)
-        m.status = np.zeros(shape, dtype=np.int8) if shape else np.int8(OK)
-        m.condition = np.ones(shape) if shape else 1.0
-        m.circuit = None
-        return self._finish(m, inputs)
+    def _kernel(self, motion, circuit, order):
+        return kernel.rotating_point(self._p, motion["theta2"], motion["omega2"],
+                                     motion["alpha2"], motion["jerk2"])
 
 
 class SlottedLink(Mechanism):
@@ -48,20 +39,21 @@ class SlottedLink(Mechanism):
     >>> r.A_coriolis
     """
 
-    _geometry = {}
+    name = "slotted"
     _outputs = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
 
     def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0,
               jerk2=0):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        inputs.update(p=to_si(p, "p", "length"), p_dot=to_si(p_dot, "p_dot", "velocity"),
-                      p_ddot=to_si(p_ddot, "p_ddot", "acceleration"),
-                      p_dddot=to_si(p_dddot, "p_dddot", "jerk"))
-        m = kernel.slotted_link(inputs["theta2"], inputs["omega2"], inputs["alpha2"],
-                                inputs["p"], inputs["p_dot"], inputs["p_ddot"],
-                                inputs["p_dddot"], inputs["jerk2"])
-        shape = np.shape(m.A)
-        m.status = np.zeros(shape, dtype=np.int8) if shape else np.int8(OK)
-        m.condition = np.ones(shape) if shape else 1.0
-        m.circuit = None
+        values = {"p": p, "p_dot": p_dot, "p_ddot": p_ddot, "p_dddot": p_dddot}
+        block = {q.name: to_si(values[q.name], q.name, q.kind)
+                 for q in self.declaration().point}
+        return self.solve_si(inputs, **block)
+
+    def solve_si(self, motion, p, p_dot, p_ddot=0.0, p_dddot=0.0):
+        """:meth:`solve` from SI floats: the motion [rad, rad/s, ...] and the
+        block's distance and rates [m, m/s, m/s^2, m/s^3]."""
+        inputs = dict(motion, p=p, p_dot=p_dot, p_ddot=p_ddot, p_dddot=p_dddot)
+        m = kernel.slotted_link(motion["theta2"], motion["omega2"], motion["alpha2"],
+                                p, p_dot, p_ddot, p_dddot, motion["jerk2"])
         return self._finish(m, inputs)

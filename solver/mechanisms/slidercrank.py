@@ -18,45 +18,36 @@ class SliderCrank(Mechanism):
     theta1 : Quantity or str, optional
         Angle of the slide axis [angle], default 0.
 
+    ``circuit='open'`` (of :meth:`solve`) has the slider on the +x side of the
+    crank pin (cos theta3 < 0 in the slide-axis frame). Outputs: theta3,
+    omega3, alpha3, jerk3, d [length] (the slider's position along the axis),
+    d_dot, d_ddot, d_dddot, A_A, A_B, A_BA, J_A, J_B ...
+
     Examples
     --------
     >>> sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")
     >>> sc.solve(theta2="60 deg", omega2="3000 rpm").d_ddot
     """
 
-    _geometry = {"a": ("length", True, None), "b": ("length", True, None),
-                 "c": ("length", False, "0 m"), "theta1": ("angle", False, "0 deg")}
+    name = "slidercrank"
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
     _outputs = ("theta3", "omega3", "alpha3", "jerk3", "d", "d_dot", "d_ddot", "d_dddot",
                 "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
 
-    def __init__(self, **geometry):
-        super().__init__(**geometry)
+    def _init(self, si, given, units):
+        super()._init(si, given, units)
         self._points = {"A": ("O2", self._a, "theta2", 0.0), "B": (None, self._slider, None, 0.0)}
 
     def _slider(self, result, order):
         axis = np.exp(1j * self._theta1)
-        m = result._motion
         if order == 0:
-            return (m.d + 1j * self._c) * axis
-        return (m.d_dot, m.d_ddot, m.d_dddot)[order - 1] * axis
+            return (result.si("d") + 1j * self._c) * axis
+        return result.si(("d_dot", "d_ddot", "d_dddot")[order - 1]) * axis
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              order=3):
-        """Solve at one or many crank angles.
-
-        ``circuit='open'`` has the slider on the +x side of the crank pin
-        (cos theta3 < 0 in the slide-axis frame). See :meth:`FourBar.solve`
-        for the meaning of the other arguments and of the returned Result
-        (theta3, omega3, alpha3, jerk3, d [length], d_dot, d_ddot, d_dddot,
-        A_A, A_B, A_BA, J_A, J_B ...).
-        """
-        self._check_circuit(circuit)
-        inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        motion = kernel.solve(self._a, self._b, self._c, inputs["theta2"], inputs["omega2"],
-                              inputs["alpha2"], inputs["jerk2"], self._theta1, circuit, order)
-        return self._finish(motion, inputs)
+    def _kernel(self, motion, circuit, order):
+        return kernel.solve(self._a, self._b, self._c, motion["theta2"], motion["omega2"],
+                            motion["alpha2"], motion["jerk2"], self._theta1, circuit, order)
 
     def _not_assemblable_reason(self, motion, inputs):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c

@@ -4,7 +4,7 @@ A linkage is a set of named vectors and the loops they close (CONVENTIONS,
 "Any linkage as vector loops"). Position comes from Newton-Raphson with the
 analytic Jacobian; velocity, acceleration and jerk from linear solves with
 the same Jacobian. :class:`VectorLoopLinkage` is the unit-aware class;
-:func:`solve_case` is the batch contract's ``loops`` mechanism.
+:func:`solve_loops_case` is the batch contract's ``loops`` mechanism.
 
 A sweep over an array of theta2 follows one assembly by continuation on a
 coarse subset of the positions and solves the positions in between in one
@@ -22,7 +22,8 @@ single-threaded), :mod:`.sweep` and :mod:`.walks` (continuation),
 :mod:`.solve`, :mod:`.linkage` and :mod:`.batch` (the entry points).
 """
 
-from .batch import solve_case
-from .linkage import VectorLoopLinkage
+from .batch import solve_loops_case
+from .linkage import LoopResult, VectorLoopLinkage
+from .newton import SINGULAR_CONDITION
 
-__all__ = ["VectorLoopLinkage", "solve_case"]
+__all__ = ["VectorLoopLinkage", "LoopResult", "solve_loops_case", "SINGULAR_CONDITION"]

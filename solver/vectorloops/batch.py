@@ -1,33 +1,32 @@
-"""The ``"mechanism": "loops"`` case of the batch contract (CONVENTIONS)."""
+"""The ``"mechanism": "loops"`` case of the batch contract (CONVENTIONS), which
+:func:`solver.batch.solve_case` hands over to :func:`solve_loops_case`."""
 
 import numpy as np
 
-from ..errors import AccelabError, InvalidInput
-from ..kernels import NOT_ASSEMBLABLE, OK
+from ..errors import InvalidInput, error_object
+from ..parameters import MOTION
+from ..results import as_plain, finite_or_refused
+from ..status import NOT_ASSEMBLABLE, OK
 from ..units import to_si
 from .solve import solve, system_from_case
 
-KEYS = {"mechanism", "vectors", "loops", "points", "theta2", "omega2", "alpha2", "jerk2"}
-MOTION = (("theta2", "angle", True), ("omega2", "angular_velocity", True),
-          ("alpha2", "angular_acceleration", True), ("jerk2", "angular_jerk", False))
+KEYS = {"mechanism", "vectors", "loops", "points"} | {p.name for p in MOTION}
 
 
 def read_motion(case):
+    """theta2, omega2, alpha2, jerk2 of a loops case in SI (the declared
+    parameters of :data:`solver.parameters.MOTION`, with their defaults)."""
     values = {}
-    for name, kind, required in MOTION:
-        if name not in case:
-            if required:
-                raise InvalidInput(f"a loops case needs {name!r}", name)
-            values[name] = 0.0
+    for p in MOTION:
+        if p.name not in case:
+            if p.required:
+                raise InvalidInput(f"a loops case needs {p.name!r} ({p.meaning})", p.name)
+            values[p.name] = p.default
             continue
-        values[name] = to_si(case[name], name, kind)
-        if not isinstance(values[name], float):
-            raise InvalidInput(f"{name} must be a single value in a batch case", name)
+        values[p.name] = to_si(case[p.name], p.name, p.kind)
+        if not isinstance(values[p.name], float):
+            raise InvalidInput(f"{p.name} must be a single value in a batch case", p.name)
     return values
-
-
-def _xy(z):
-    return [float(z.real), float(z.imag)]
 
 
 def result_dict(system, motion, i=0):
@@ -44,16 +43,16 @@ def result_dict(system, motion, i=0):
                          length_ddot=float(motion.dL[1][i, v]),
                          length_dddot=float(motion.dL[2][i, v]))
         vectors[name] = entry
-    points = {name: {key: _xy(motion.points[n][i, p]) for n, key in enumerate("RVAJ")}
+    points = {name: {key: as_plain(motion.points[n][i, p]) for n, key in enumerate("RVAJ")}
               for p, name in enumerate(model.point_names)}
     return {"ok": True, "vectors": vectors, "points": points,
             "iterations": int(motion.iterations[i]), "condition": float(motion.condition[i])}
 
 
-def solve_case(case):
+def solve_loops_case(case):
     """Solve one loops case; never raises (errors become error objects)."""
     try:
-        unknown = sorted(set(case) - KEYS)
+        unknown = sorted((k for k in case if k not in KEYS), key=str)
         if unknown:
             raise InvalidInput(f"unknown key {unknown[0]!r} in a loops case; it takes "
                                f"{', '.join(sorted(KEYS - {'mechanism'}))}", unknown[0])
@@ -63,9 +62,6 @@ def solve_case(case):
         if motion.status[0] != OK:
             kind = "not_assemblable" if motion.status[0] == NOT_ASSEMBLABLE else "singular"
             return {"ok": False, "error": kind, "message": str(motion.message)}
-        return result_dict(system, motion)
-    except AccelabError as exc:
-        return {"ok": False, "error": exc.kind, "message": str(exc)}
-    except Exception as exc:  # a bug: keep the batch going
-        return {"ok": False, "error": "internal_error",
-                "message": f"{type(exc).__name__}: {exc} (please report this case)"}
+        return finite_or_refused(result_dict(system, motion))
+    except Exception as exc:  # noqa: BLE001 - one bad case never stops the batch
+        return error_object(exc)

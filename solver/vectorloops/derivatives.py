@@ -16,7 +16,7 @@ iteration.
 
 import numpy as np
 
-from .newton import _solve_stack
+from .newton import solve_stack
 from .products import rows_times
 
 
@@ -77,7 +77,7 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
         dth[n - 1][:, s.vin] = s.ratio[s.vin] * inputs[n - 1][:, None]
         K = rows_times(vector_derivative(n, L, dL, dth, e), signs_T)  # (N, n_loops) complex
         rhs = -K.view(np.float64)                               # interleaved re, im
-        x = _solve_stack(J, rhs[..., None])[0][..., 0]          # NaN where J is singular
+        x = solve_stack(J, rhs[..., None])[0][..., 0]          # NaN where J is singular
         q_d.append(x)
         dL[n - 1][:, s.vl] = x[:, s.il]
         dth[n - 1][:, s.va] = s.ratio[s.va] * x[:, s.ia]

@@ -18,9 +18,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InvalidInput
-from ..units import to_si
+from ..units import show, to_si
 
 _TERM = re.compile(r"\s*([+-]?)\s*([A-Za-z_][A-Za-z0-9_]*)\s*")
+
+#: the most vectors a description may have (an eightbar has 14), the longest
+#: vector name and the longest loop or point string [characters]: every part
+#: of a description is read in bounded time
+MAX_VECTORS = 200
+MAX_NAME = 40
+MAX_SUM = 2000
 
 
 @dataclass
@@ -51,7 +58,10 @@ class LoopModel:
 def _parse_sum(text, names, what):
     if not isinstance(text, str) or not text.strip():
         raise InvalidInput(f"{what} must be a signed sum of vector names like 'R2 + R3 - R4 - R1' "
-                           f"(got {text!r})", what)
+                           f"(got {show(text)})", what)
+    if len(text) > MAX_SUM:
+        raise InvalidInput(f"{what} is {len(text)} characters long; a loop or point is at most "
+                           f"{MAX_SUM}", what)
     signs = np.zeros(len(names))
     pos = 0
     first = True
@@ -59,11 +69,11 @@ def _parse_sum(text, names, what):
     while pos < len(text):
         m = _TERM.match(text, pos)
         if not m or (not first and not m.group(1)):
-            raise InvalidInput(f"cannot read {what} {text!r} at {text[pos:]!r}: write a signed "
+            raise InvalidInput(f"cannot read {what} at {show(text[pos:])}: write a signed "
                                f"sum of vector names like 'R2 + R3 - R4 - R1'", what)
         name = m.group(2)
         if name not in names:
-            raise InvalidInput(f"{what} {text!r} names an unknown vector {name!r}; the vectors "
+            raise InvalidInput(f"{what} names an unknown vector {show(name)}; the vectors "
                                f"are {', '.join(names)}", what)
         signs[names.index(name)] += -1.0 if m.group(1) == "-" else 1.0
         pos = m.end()
@@ -98,6 +108,17 @@ def read_description(case):
     points = case.get("points", {}) or {}
     if not isinstance(points, dict):
         raise InvalidInput("'points' must be an object of point names to vector sums", "points")
+    if len(vectors) > MAX_VECTORS:
+        raise InvalidInput(f"a loops case has at most {MAX_VECTORS} vectors (got "
+                           f"{len(vectors)})", "vectors")
+    long = [k for k in vectors if not isinstance(k, str) or len(k) > MAX_NAME or not k]
+    if long:
+        raise InvalidInput(f"vector names are 1 to {MAX_NAME} characters (got "
+                           f"{show(long[0])})", "vectors")
+    if not all(isinstance(p, str) and 0 < len(p) <= MAX_NAME for p in points):
+        raise InvalidInput(f"point names are 1 to {MAX_NAME} characters", "points")
+    if not all(isinstance(text, str) for text in loops):
+        raise InvalidInput("each loop must be a string like \"R2 + R3 - R4 - R1\"", "loops")
     names = list(vectors)
     n = len(names)
     length = np.full(n, np.nan)
@@ -143,35 +164,46 @@ def read_description(case):
     ratio = np.zeros(n)
     offset = np.zeros(n)
 
-    def resolve(name, seen):
-        if name in seen:
-            chain = " -> ".join(seen + [name])
-            raise InvalidInput(f"follow chain loops back on itself ({chain}): one vector in it "
-                               f"must have an input, unknown or fixed angle", name)
-        angle = raw_angle[name]
-        if angle == "input":
-            return "input", 1.0, 0.0
-        if angle == "unknown":
-            return angle_index[f"{name}.angle"], 1.0, 0.0
-        if isinstance(angle, dict):
-            target = angle.get("follow")
-            if target not in raw_angle:
-                raise InvalidInput(f"vector {name} follows {target!r}, which is not a vector "
-                                   f"(the vectors are {', '.join(names)})", name)
-            extra = set(angle) - {"follow", "offset", "ratio"}
-            if extra:
-                raise InvalidInput(f"vector {name}: unknown follow key(s) {sorted(extra)}", name)
-            k = angle.get("ratio", 1.0)
-            if isinstance(k, bool) or not isinstance(k, (int, float)) or not np.isfinite(k):
-                raise InvalidInput(f"vector {name}: follow ratio must be a number (got {k!r})",
+    def resolve(name):
+        """(base, ratio, offset) of a vector's angle: the chain of follows
+        walked to its end (without recursion: a chain may be long)."""
+        chain, k, o = [], 1.0, 0.0
+        while True:
+            if name in chain:
+                shown = " -> ".join(chain[chain.index(name):] + [name])
+                raise InvalidInput(f"follow chain loops back on itself ({show(shown)}): one "
+                                   f"vector in it must have an input, unknown or fixed angle",
                                    name)
-            o = to_si(angle.get("offset", 0), f"{name}.offset", "angle")
-            base, k0, o0 = resolve(target, seen + [name])
-            return base, k * k0, k * o0 + o
-        return None, 0.0, to_si(angle, f"{name}.angle", "angle")
+            chain.append(name)
+            angle = raw_angle[name]
+            if isinstance(angle, str) and angle == "input":
+                return "input", k, o
+            if isinstance(angle, str) and angle == "unknown":
+                return angle_index[f"{name}.angle"], k, o
+            if isinstance(angle, dict):
+                target = angle.get("follow")
+                if not isinstance(target, str) or target not in raw_angle:
+                    raise InvalidInput(f"vector {name} follows {show(target)}, which is not a "
+                                       f"vector (the vectors are {', '.join(names)})", name)
+                extra = set(angle) - {"follow", "offset", "ratio"}
+                if extra:
+                    raise InvalidInput(f"vector {name}: unknown follow key(s) "
+                                       f"{show(sorted(map(str, extra)))}", name)
+                r = angle.get("ratio", 1.0)
+                if isinstance(r, bool) or not isinstance(r, (int, float)) or \
+                        not np.isfinite(r):
+                    raise InvalidInput(f"vector {name}: follow ratio must be a number (got "
+                                       f"{show(r)})", name)
+                off = to_si(angle.get("offset", 0), f"{name}.offset", "angle")
+                # this vector's angle is r * (target's angle) + off
+                o = o + k * off
+                k = k * r
+                name = target
+                continue
+            return None, 0.0, k * to_si(angle, f"{name}.angle", "angle") + o
 
     for i, name in enumerate(names):
-        base, k, o = resolve(name, [])
+        base, k, o = resolve(name)
         ratio[i], offset[i] = k, o
         if base == "input":
             angle_input[i] = True

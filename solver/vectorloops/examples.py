@@ -17,7 +17,7 @@ def fourbar(a="2 in", b="6 in", c="9 in", d="7 in", p="3 in", delta3="40 deg",
 
 
 def slidercrank(a="40 mm", b="120 mm", c="10 mm", guess3="170 deg", guess_d="150 mm"):
-    """The offset slider-crank of eq. 7.14: a e2 - b e3 - c e4 - d e1 = 0."""
+    """The offset slider-crank of eq. 4.14b: a e2 - b e3 - c e4 - d e1 = 0."""
     return {"vectors": {
         "R2": {"length": a, "angle": "input"},
         "R3": {"length": b, "angle": "unknown", "guess": guess3},
@@ -29,7 +29,7 @@ def slidercrank(a="40 mm", b="120 mm", c="10 mm", guess3="170 deg", guess_d="150
 
 def invertedslidercrank(a="4 in", c="3 in", d="8 in", gamma="90 deg", guess4="80 deg",
                         guess_b="6 in"):
-    """The inverted slider-crank of eq. 7.20 (theta3 = theta4 + gamma)."""
+    """The inverted slider-crank (section 7.3; theta3 = theta4 + gamma, eq. 4.18)."""
     return {"vectors": {
         "R1": {"length": d, "angle": "0 deg"},
         "R2": {"length": a, "angle": "input"},
@@ -42,7 +42,8 @@ def invertedslidercrank(a="4 in", c="3 in", d="8 in", gamma="90 deg", guess4="80
 
 def fivebar(a="1 in", b="4 in", c="4 in", d="1 in", f="3 in", lam=-2, phi="30 deg",
             guess3="60 deg", guess4="120 deg"):
-    """The geared fivebar of eq. 7.28: link 5 follows the input with the gear ratio."""
+    """The geared fivebar (section 7.4): link 5 follows the input with the gear ratio
+    (eq. 7.28c)."""
     return {"vectors": {
         "R1": {"length": f, "angle": "0 deg"},
         "R2": {"length": a, "angle": "input"},

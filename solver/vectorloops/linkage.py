@@ -3,8 +3,10 @@
 import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
-from ..kernels import NOT_ASSEMBLABLE, OK, STATUS_NAMES
-from ..units import quantity, to_si
+from ..parameters import MOTION
+from ..results import Kinematics
+from ..status import NOT_ASSEMBLABLE, OK
+from ..units import quantity, show, to_si
 from .newton import DEFAULT_TOL
 from .solve import solve, system_from_case
 
@@ -80,13 +82,19 @@ class VectorLoopLinkage:
         a sweep that starts on a singular position reports that position
         ``singular`` and continues from the next one.
         """
-        t2 = to_si(theta2, "theta2", "angle")
-        w2 = to_si(omega2, "omega2", "angular_velocity")
-        a2 = to_si(alpha2, "alpha2", "angular_acceleration")
-        j2 = to_si(jerk2, "jerk2", "angular_jerk")
-        if order != 3:
-            if order not in (1, 2):
-                raise InvalidInput("order must be 1, 2 or 3", "order")
+        t2, w2, a2, j2 = (to_si(v, p.name, p.kind)
+                          for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2)))
+        if isinstance(order, bool) or order not in (1, 2, 3):
+            raise InvalidInput(f"order must be 1 (velocity), 2 (acceleration) or 3 (jerk), got "
+                               f"{show(order)}", "order")
+        if np.ndim(t2) > 1:
+            raise InvalidInput("theta2 must be one angle or a 1-D array of angles (a sweep) "
+                               f"for a vector-loop linkage (got shape {np.shape(t2)})", "theta2")
+        N = np.size(t2)
+        for name, v in (("omega2", w2), ("alpha2", a2), ("jerk2", j2)):
+            if np.ndim(v) and np.shape(v) != (N,):
+                raise InvalidInput(f"{name} must be one value or an array shaped like theta2 "
+                                   f"({N} positions; got shape {np.shape(v)})", name)
         motion = solve(self.system, t2, w2, a2, j2, order, tol=tol)
         scalar = np.ndim(t2) == 0
         if scalar and motion.status[0] != OK:
@@ -115,7 +123,14 @@ class _Named:
         return "<" + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._values) + ">"
 
 
-class LoopResult:
+_VECTOR_KINDS = {"angle": "angle", "omega": "angular_velocity",
+                 "alpha": "angular_acceleration", "jerk": "angular_jerk", "length": "length",
+                 "length_dot": "velocity", "length_ddot": "acceleration",
+                 "length_dddot": "jerk"}
+_POINT_KINDS = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk"}
+
+
+class LoopResult(Kinematics):
     """Solved vector-loop linkage: ``vectors[NAME]`` (angle, omega, alpha, jerk
     and, for sliders, length, length_dot, length_ddot, length_dddot) and
     ``points[NAME]`` (R, V, A, J as complex Quantities), with ``valid``,
@@ -123,16 +138,19 @@ class LoopResult:
     sweep also ``message`` (why the first position that failed did, or what
     the sweep decided on its way) and ``notes`` (position index -> what the
     sweep decided there: where it passed a change point on its own assembly,
-    or left a singular first position)."""
+    or left a singular first position).
+
+    In the common style of :mod:`solver.results`, ``r["R3.alpha"]`` is
+    ``r.vectors["R3"].alpha`` and ``r["B.A"]`` is ``r.points["B"].A``.
+    """
 
     def __init__(self, system, motion, scalar):
         self._motion, self._scalar = motion, scalar
+        self._status, self._condition = motion.status, motion.condition
         model = system.model
         m = motion
         order = len(m.dth)
-        kinds = {"angle": "angle", "omega": "angular_velocity", "alpha": "angular_acceleration",
-                 "jerk": "angular_jerk", "length": "length", "length_dot": "velocity",
-                 "length_ddot": "acceleration", "length_dddot": "jerk"}
+        self._values = {}
         self.vectors = {}
         for v, name in enumerate(model.names):
             values = {"angle": m.theta[:, v]}
@@ -142,26 +160,28 @@ class LoopResult:
                 values["length"] = m.L[:, v]
                 for n, key in enumerate(("length_dot", "length_ddot", "length_dddot")[:order]):
                     values[key] = m.dL[n][:, v]
-            self.vectors[name] = _Named(values, kinds, scalar)
-        pkinds = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk"}
-        self.points = {name: _Named({k: m.points[n][:, p] for n, k in enumerate("RVAJ"[:order + 1])},
-                                    pkinds, scalar)
-                       for p, name in enumerate(model.point_names)}
+            self.vectors[name] = _Named(values, _VECTOR_KINDS, scalar)
+            self._values.update({f"{name}.{k}": (x, _VECTOR_KINDS[k]) for k, x in values.items()})
+        self.points = {}
+        for p, name in enumerate(model.point_names):
+            values = {k: m.points[n][:, p] for n, k in enumerate("RVAJ"[:order + 1])}
+            self.points[name] = _Named(values, _POINT_KINDS, scalar)
+            self._values.update({f"{name}.{k}": (x, _POINT_KINDS[k]) for k, x in values.items()})
 
-    def _one(self, x):
-        return x[0] if self._scalar else x
+    def si(self, name):
+        if name not in self._values:
+            raise KeyError(f"this linkage has no output {name!r}; its outputs are "
+                           f"{', '.join(self._values)}")
+        v = self._values[name][0]
+        return v[0] if self._scalar else v
 
-    @property
-    def valid(self):
-        return self._one(self._motion.status == OK)
+    def kind(self, name):
+        self.si(name)
+        return self._values[name][1]
 
-    @property
-    def status(self):
-        return self._one(np.array([STATUS_NAMES[s] for s in self._motion.status], dtype=object))
-
-    @property
-    def condition(self):
-        return self._one(self._motion.condition)
+    def outputs(self):
+        """``VECTOR.angle`` ... and ``POINT.A`` ... for every vector and point."""
+        return list(self._values)
 
     @property
     def iterations(self):

@@ -25,13 +25,22 @@ singular, and its size says how far the position is from a singular one
 (:mod:`.sweep` follows one sign).
 """
 
+import dataclasses
 import math
+from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import NoConvergence
+from ..errors import InvalidInput, NoConvergence
+from ..kernels.common import length_unit
 from .products import rows_times
 from .straightline import compile_kernel
+
+#: A position whose condition measure (1 best, 0 singular; see :func:`condition`)
+#: falls below this is reported ``singular``: its Jacobian is too close to
+#: singular to vouch for velocity and acceleration. (The closed-form kernels
+#: decide by their round-off estimate instead: solver.kernels.common.MAX_ROUNDOFF.)
+SINGULAR_CONDITION = 1e-4
 
 MAX_ITERATIONS = 50
 MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed assembly
@@ -50,9 +59,20 @@ CONVERGED, NOT_CLOSED, SINGULAR_STEP = 0, 1, 2
 ORIENTATION_FLOOR = 1e-10
 
 
+class NewtonResult(NamedTuple):
+    """What Newton-Raphson returns for one position (lists / floats) or a
+    stack of M positions (arrays with a first axis of M)."""
+
+    q: object          #: the solution (the last iterate where not converged)
+    iterations: object  #: Newton steps taken
+    residual: object   #: loop residual norm at the last evaluation [m]
+    reason: object     #: CONVERGED, NOT_CLOSED or SINGULAR_STEP
+    slope: object      #: dq/dtheta2 at the solution (None / NaN where not converged)
+    orient: object     #: the orientation at the solution (NaN where not converged)
+
+
 def check_tol(tol):
     """The convergence tolerance as a float in (0, 1e-2], or InvalidInput."""
-    from ..errors import InvalidInput
     try:
         tol = float(tol)
     except (TypeError, ValueError):
@@ -72,10 +92,22 @@ def step_tolerance(tol):
 
 
 class LoopSystem:
-    """Index arrays of a :class:`~.description.LoopModel`, ready for fast evaluation."""
+    """Index arrays of a :class:`~.description.LoopModel`, ready for fast evaluation.
+
+    Lengths inside are the model's divided by ``unit``, a power of two near its
+    longest length (:func:`solver.kernels.common.length_unit`): exact, and the
+    solver is then the same at any scale float64 holds (``model`` is the
+    normalized model, ``si_model`` the one read; :func:`.solve.solve` multiplies
+    the lengths it returns by ``unit``).
+    """
 
     def __init__(self, model):
-        self.model = model
+        self.si_model = model
+        self.unit = unit = length_unit(model.length_scale)
+        guess = np.where(model.unknown_is_length, model.guess / unit, model.guess)
+        self.model = model = dataclasses.replace(
+            model, length=model.length / unit, guess=guess,
+            length_scale=model.length_scale / unit)
         m = model
         self.signs = m.signs
         self.n_loops = nl = m.signs.shape[0]
@@ -124,9 +156,9 @@ class LoopSystem:
         # number of times per crank turn (a gear ratio like -2), else none
         k = self.ratio[self.vin]
         self.period = 2 * np.pi if np.all(k == np.round(k)) else None
-        self._tables()
+        self._step_tables()
 
-    def _tables(self):
+    def _step_tables(self):
         """Plain-Python tables for :meth:`newton1` (one position, no numpy): per
         vector its base index, ratio, offset, length (or unknown index) and the
         rows and columns it adds to (F, J, dF/dtheta2); and from them the
@@ -147,10 +179,10 @@ class LoopSystem:
             rows.append((int(self.base_index[v]), float(self.ratio[v]), float(self.offset[v]),
                          int(m.length_unknown[v]), float(self.fixed_length[v]),
                          tuple(fterms), tuple(aterms), tuple(lterms), tuple(dterms)))
-        self._py_vectors = tuple(rows)
+        self.step_tables = tuple(rows)
         self._py_scale = [float(x) for x in self.scale]
         self._py_limit = [float(x) for x in self.step_limit]
-        self._kernel = compile_kernel(self._py_vectors, self.n_unknowns)
+        self.step = compile_kernel(self.step_tables, self.n_unknowns)
 
     # --- geometry of a stack of positions --------------------------------
     def vectors(self, q, theta2):
@@ -183,31 +215,6 @@ class LoopSystem:
         R = rows_times(Y, self.B).reshape(M, nu + 2, 2 * nl)
         return R[:, 0], R[:, 1:nu + 1].transpose(0, 2, 1), R[:, nu + 1]
 
-    def jacobian_stack(self, L, e):
-        """The real Jacobians (M, 2 nl, nu) at given lengths and e^{j theta}."""
-        return self.evaluate_lt(L, e.real, e.imag)[1]
-
-    # --- the older one-position helpers (kept for callers and teaching) --------
-    def lengths_angles(self, q, theta2):
-        """Lengths L_v [m] and angles theta_v [rad] of every vector at one position."""
-        L, theta = self.vectors(np.asarray(q, dtype=float)[None], theta2)
-        return np.array(L[0]), theta[0]
-
-    def residual(self, L, e):
-        f = self.signs @ (L * e)
-        return np.concatenate([f.real, f.imag])
-
-    def jacobian(self, L, e):
-        """Real Jacobian dF/dq at one position, shape (2 n_loops, n_unknowns), rows
-        all real parts then all imaginary parts."""
-        D = 1j * self.Ma * (L * e)[:, None] + self.Ml * e[:, None]
-        Jc = self.signs @ D
-        return np.vstack([Jc.real, Jc.imag])
-
-    def dF_dtheta2(self, L, e):
-        k = self.k_in * L
-        return np.concatenate([self.signs @ (-k * e.imag), self.signs @ (k * e.real)])
-
     # --- Newton-Raphson -----------------------------------------------------
     def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS, slopes=True):
         """Newton-Raphson on a stack of M positions at once.
@@ -230,15 +237,13 @@ class LoopSystem:
 
         Returns
         -------
-        q : (M, nu) solutions (the last iterate where not converged)
-        iterations : (M,) Newton steps taken
-        residual : (M,) loop residual norm at the last evaluation [m] (for a
-            converged position, before its last step)
-        reason : (M,) int8, CONVERGED, NOT_CLOSED or SINGULAR_STEP
-        slope : (M, nu) dq/dtheta2 at the solution (NaN where not converged,
-            and everywhere when ``slopes`` is False)
-        orient : (M,) the orientation at the solution (:func:`orientation`;
-            NaN where not converged)
+        NewtonResult
+            q (M, nu) solutions (the last iterate where not converged);
+            iterations (M,); residual (M,) [m] (for a converged position,
+            before its last step); reason (M,) int8; slope (M, nu)
+            dq/dtheta2 (NaN where not converged, and everywhere when
+            ``slopes`` is False); orient (M,) (:func:`orientation`; NaN
+            where not converged).
         """
         q = np.array(q0, dtype=float, copy=True)
         theta2 = np.asarray(theta2, dtype=float)
@@ -256,7 +261,7 @@ class LoopSystem:
             F, J, Ft = self.evaluate(qa, ta)
             res = np.sqrt(np.einsum("ij,ij->i", F, F))
             residual[active] = res
-            sol, bad = _solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
+            sol, bad = solve_stack(J, np.stack([F, Ft], axis=-1) if slopes else F[:, :, None])
             dq = -sol[:, :, 0]
             size = np.max(np.abs(dq) / self.scale, axis=1)
             small = size <= step_tol
@@ -284,7 +289,7 @@ class LoopSystem:
                 dq[damped] /= ratio[damped, None]
             qa = qa + dq
             iterations[active] += 1
-        return q, iterations, residual, reason, slope, orient
+        return NewtonResult(q, iterations, residual, reason, slope, orient)
 
     def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS,
                 least_squares=False):
@@ -299,16 +304,15 @@ class LoopSystem:
         the least-squares step of least norm (it moves only where the
         Jacobian can), which is how a sweep leaves a singular position.
 
-        Returns ``(q, iterations, residual, reason, slope, orient)`` with q
-        and slope as lists (slope None where not converged, or where the
-        Jacobian is exactly singular) and orient the orientation at the last
-        evaluation (det J over the product of J's column norms; NaN where not
-        converged).
+        Returns a :class:`NewtonResult` with q and slope as lists (slope None
+        where not converged, or where the Jacobian is exactly singular) and
+        orient the orientation at the last evaluation (det J over the product
+        of J's column norms; NaN where not converged).
         """
         q = [float(x) for x in q0]
         if not math.isfinite(theta2):
-            return q, 0, math.nan, NOT_CLOSED, None, math.nan
-        kernel = self._kernel
+            return NewtonResult(q, 0, math.nan, NOT_CLOSED, None, math.nan)
+        kernel = self.step
         scale, limit = self._py_scale, self._py_limit
         step_tol = step_tolerance(tol)
         floor = min(tol, ROUNDOFF_RESIDUAL) * self.model.length_scale
@@ -316,11 +320,11 @@ class LoopSystem:
         while True:
             res, orient, dq, slope = kernel(q, theta2)
             if res != res:
-                return q, steps, res, SINGULAR_STEP, None, math.nan
+                return NewtonResult(q, steps, res, SINGULAR_STEP, None, math.nan)
             if dq is None and least_squares:
                 dq = self._least_squares_step(q, theta2)
             if dq is None:
-                return q, steps, res, SINGULAR_STEP, None, math.nan
+                return NewtonResult(q, steps, res, SINGULAR_STEP, None, math.nan)
             ratio = size = 0.0
             for a, lim, sc in zip(dq, limit, scale):
                 a = abs(a)
@@ -329,11 +333,12 @@ class LoopSystem:
                 if a > size * sc:
                     size = a / sc
             if size <= step_tol:
-                return [x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED, slope, orient
+                return NewtonResult([x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED,
+                                    slope, orient)
             if res <= floor:        # round-off already: at a singular root the step is noise
-                return q, steps, res, CONVERGED, slope, orient
+                return NewtonResult(q, steps, res, CONVERGED, slope, orient)
             if steps == max_iterations:
-                return q, steps, res, NOT_CLOSED, None, math.nan
+                return NewtonResult(q, steps, res, NOT_CLOSED, None, math.nan)
             if ratio > 1.0:  # never leap to another assembly in one step
                 q = [x + y / ratio for x, y in zip(q, dq)]
             else:
@@ -350,24 +355,8 @@ class LoopSystem:
             return None
         return [float(v) for v in dx]
 
-    def solve_position(self, q0, theta2, tol=DEFAULT_TOL):
-        """Newton-Raphson at one position from q0 to machine precision.
 
-        Returns ``(q, iterations, residual_norm, J, slope)`` with ``slope`` =
-        dq/dtheta2 there (the continuation predictor); raises NoConvergence
-        (with the residual it reached) when the loops do not close.
-        """
-        theta2 = float(theta2)
-        q, it, res, reason, slope, _ = self.newton1(q0, theta2, tol)
-        if reason != CONVERGED:
-            raise no_convergence(theta2, res, it, reason)
-        q = np.array(q)
-        J = self.evaluate(q[None], np.array([theta2]))[1][0]
-        slope = np.full(len(q), np.nan) if slope is None else np.array(slope)
-        return q, it, res, J, slope
-
-
-def _solve_stack(J, rhs):
+def solve_stack(J, rhs):
     """Solve M small systems; a singular one gives NaN and a True in ``bad``."""
     bad = np.zeros(J.shape[0], dtype=bool)
     try:

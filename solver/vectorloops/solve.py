@@ -1,13 +1,41 @@
 """The unit-free entry point: a description in SI solved from position to jerk."""
 
+from dataclasses import dataclass, field
+
 import numpy as np
 
-from ..kernels import Motion, OK, SINGULAR, SINGULAR_CONDITION
+from ..status import OK, SINGULAR
 from ..errors import Singular
 from .derivatives import point_motion, solve_derivatives
 from .description import read_description
-from .newton import DEFAULT_TOL, LoopSystem, check_tol, condition
+from .newton import DEFAULT_TOL, SINGULAR_CONDITION, LoopSystem, check_tol, condition
 from .sweep import singular_message, solve_sweep
+
+
+@dataclass(eq=False)
+class LoopMotion:
+    """A vector-loop linkage solved at N positions (SI floats).
+
+    ``q`` (N, n_unknowns) the unknowns; per vector ``L`` and ``theta`` (N,
+    n_vectors) and their time derivatives ``dL``, ``dth`` (lists by order);
+    ``points``: [R, V, A, J] of every named point, complex (N, n_points);
+    per position ``status`` (int8, :mod:`solver.status`), ``condition``,
+    Newton ``iterations``; ``message`` (the first failed position's error,
+    else what the sweep noted, else the first singular position's) and
+    ``notes`` (position -> what the sweep decided there).
+    """
+
+    q: np.ndarray
+    status: np.ndarray
+    iterations: np.ndarray
+    condition: np.ndarray
+    message: object = None
+    notes: dict = field(default_factory=dict)
+    L: np.ndarray = None
+    theta: np.ndarray = None
+    dL: list = None
+    dth: list = None
+    points: list = None
 
 
 def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TOL, batch=True):
@@ -18,13 +46,9 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
     ``batch=False`` walks the sweep position by position instead of solving
     the positions between a coarse chain together (same results; slower).
 
-    Returns a Motion with ``q`` (N, n_unknowns), per-vector ``L``, ``theta``,
-    ``dL``/``dth`` (lists of derivative arrays), point motions ``points``
-    (list [R, V, A, J] of (N, n_points) complex arrays), ``status``,
-    ``condition``, ``iterations``, ``message`` (the first failed position's
-    error, else what the sweep noted, else the first singular position's) and
-    ``notes`` (position -> text: where the sweep passed a change point on its
-    own assembly, or left a singular first position; see :mod:`.sweep`).
+    Returns a :class:`LoopMotion` (notes: where the sweep passed a change
+    point on its own assembly, or left a singular first position; see
+    :mod:`.sweep`).
     """
     theta2 = np.atleast_1d(np.asarray(theta2, dtype=float))
     N = len(theta2)
@@ -36,8 +60,8 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
         message = Singular(" ".join(notes.values()))
     ok = status == OK
     nv = len(system.fixed_length)
-    out = Motion(q=q, status=status, iterations=iterations, message=message, notes=notes,
-                 condition=np.full(N, np.nan))
+    out = LoopMotion(q=q, status=status, iterations=iterations, message=message, notes=notes,
+                     condition=np.full(N, np.nan))
     L = np.full((N, nv), np.nan)
     theta = np.full((N, nv), np.nan)
     dL = [np.full((N, nv), np.nan) for _ in range(order)]
@@ -62,6 +86,12 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
             i = int(np.flatnonzero(singular)[0])
             out.message = out.message or Singular(singular_message(theta2[i], out.condition[i]),
                                                   condition=float(out.condition[i]))
+    unit = system.unit              # back from the system's normalized lengths
+    if unit != 1.0:
+        q[:, system.model.unknown_is_length] *= unit
+        L *= unit
+        for x in dL + pts:
+            x *= unit
     out.L, out.theta, out.dL, out.dth, out.points = L, theta, dL, dth, pts
     return out
 

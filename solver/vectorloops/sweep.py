@@ -44,11 +44,12 @@ import math
 import numpy as np
 
 from ..errors import Singular
-from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR, SINGULAR_CONDITION
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 from .crossing import ambiguity_message, singular_passage_note, singular_start_note
-from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_STEP, condition,
+from .newton import (CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_CONDITION,
+                     SINGULAR_STEP, condition,
                      no_convergence, step_tolerance)
-from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, Walks, _sign
+from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, Walks, sign_of
 
 COARSE_STEP = 0.25      # [rad] first theta2 step between sequentially solved positions
 COARSE_RANGE = (0.02, 0.6)  # [rad] the step adapts within this range
@@ -62,7 +63,7 @@ SAMPLE_SINGULAR = 100.0  # a solved position whose |orientation| is below this m
                          # its orientation's sign and its slope are not trusted
 
 
-class _Sweep(Walks):
+class Sweep(Walks):
     """The state of one sweep: results so far and the continuation state."""
 
     def __init__(self, system, theta2, q0, tol):
@@ -111,7 +112,7 @@ class _Sweep(Walks):
         self.sequential[i] = True
         t = float(self.theta2[i])
         if not singular and self.sign is None:
-            self.sign = _sign(orient)
+            self.sign = sign_of(orient)
             if self.singular_start is not None:
                 self.notes[i] = singular_start_note(float(self.theta2[self.singular_start]), t)
                 self.singular_start = None
@@ -161,7 +162,7 @@ class _Sweep(Walks):
     def flipped(self, orient):
         """Is ``orient`` (trusted in sign) the other orientation than the followed one?"""
         return (self.sign is not None and abs(orient) >= ORIENTATION_FLOOR
-                and _sign(orient) != self.sign)
+                and sign_of(orient) != self.sign)
 
     def predict(self, t):
         """Continuation predictor from the last solved position to theta2 = t:
@@ -215,7 +216,7 @@ class _Sweep(Walks):
             return False
         pred, change = self.predict(t)
         leaving = self.singular_last and self.state is not None
-        if result is None or (leaving and result[3] == SINGULAR_STEP):
+        if result is None or (leaving and result.reason == SINGULAR_STEP):
             result = self.system.newton1(pred, t, self.tol, least_squares=leaving)
         q, it, res, reason, slope, orient = result
         if reason == SINGULAR_STEP:
@@ -223,7 +224,7 @@ class _Sweep(Walks):
             if result is not None:
                 q, it, res, reason, slope, orient = result
         if reason != CONVERGED:
-            self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res, it, reason))
+            self.fail(i, NOT_ASSEMBLABLE, no_convergence(t, res * self.system.unit, it, reason))
             return False
         trusted = abs(orient) >= self.sample_singular
         if self.gap:  # across a gap the prediction means little: walk to check instead
@@ -256,11 +257,11 @@ class _Sweep(Walks):
         then accepted and reported ``singular``); otherwise None: the guesses,
         not the position, are singular, and they choose no assembly."""
         result = self.system.newton1(q0, t, self.tol, least_squares=True)
-        if result[3] != CONVERGED:
+        if result.reason != CONVERGED:
             return None
         if self.state is not None:
             return result
-        J = self.system.evaluate(np.array([result[0]]), np.array([t]))[1]
+        J = self.system.evaluate(np.array([result.q]), np.array([t]))[1]
         if not condition(J, self.system.model)[0] < SINGULAR_CONDITION:
             return None
         return result
@@ -454,7 +455,7 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
     afterwards, on the whole stack at once.
     """
     theta2 = np.asarray(theta2, dtype=float)
-    sweep = _Sweep(system, theta2, q0, tol)
+    sweep = Sweep(system, theta2, q0, tol)
     q, status, iterations, message = sweep.run(batch)
     return q, status, iterations, message, {int(i): sweep.notes[i] for i in sorted(sweep.notes)}
 

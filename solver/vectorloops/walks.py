@@ -3,7 +3,7 @@ position that Newton-Raphson reached off the prediction, through a singular
 position where two assemblies meet (:mod:`.crossing`), and back onto the
 followed assembly after a stretch that cannot be assembled.
 
-:class:`Walks` holds these methods of the sweep's state (``_Sweep``); every
+:class:`Walks` holds these methods of the sweep's state (``Sweep``); every
 walk keeps the followed orientation (the sign of det J, :mod:`.newton`).
 """
 
@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ..errors import NotAssemblable, Singular
-from ..kernels import NOT_ASSEMBLABLE, OK, SINGULAR
+from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 from .crossing import SWITCH_DISTANCE, ambiguity_message, crossing_note, other_branch
 from .newton import CONVERGED, ORIENTATION_FLOOR
 
@@ -27,12 +27,12 @@ class _BranchJump(Singular):
     """Newton-Raphson reached closure only on another assembly."""
 
 
-def _sign(x):
+def sign_of(x):
     return math.copysign(1.0, x)
 
 
 class Walks:
-    """The walking methods of a sweep's state (mixed into ``_Sweep``)."""
+    """The walking methods of a sweep's state (mixed into ``Sweep``)."""
 
     # --- off the prediction: a jump, or through a singular position -----------
     def subdivide(self, i, t, it):
@@ -82,7 +82,7 @@ class Walks:
         q_k, it, _, reason, s_k, o_k = self.system.newton1(q_c + v * (t_w - t_c), t_w, self.tol)
         near = found = None
         if reason == CONVERGED and s_k is not None:
-            if abs(o_k) >= ORIENTATION_FLOOR and _sign(o_k) == self.sign:
+            if abs(o_k) >= ORIENTATION_FLOOR and sign_of(o_k) == self.sign:
                 near = np.asarray(q_k), it, np.asarray(s_k), o_k
             else:
                 near = other_branch(self.system, t_c, q_c, t_w, np.asarray(q_k), self.sign,
@@ -131,7 +131,7 @@ class Walks:
             closed = (reason == CONVERGED and sk is not None
                       and not self.jumped(np.asarray(qk), pred, change))
             other = (closed and sign is not None and abs(ok) >= ORIENTATION_FLOOR
-                     and _sign(ok) != sign)
+                     and sign_of(ok) != sign)
             if (closed and not other and sign is not None and math.isfinite(orient)
                     and not abs(ok) >= self.sample_singular):
                 return "flip", (t, q, orient, slope, t_next, np.asarray(qk), ok)

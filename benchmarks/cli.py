@@ -1,4 +1,5 @@
-"""``accelab bench``: the speed-against-accuracy benchmark (``make bench``)."""
+"""``accelab bench``: the speed-against-accuracy benchmark (``make bench``), a
+subcommand that :mod:`accelab.cli` registers."""
 
 import argparse
 
@@ -13,8 +14,15 @@ worst relative error per output, positions refused; the stability study near
 a toggle; Newton-Raphson against its starting guess; cost against positions
 and loops; the cost of units; the goals; machine and versions) and the charts
 bench-speed-accuracy, bench-stability and bench-scaling (PNG and SVG). The
-mpmath reference of each cycle is cached in OUT/reference/. Peer packages
-(pylinkage, mechanism) are measured when installed: pip install -e ".[bench]"."""
+mpmath reference of each cycle is cached in OUT/reference/.
+
+It needs mpmath (the high-precision reference); the peer packages
+(pylinkage, mechanism, kimech) are measured when installed. Both come with
+the bench extra: pip install -e ".[bench]"."""
+
+#: what a measuring run cannot do without (module -> what it is for)
+NEEDS = {"mpmath": "the high-precision reference every error is measured against"}
+INSTALL = 'pip install -e ".[bench]"'
 
 
 def register(sub):
@@ -38,13 +46,18 @@ def register(sub):
     p.set_defaults(func=run)
 
 
+def missing(names=NEEDS):
+    """The modules of ``names`` this installation lacks."""
+    import importlib.util
+    return [name for name in names if importlib.util.find_spec(name) is None]
+
+
 def run(args):
+    import sys
     import warnings
-    from ..bench.run import run_benchmark
     if args.redraw or args.report:
         import json
         import os
-        import sys
         path = os.path.join(args.out, "bench.json")
         if not os.path.exists(path):
             print(f"accelab bench: no {path} to read; run 'accelab bench --out "
@@ -53,13 +66,26 @@ def run(args):
         with open(path) as f:
             data = json.load(f)
         if args.report:
-            from ..bench.report import markdown
+            from .report import markdown
             print(markdown(data))
         if args.redraw:
-            from ..bench.charts import draw_all
+            from .charts import draw_all
             for p in draw_all(data, args.figures or args.out):
                 print(f"wrote {p}")
         return 0
+    lacking = missing()
+    if lacking:
+        print("accelab bench: this installation has no " + ", ".join(
+            f"{name} ({NEEDS[name]})" for name in lacking) + f"; install it with: {INSTALL}",
+            file=sys.stderr)
+        return 2
+    if not args.no_peers:
+        from .peers import PEERS
+        absent = missing(PEERS)
+        if absent:
+            print(f"accelab bench: {', '.join(absent)} not installed, so not measured "
+                  f"(all the peers come with: {INSTALL})", file=sys.stderr)
+    from .run import run_benchmark
     mode = "tiny" if args.tiny else "quick" if args.quick else "full"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # peers warn about their own convergence

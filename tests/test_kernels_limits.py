@@ -23,7 +23,6 @@ omega4 = 0) are limit positions of the output only: nothing is singular
 there, and the kernels answer them to full accuracy.
 """
 
-import json
 import math
 
 import numpy as np
@@ -31,7 +30,8 @@ import pytest
 from hypothesis import assume, given, settings, strategies as st
 from mpmath import mp, mpf
 
-import _mp_reference as ref
+import _checks as check
+import benchmarks.reference as ref
 from solver.batch import solve_cases
 from solver.kernels import NOT_ASSEMBLABLE, OK, SINGULAR
 from test_kernels_accuracy import kernel_outputs, run_kernel
@@ -65,7 +65,7 @@ def _assembles(mech, geo, t2, circuit="open"):
 def limit_angles(mech, geo):
     """[(label, t2*, side)]: limit angles (ground frame, 50 digits) and the
     side (+1 / -1) of theta2 on which the linkage assembles."""
-    with mp.workdps(ref.DPS):
+    with mp.workdps(ref.mechanisms.DPS):
         if mech == "fourbar":
             found = [(f"{kind}{'+-'[k]}", sign * t)
                      for kind, (t, _) in ref.fourbar_limits(geo["a"], geo["b"], geo["c"],
@@ -94,7 +94,7 @@ def near_limit(mech, geo, t_star, side, delta, circuit, motion=MOTION):
     for a side where the reference does not agree that it assembles (inside)
     or does not (past): with short links another limit may be that near."""
     theta1 = motion["theta1"]
-    with mp.workdps(ref.DPS):
+    with mp.workdps(ref.mechanisms.DPS):
         inside = float(t_star + side * mpf(delta) + theta1)
         past = float(t_star - side * mpf(delta) + theta1)
     want = ref.solve(mech, geo, inside, motion["omega2"], motion["alpha2"], motion["jerk2"],
@@ -105,7 +105,7 @@ def near_limit(mech, geo, t_star, side, delta, circuit, motion=MOTION):
         m = run_kernel(mech, case, circuit)
         status = int(m.status)
         if status == OK:
-            errors = ref.errors(kernel_outputs(mech, case, m), want, FLOOR)
+            errors = check.errors(kernel_outputs(mech, case, m), want, FLOOR)
     past_status = None
     if not _assembles(mech, geo, past - theta1, circuit):
         past_status = int(run_kernel(mech, dict(geo, theta2=past, **motion), circuit).status)
@@ -171,9 +171,9 @@ def test_at_the_limit_and_within_roundoff_is_singular_with_a_position(mech, geo)
                                   theta1=0.0), "open")
         assert m.status == SINGULAR, (label, offset, m.status)
         assert np.isfinite(m.theta3) and np.isnan(m.omega3)
-        with mp.workdps(ref.DPS):
+        with mp.workdps(ref.mechanisms.DPS):
             want = ref.solve(mech, geo, t_star + side * mpf("1e-30"), 1.0)
-        assert ref.angle_error(m.theta3, want["theta3"]) < 1e-6
+        assert check.angle_error(m.theta3, want["theta3"]) < 1e-6
 
 
 # ------------------------------------------------------------ the rocker's extremes
@@ -197,12 +197,12 @@ def test_rocker_extremes_are_not_singular(circuit):
                 m = run_kernel("fourbar", case, circuit)
                 assert m.status == OK
                 want = ref.solve("fourbar", geo, theta2, 30.0, -50.0, 1e3, 0.0, circuit)
-                errors = ref.errors(kernel_outputs("fourbar", case, m), want, FLOOR)
+                errors = check.errors(kernel_outputs("fourbar", case, m), want, FLOOR)
                 worst = max(errors, key=errors.get)
                 assert errors[worst] < 1e-12, (kind, delta, worst, errors[worst])
                 omega4.append(float(m.omega4))
             # on the circuit whose rocker is at its extreme there, omega4 changes sign
-            with mp.workdps(ref.DPS):
+            with mp.workdps(ref.mechanisms.DPS):
                 _, _, pts = ref.fourbar_position({k: mpf(v) for k, v in geo.items()}, t_star,
                                                  ref.CIRCUIT_SIGN[circuit])
                 r = mpf(geo["a"]) + (1 if kind == "extended" else -1) * mpf(geo["b"])
@@ -291,7 +291,7 @@ def test_batch_near_limits_with_the_reference_check_rules(mech, geo):
     rpm), a delta away from a limit, compared by its rules at 1e-5 with both
     assemblies offered (the other one first); refusing is allowed only
     within 1e-4 rad."""
-    with mp.workdps(ref.DPS):
+    with mp.workdps(ref.mechanisms.DPS):
         g = {k: _si(v) for k, v in geo.items()}
         theta1 = g.pop("theta1", mpf(0))
         limits = limit_angles(mech, g)
@@ -316,7 +316,7 @@ def test_batch_near_limits_with_the_reference_check_rules(mech, geo):
             assert delta <= MUST_ANSWER, f"{name}: refused"
             assert "limit position" in res["message"]
             continue
-        why = ref.compare_to_branches(mech, res, branches, 1e-5)
+        why = check.compare_to_branches(mech, res, branches, 1e-5)
         assert not why, f"{name}: {why}"
         answered += 1
     assert answered >= len(cases) // 2

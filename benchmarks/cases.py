@@ -112,7 +112,6 @@ class Case:
 
     def kernel(self, theta2, order=3, **motion):
         """Solve with the closed-form kernel (unit-free); returns a Motion."""
-        from .. import kernels  # noqa: F401  (the package, for its submodules)
         import importlib
         module = importlib.import_module(f"solver.kernels.{self.mechanism}")
         m = dict(MOTION, **motion)
@@ -163,7 +162,7 @@ def _fourbar(name, title, a, b, c, d, circuit):
 
 
 def _si(text, kind):
-    from ..units import Q_
+    from solver.units import Q_
     return Q_(text).m_as("m" if kind == "length" else "rad")
 
 
@@ -205,7 +204,7 @@ def eightbar():
     6, 7, 8), ten pin joints, one degree of freedom, six unknown angles.
     Lengths in inches; the output rocker 8 swings about O8 = O6 + (8, -2) in.
     """
-    from ..vectorloops.examples import watt2_sixbar
+    from solver.vectorloops.examples import watt2_sixbar
     desc = watt2_sixbar()
     vectors = dict(desc["vectors"])
     vectors.update({
@@ -225,7 +224,7 @@ def _closed_form_guess(case):
 
 def all_cases():
     """The documented set, in the order the tables list it (dict name -> Case)."""
-    from ..vectorloops import examples
+    from solver.vectorloops import examples
     cases = [
         _fourbar("fourbar-open", "fourbar, Grashof crank-rocker, open", 2 * IN, 6 * IN, 9 * IN,
                  7 * IN, "open"),

@@ -1,32 +1,21 @@
-"""The high-precision reference: every case solved as vector loops with mpmath.
+"""The reference's core: any linkage's vector loops solved in mpmath.
 
-This is an implementation separate from both the closed forms and
-:mod:`solver.vectorloops`: it reads a case's vectors and loops (SI floats),
-closes the loops by Newton-Raphson at ``dps`` significant digits, continuing
-along the crank angles from the case's guesses (each position starts from a
-cubic Taylor prediction from the last), and gets the n-th derivatives from
-the n-th derivative of every loop,
+It reads a linkage's vectors and loops (SI numbers: floats or mpf), closes
+the loops by Newton-Raphson at the working precision (continuing along the
+crank angles from the guesses: each position starts from a cubic Taylor
+prediction from the last), and gets the n-th derivatives from the n-th
+derivative of every loop,
 
     sum_v s_v z_v^(n) = 0,   z_v = L_v e^{j theta_v},
 
-whose unknown part is J q^(n) with the position Jacobian J (Chapter 7,
-eq. 7.33, and eq. 7.19 for a vector of varying length). Results are rounded
-to float64 at the end, so the reference error is far below what the methods
-can reach (the tests check it against mpmath's own numerical differentiation
-of the position).
-
-The reference of a cycle is cached as JSON (:func:`cached`), keyed by the
-case, the crank angles and the precision, so a rerun costs nothing.
+whose unknown part is J q^(n) with the position Jacobian J (eqs. 7.2 and 7.40
+for a vector of constant length, 7.19 for one whose length varies). Named points are signed sums of
+vectors, differentiated the same way.
 """
 
-import hashlib
-import json
-import os
-
 import mpmath as mp
-import numpy as np
 
-from .cases import MOTION
+from ..cases import MOTION
 
 DPS = 40
 
@@ -36,7 +25,11 @@ class LoopReference:
 
     Parameters
     ----------
-    case : :class:`~solver.bench.cases.Case`
+    case : :class:`~benchmarks.cases.Case`, or anything with ``name``,
+        ``vectors`` (name -> {"length": number | "unknown", "angle": number |
+        "input" | "unknown" | {"follow", "ratio", "offset"}}), ``loops``
+        (signed sums of names) and ``outputs`` (name -> (vector, "angle" |
+        "length", order)).
     """
 
     def __init__(self, case):
@@ -56,8 +49,8 @@ class LoopReference:
         self.length = {}
         for name in self.names:
             L = case.vectors[name]["length"]
-            self.length[name] = self.index[(name, "length")] if L == "unknown" else float(L)
-        self.loops = [self._parse(loop) for loop in case.loops]
+            self.length[name] = self.index[(name, "length")] if L == "unknown" else mp.mpf(L)
+        self.loops = [self.parse(loop) for loop in case.loops]
         size = max(v["length"] for v in case.vectors.values() if v["length"] != "unknown")
         self.scale = [size if kind == "length" else 1.0 for _, kind in self.unknowns]
         if 2 * len(self.loops) != len(self.unknowns):
@@ -72,12 +65,13 @@ class LoopReference:
             return self.index[(name, "angle")], 1.0, 0.0
         if isinstance(angle, dict):
             src, r, o = self._resolve(angle["follow"])
-            k = float(angle.get("ratio", 1.0))
-            return src, k * r, k * o + float(angle.get("offset", 0.0))
-        return None, 0.0, float(angle)
+            k = mp.mpf(angle.get("ratio", 1.0))
+            return src, k * r, k * o + mp.mpf(angle.get("offset", 0.0))
+        return None, 0.0, mp.mpf(angle)
 
     @staticmethod
-    def _parse(text):
+    def parse(text):
+        """A signed sum of vector names as [(+1 | -1, name)]."""
         terms, sign = [], 1
         for tok in text.replace("+", " + ").replace("-", " - ").split():
             if tok in "+-":
@@ -88,7 +82,7 @@ class LoopReference:
         return terms
 
     # --- every vector's state ------------------------------------------------
-    def _state(self, q, th_in):
+    def state(self, q, th_in):
         """``{name: (L, th, e)}``: each vector's length and angle with their
         derivatives 0..n-1 (lists) and e^{j theta}. ``q`` is the list of the
         unknowns' derivative vectors (lists of mpf), ``th_in`` the input's."""
@@ -107,13 +101,13 @@ class LoopReference:
             if isinstance(spec, int):
                 L = [qk[spec] for qk in q]
             else:
-                L = [mp.mpf(spec)] + [zero] * (n - 1)
+                L = [spec] + [zero] * (n - 1)
             out[name] = (L, th, mp.expj(th[0]))
         return out
 
     @staticmethod
-    def _dz(L, th, e, n):
-        """n-th time derivative of z = L e^{j theta} (eqs. 7.2, 7.19, 7.33)."""
+    def dz(L, th, e, n):
+        """n-th time derivative of z = L e^{j theta} (eqs. 7.2, 7.19, 7.40)."""
         if n == 0:
             return L[0] * e
         w = th[1]
@@ -129,12 +123,17 @@ class LoopReference:
     def _loops(self, state, n):
         out = []
         for loop in self.loops:
-            s = mp.mpc(0)
-            for sign, name in loop:
-                L, th, e = state[name]
-                s += sign * self._dz(L, th, e, n)
+            s = self.sum(state, loop, n)
             out += [s.real, s.imag]
         return out
+
+    def sum(self, state, terms, n):
+        """The n-th time derivative of a signed sum of vectors (a loop or a point)."""
+        s = mp.mpc(0)
+        for sign, name in terms:
+            L, th, e = state[name]
+            s += sign * self.dz(L, th, e, n)
+        return s
 
     def _jacobian(self, state):
         """d(loops)/d(unknowns) at a position (real, square)."""
@@ -169,7 +168,7 @@ class LoopReference:
         stop = mp.mpf(10) ** (-(mp.mp.dps - 6)) if strict else half
         last = None
         for _ in range(80):
-            state = self._state([q0], [theta2])
+            state = self.state([q0], [theta2])
             F = self._loops(state, 0)
             J = self._jacobian(state)
             dq = mp.lu_solve(J, mp.matrix([-f for f in F]))
@@ -181,6 +180,11 @@ class LoopReference:
         raise ArithmeticError(f"{self.case.name}: reference Newton did not converge at "
                               f"theta2 = {float(theta2)!r}")
 
+    def position(self, guess, theta2, strict=True):
+        """The unknowns (list of mpf, in the order of :attr:`unknowns`) that
+        close the loops at ``theta2``, from ``guess``."""
+        return self._newton([mp.mpf(g) for g in guess], mp.mpf(theta2), strict)
+
     def solve_one(self, guess, theta2, omega2, alpha2, jerk2, strict=False):
         """The unknowns and their first three time derivatives at one crank angle.
 
@@ -189,11 +193,11 @@ class LoopReference:
         """
         th = [mp.mpf(theta2), mp.mpf(omega2), mp.mpf(alpha2), mp.mpf(jerk2)]
         q = [self._newton([mp.mpf(g) for g in guess], th[0], strict)]
-        J = self._jacobian(self._state(q, th[:1]))
+        J = self._jacobian(self.state(q, th[:1]))
         nu = len(self.unknowns)
         for n in (1, 2, 3):
             # the n-th derivative of the loops with the unknowns' n-th derivatives at zero
-            state = self._state(q + [[mp.mpf(0)] * nu], th[:n + 1])
+            state = self.state(q + [[mp.mpf(0)] * nu], th[:n + 1])
             known = self._loops(state, n)
             x = mp.lu_solve(J, mp.matrix([-k for k in known]))
             q.append([x[k] for k in range(nu)])
@@ -201,7 +205,7 @@ class LoopReference:
 
     def start(self, guess):
         """The guesses (dict vector -> float) in the order of :attr:`unknowns`."""
-        return [float(guess[name]) for name, _ in self.unknowns]
+        return [guess[name] for name, _ in self.unknowns]
 
     def sweep(self, theta2, guess, motion=None, dps=None):
         """Continue from ``guess`` (dict vector -> float) along ``theta2``.
@@ -248,7 +252,7 @@ class LoopReference:
         """Append the case's outputs at one solved position to ``out``."""
         th = [mp.mpf(theta2), mp.mpf(motion["omega2"]), mp.mpf(motion["alpha2"]),
               mp.mpf(motion["jerk2"])]
-        state = self._state(q, th)
+        state = self.state(q, th)
         for name, (vec, kind, n) in self.case.outputs.items():
             L, angles, _ = state[vec]
             if kind == "angle":
@@ -258,60 +262,3 @@ class LoopReference:
             else:
                 value = L[n]
             out[name].append(value)
-
-
-def cycle_key(case, theta2, dps=DPS, motion=None):
-    """A hash of everything the reference of a cycle depends on."""
-    blob = json.dumps({"vectors": case.vectors, "loops": case.loops, "guess": case.guess,
-                       "outputs": case.outputs,
-                       "theta2": [float(t).hex() for t in theta2], "dps": dps,
-                       "motion": dict(MOTION, **(motion or {})), "version": 2},
-                      sort_keys=True, default=str)
-    return hashlib.sha256(blob.encode()).hexdigest()[:16]
-
-
-def cached(case, theta2, cache_dir=None, dps=DPS):
-    """Reference outputs of ``case`` along ``theta2`` (dict name -> float
-    array), read from ``cache_dir`` when computed before."""
-    key = cycle_key(case, theta2, dps)
-    path = os.path.join(cache_dir, f"reference-{case.name}-{key}.json") if cache_dir else None
-    if path and os.path.exists(path):
-        with open(path) as f:
-            data = json.load(f)
-    else:
-        data = LoopReference(case).sweep(theta2, case.guess, dps=dps)
-        if path:
-            os.makedirs(cache_dir, exist_ok=True)
-            with open(path, "w") as f:
-                json.dump(data, f)
-    return {k: np.array(v, dtype=float) for k, v in data.items()}
-
-
-def at_points(case, theta2, guesses, dps=60, motion=None):
-    """Reference at separate crank angles (no continuation), each from its own
-    guess (dict vector -> float), iterated to full precision: for points near
-    a toggle, where the assembly must come from an accurate position.
-    Raises ArithmeticError if Newton-Raphson left the guessed assembly.
-    Returns dict name -> float array."""
-    ref = LoopReference(case)
-    m = dict(MOTION, **(motion or {}))
-    out = {k: [] for k in case.outputs}
-    with mp.workdps(dps):
-        for t, g in zip(theta2, guesses):
-            start = ref.start(g)
-            q = ref.solve_one(start, float(t), m["omega2"], m["alpha2"], m["jerk2"],
-                              strict=True)
-            for k, u in enumerate(ref.unknowns):
-                if abs(float(q[0][k]) - start[k]) > 1e-5:
-                    raise ArithmeticError(f"{case.name}: the reference left the guessed "
-                                          f"assembly at theta2 = {float(t)!r} ({u})")
-            ref.record(out, q, float(t), m)
-    return {k: np.array([float(x) for x in v]) for k, v in out.items()}
-
-
-def toggle_angle(a, b, c, d, dps=60):
-    """Crank angle [rad] (an mpf) of the fourbar's toggle where
-    |O4 - A| = |b - c| (links 3 and 4 folded), by the law of cosines."""
-    with mp.workdps(dps):
-        a, b, c, d = (mp.mpf(x) for x in (a, b, c, d))
-        return +mp.acos((a * a + d * d - (b - c) ** 2) / (2 * a * d))

@@ -1,5 +1,6 @@
-"""The unit-aware layer: conversion at the boundary, Quantities out, errors
-that name the parameter, scalar/array agreement, and lazy outputs."""
+"""solver.mechanisms, the unit-aware layer: conversion at the boundary,
+Quantities out, errors that name the parameter, scalar/array agreement, and
+lazy outputs."""
 
 import numpy as np
 import pytest
@@ -7,15 +8,6 @@ import pytest
 from solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, NotAssemblable,
                     Q_, RotatingPoint, Singular, SliderCrank, SlottedLink, ureg)
 from solver.kernels import fourbar as fourbar_kernel
-from solver.units import ureg as units_ureg
-
-
-def test_one_registry():
-    import pint
-    assert ureg is units_ureg
-    assert pint.get_application_registry().get() is ureg or \
-        pint.get_application_registry() is ureg
-    assert isinstance(FourBar(a="2 in", b="6 in", c="9 in", d="7 in").a, ureg.Quantity)
 
 
 def test_units_do_not_change_the_answer():
@@ -29,12 +21,6 @@ def test_units_do_not_change_the_answer():
         assert getattr(us, name).m == pytest.approx(getattr(si, name).m, rel=1e-13)
     assert us.A_B.to("m/s^2").m == pytest.approx(si.A_B.m, rel=1e-13)
     assert str(us.A_B.units) == "meter / second ** 2"
-
-
-def test_rpm_and_degree_inputs():
-    r = RotatingPoint(p="1 m").solve(theta2="0 deg", omega2="60 rpm", alpha2="0 rad/s^2")
-    assert r.A_n.m == pytest.approx(-(2 * np.pi) ** 2)   # -p omega^2 along +x
-    assert r.A.to("ft/s^2").m.real == pytest.approx(-(2 * np.pi) ** 2 / 0.3048)
 
 
 @pytest.mark.parametrize("kwargs, name, words", [

@@ -102,8 +102,8 @@ def _values(key, case, theta2, h):
     if key == "loops":
         m = next(m for k, m in table.items() if k.startswith("loops"))
     elif key == "fd":
-        from .methods import Method, _fd_with
-        m = Method("fd", "fd", "fd", 3, _fd_with(h))
+        from .methods import Method, fd_with
+        m = Method("fd", "fd", "fd", 3, fd_with(h))
     elif key in table:
         m = table[key]
     else:
@@ -155,9 +155,9 @@ def newton_guesses(offsets=None, trials=24, seed=7, points=None):
         ``offsets`` [rad] and per point ``same``, ``other``, ``failed``,
         ``wrong`` (fractions per offset), with the point's description.
     """
-    from .. import VectorLoopLinkage
-    from ..errors import AccelabError
-    from ..units import Q_
+    from solver import VectorLoopLinkage
+    from solver.errors import AccelabError
+    from solver.units import Q_
     from .cases import description
     cases = all_cases()
     offsets = np.logspace(-3, math.log10(math.pi), 16) if offsets is None else offsets

@@ -7,14 +7,14 @@ import sys
 import pytest
 
 from solver.batch import read_case, solve_case, solve_cases
-from solver.cli import main
+from accelab.cli import main
 
 GOOD = {"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
         "theta2": "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}
 
 
 def run_cli(args, stdin=None):
-    return subprocess.run([sys.executable, "-m", "solver", *args], input=stdin,
+    return subprocess.run([sys.executable, "-m", "accelab", *args], input=stdin,
                           capture_output=True, text=True, timeout=120)
 
 
@@ -130,3 +130,15 @@ def test_help_everywhere_has_examples():
     assert p.returncode == 0 and "examples:" in p.stdout
     p = run_cli(["solve", "--help"])
     assert p.returncode == 0 and "--cases" in p.stdout and "examples:" in p.stdout
+
+
+def test_python_m_solver_still_runs_the_whole_command(tmp_path):
+    """``python -m solver`` (a compatibility entry point) is ``accelab``."""
+    path = tmp_path / "ok.json"
+    path.write_text(json.dumps([GOOD]))
+    p = subprocess.run([sys.executable, "-m", "solver", "solve", "--cases", str(path)],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0 and json.loads(p.stdout)[0]["ok"], p.stderr
+    p = subprocess.run([sys.executable, "-m", "solver", "--help"], capture_output=True,
+                       text=True, timeout=120)
+    assert p.returncode == 0 and "bench" in p.stdout and "assign" in p.stdout

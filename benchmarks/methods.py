@@ -127,7 +127,7 @@ def _scalar(case, theta2):
 def unit_mechanism(case):
     """The unit-aware object of a closed-form case, geometry as Quantities."""
     import solver
-    from ..units import Q_
+    from solver.units import Q_
     _closed_form(case)
     cls = getattr(solver, _UNIT_CLASSES[case.mechanism])
     geometry = {}
@@ -143,7 +143,7 @@ def unit_mechanism(case):
 
 def unit_inputs(theta2):
     """The input motion as Quantities (built once, outside the timed work)."""
-    from ..units import Q_
+    from solver.units import Q_
     t = theta2 if np.ndim(theta2) else float(theta2)
     return {"theta2": Q_(t, "rad"), "omega2": Q_(MOTION["omega2"], "rad/s"),
             "alpha2": Q_(MOTION["alpha2"], "rad/s^2"), "jerk2": Q_(MOTION["jerk2"], "rad/s^3")}
@@ -168,7 +168,7 @@ def _units(case, theta2):
 def loop_tolerance_parameter():
     """Name of the convergence-tolerance argument of
     :meth:`solver.VectorLoopLinkage.solve`, or None if it has none."""
-    from .. import VectorLoopLinkage
+    from solver import VectorLoopLinkage
     params = inspect.signature(VectorLoopLinkage.solve).parameters
     for name in ("tol", "tolerance", "xtol", "rtol"):
         if name in params:
@@ -178,7 +178,7 @@ def loop_tolerance_parameter():
 
 def loop_default_tolerance():
     """The default of that argument (None if there is none)."""
-    from .. import VectorLoopLinkage
+    from solver import VectorLoopLinkage
     name = loop_tolerance_parameter()
     if name is None:
         return None
@@ -187,14 +187,14 @@ def loop_default_tolerance():
 
 
 def loop_linkage(case):
-    from .. import VectorLoopLinkage
+    from solver import VectorLoopLinkage
     from .cases import description
     return VectorLoopLinkage(**description(case))
 
 
 def _loops_with(tol):
     def prepare(case, theta2):
-        from ..units import Q_
+        from solver.units import Q_
         linkage = loop_linkage(case)
         names = _names(case, 3)
         inputs = unit_inputs(theta2)
@@ -221,7 +221,7 @@ def _loops_with(tol):
 
 
 # --- finite differences of the position ----------------------------------------------
-def _fd_with(h):
+def fd_with(h):
     def prepare(case, theta2):
         _closed_form(case)
         groups = {}
@@ -265,7 +265,7 @@ GRAPHICAL = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar")
 
 
 def _graphical(case, theta2):
-    from ..graphical import construct
+    from solver.graphical import construct
     if case.mechanism not in GRAPHICAL:
         raise NotApplicable(f"{case.name} has no graphical construction")
     names = _names(case, 2)
@@ -304,7 +304,7 @@ def methods(include_peers=True):
                                   3, _loops_with(tol), setting=tol, vectorised=False))
     for h in FD_STEPS:
         out.append(Method(f"fd-h{h:.0e}", f"finite differences, h = {h:.0e} rad", "fd", 3,
-                          _fd_with(h), setting=h))
+                          fd_with(h), setting=h))
     out.append(Method("graphical", "graphical construction", "graphical", 2, _graphical,
                       vectorised=False))
     if include_peers:

@@ -132,9 +132,9 @@ def loops(n=360, repeats=5):
     """Time per position [us] of the general solver against the number of
     loops, position to jerk, over ``n`` positions of a full crank turn."""
     from .cases import description
-    from .. import VectorLoopLinkage
-    from ..units import Q_
-    from ..vectorloops.examples import fourbar as fourbar_example
+    from solver import VectorLoopLinkage
+    from solver.units import Q_
+    from solver.vectorloops.examples import fourbar as fourbar_example
     cases = all_cases()
     chain = [from_example("fourbar-loops", "fourbar (1 loop)", fourbar_example()),
              cases["sixbar-watt2"], cases["sixbar-slider"], cases["eightbar"]]

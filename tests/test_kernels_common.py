@@ -1,7 +1,9 @@
-"""Long sweeps are solved block by block (the fourbar) or piece by piece (the
-other closed forms) to keep their work arrays in the cache: the answers must
-be the same bits as one whole-array evaluation and as the scalar solves,
-across block boundaries, for every output and the links' unit vectors."""
+"""solver.kernels.common: long sweeps are solved piece by piece
+(:func:`~solver.kernels.common.pieces`) to keep their work arrays in the
+cache, by the fourbar's in-place path or by :func:`in_pieces` for the other
+closed forms: the answers must be the same bits as one whole-array
+evaluation and as the scalar solves, across piece boundaries, for every
+output and the links' directions (cos, sin)."""
 
 import numpy as np
 import pytest
@@ -26,22 +28,22 @@ def sweep(n, seed=0):
 
 @pytest.mark.parametrize("circuit", ["open", "crossed"])
 @pytest.mark.parametrize("block", [1000, None])
-def test_fourbar_blocks_match_whole_array_and_scalars(monkeypatch, circuit, block):
+def test_fourbar_in_place_pieces_match_whole_array_and_scalars(monkeypatch, circuit, block):
     if block:
-        monkeypatch.setattr(fourbar, "BLOCK", block)
-    n = 2 * fourbar.BLOCK + 123
+        monkeypatch.setattr(common, "PIECE", block)
+    n = 2 * common.PIECE + 123
     theta2, omega2 = sweep(n)
     args = (5.0, 4.0, 6.0, 3.5, theta2, omega2, -30.0, 400.0, 0.35, circuit)
     blocks = fourbar.solve(*args)
     assert set(np.unique(blocks.status)) >= {0, 1}
-    monkeypatch.setattr(fourbar, "MIN_BLOCKED", 10 ** 9)   # one whole-array evaluation
+    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10 ** 9)   # one whole-array evaluation
     whole = fourbar.solve(*args)
     for name in ORDER3:
         assert same(getattr(blocks, name), getattr(whole, name)), name
     for link in "234":
-        for x, y in zip(blocks._unit[link], whole._unit[link]):
+        for x, y in zip(blocks.directions[link], whole.directions[link]):
             assert same(x, y), link
-    for i in (0, fourbar.BLOCK - 1, fourbar.BLOCK, n - 1):
+    for i in (0, common.PIECE - 1, common.PIECE, n - 1):
         one = fourbar.solve(5.0, 4.0, 6.0, 3.5, float(theta2[i]), float(omega2[i]), -30.0,
                             400.0, 0.35, circuit)
         for name in ORDER3:
@@ -50,14 +52,14 @@ def test_fourbar_blocks_match_whole_array_and_scalars(monkeypatch, circuit, bloc
 
 
 @pytest.mark.parametrize("order", [0, 1, 2])
-def test_fourbar_blocks_lower_orders_and_shapes(monkeypatch, order):
-    monkeypatch.setattr(fourbar, "BLOCK", 700)
-    monkeypatch.setattr(fourbar, "MIN_BLOCKED", 0)
+def test_fourbar_in_place_lower_orders_and_shapes(monkeypatch, order):
+    monkeypatch.setattr(common, "PIECE", 700)
+    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 0)
     theta2 = np.linspace(-4.0, 4.0, 3 * 1001).reshape(3, 1001)
     blocks = fourbar.solve(2.0, 6.0, 9.0, 7.0, theta2, 10.0, -5.0, order=order)
-    monkeypatch.setattr(fourbar, "MIN_BLOCKED", 10 ** 9)
+    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10 ** 9)
     whole = fourbar.solve(2.0, 6.0, 9.0, 7.0, theta2, 10.0, -5.0, order=order)
-    assert blocks.keys() == whole.keys()
+    assert blocks.keys() == whole.keys() and blocks.order == whole.order == order
     for name in ORDER3[:2 + 2 * order] + ORDER3[-3:]:
         assert same(getattr(blocks, name), getattr(whole, name)), name
 
@@ -78,9 +80,9 @@ def test_other_kernels_pieces_match_whole_array(monkeypatch, kernel, geo):
     monkeypatch.setattr(common, "MIN_PIECEWISE", 0)
     pieces = kernel.solve(**geo, **kw)
     assert pieces.keys() == whole.keys()
-    for name in whole.keys():
+    for name in whole.keys() + ["directions"]:
         x, y = getattr(pieces, name), getattr(whole, name)
-        if name == "_unit":
+        if name == "directions":
             assert x.keys() == y.keys()
             assert all(same(u, v) for k in x for u, v in zip(x[k], y[k]))
         elif isinstance(y, np.ndarray):

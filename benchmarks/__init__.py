@@ -1,5 +1,10 @@
 """The speed-against-accuracy benchmark (``accelab bench``, ``make bench``).
 
+It sits beside the library, not in it: it measures :mod:`solver` from the
+outside and needs mpmath (``pip install -e ".[bench]"``), which a plain
+install of the library does not. Nothing imports mpmath until a run starts
+(:mod:`.cli` checks first and says what to install).
+
 :mod:`.cases` is the documented set of linkages, :mod:`.reference` their
 high-precision (mpmath) solution, :mod:`.methods` the ways of computing the
 same kinematics that are compared (closed forms unit-free and unit-aware, a

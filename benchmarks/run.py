@@ -1,7 +1,7 @@
 """The whole benchmark: every case by every method, the stability study, the
 scaling, the goals; written as ``bench.json`` with the charts beside it.
 
->>> from solver.bench.run import run_benchmark
+>>> from benchmarks.run import run_benchmark
 >>> data = run_benchmark("build/bench", mode="quick")   # doctest: +SKIP
 """
 
@@ -308,7 +308,8 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
 def _thresholds(st):
     """Where the closed forms start refusing, and where their condition
     measure crosses the solver's SINGULAR_CONDITION, on the distance axis."""
-    from ..kernels import common
+    from solver.kernels import common
+    from solver.vectorloops import SINGULAR_CONDITION
     out = {}
     d = stability.threshold_distance(st, "kernels")
     if d:
@@ -323,9 +324,9 @@ def _thresholds(st):
         near = ok & (delta < 1e-3)
         if near.sum() >= 2:
             k = float(np.median(cond[near] / np.sqrt(delta[near])))
-            out["condition"] = (common.SINGULAR_CONDITION / k) ** 2
+            out["condition"] = (SINGULAR_CONDITION / k) ** 2
             out["condition_text"] = (f"condition = SINGULAR_CONDITION\n"
-                                     f"({common.SINGULAR_CONDITION:g})")
+                                     f"({SINGULAR_CONDITION:g})")
     errs = st["methods"].get("kernels", {}).get("errors", [])
     answered = [(x, e) for x, e in zip(delta, errs) if e is not None]
     if answered:
