@@ -1,4 +1,4 @@
-"""The ``accelab solve`` command: batch contract (CONVENTIONS) and the table."""
+"""The ``accelab solve`` command: batch contract (docs/conventions.md#batch-format) and the table."""
 
 import json
 import subprocess
