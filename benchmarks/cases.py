@@ -270,7 +270,7 @@ def all_cases():
 
 
 def description(case, guess=None):
-    """The case as a CONVENTIONS loops description (quantity strings), with
+    """The case as a loops description (docs/conventions.md#vector-loop-format) (quantity strings), with
     guesses (default: the case's) for :class:`solver.VectorLoopLinkage`."""
     guess = case.guess if guess is None else guess
     vectors = {}

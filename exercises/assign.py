@@ -5,7 +5,7 @@ Before anything is written, every student on the roster gets their variant
 drawn (a student with no valid problem stops the command with the reason). An
 assignment that already has submissions is not changed unless ``force`` is
 given: new settings would silently regrade everyone against new values. With
-``force`` the old settings are kept in ``source/<A>/accelab.<time>.json`` and
+``force`` the old settings are kept in ``.accelab/replaced/<A>-<time>.json`` and
 the changes are reported.
 """
 
@@ -88,7 +88,8 @@ def assign(course_dir, assignment, families=None, units="US", tolerance=0.01, ra
                 "settings are kept).")
         if taken:
             stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
-            keep = os.path.join(os.path.dirname(spec_path), f"accelab.{stamp}.json")
+            keep = os.path.join(course_dir, ".accelab", "replaced", f"{assignment}-{stamp}.json")
+            os.makedirs(os.path.dirname(keep), exist_ok=True)
             shutil.copy2(spec_path, keep)
             say(f"replacing assignment {assignment!r} with {len(taken)} submission(s); old "
                 f"settings kept in {keep}; changes: {'; '.join(diff) or 'none'}")

@@ -58,7 +58,7 @@ def register(subparsers):
     p.add_argument("--release", action="store_true", help="also run release_assignment")
     p.add_argument("--force", action="store_true",
                    help="replace an assignment that already has submissions (keeps the old "
-                        "settings in source/A/accelab.<time>.json and prints the changes)")
+                        "settings in COURSE/.accelab/replaced/ and prints the changes)")
     p.set_defaults(func=run_assign)
 
     p = subparsers.add_parser(

@@ -1,4 +1,4 @@
-"""A case of the batch format (CONVENTIONS, "Batch contract"), read once.
+"""A case of the batch format (docs/conventions.md#batch-format), read once.
 
 A case is a dict like ``{"mechanism": "fourbar", "a": "2 in", ..., "theta2":
 "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}``: the mechanism, its

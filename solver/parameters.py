@@ -110,5 +110,5 @@ PARAMETERS = {
         ()),
 }
 
-#: the mechanisms of the batch format (CONVENTIONS), besides "loops"
+#: the mechanisms of the batch format (docs/conventions.md#batch-format), besides "loops"
 BATCH_MECHANISMS = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")

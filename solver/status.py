@@ -4,7 +4,7 @@ Each position a solver answers for is ``OK``, ``NOT_ASSEMBLABLE`` (the links
 cannot close the loops there) or ``SINGULAR`` (the position exists but its
 velocity and acceleration equations are singular, or too ill-conditioned to
 vouch for the numbers). :data:`STATUS_NAMES` gives each the name of the
-batch contract's error kind (CONVENTIONS), the ``kind`` of the matching
+batch contract's error kind (docs/conventions.md#error-kinds), the ``kind`` of the matching
 exception in :mod:`solver.errors`.
 """
 

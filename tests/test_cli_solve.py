@@ -1,4 +1,4 @@
-"""The ``accelab solve`` command: batch contract (CONVENTIONS) and the table."""
+"""The ``accelab solve`` command: batch contract (docs/conventions.md#batch-format) and the table."""
 
 import json
 import subprocess
@@ -132,13 +132,13 @@ def test_help_everywhere_has_examples():
     assert p.returncode == 0 and "--cases" in p.stdout and "examples:" in p.stdout
 
 
-def test_python_m_solver_still_runs_the_whole_command(tmp_path):
-    """``python -m solver`` (a compatibility entry point) is ``accelab``."""
+def test_python_m_accelab_runs_the_whole_command(tmp_path):
+    """``python -m accelab`` is the ``accelab`` command."""
     path = tmp_path / "ok.json"
     path.write_text(json.dumps([GOOD]))
-    p = subprocess.run([sys.executable, "-m", "solver", "solve", "--cases", str(path)],
+    p = subprocess.run([sys.executable, "-m", "accelab", "solve", "--cases", str(path)],
                        capture_output=True, text=True, timeout=120)
     assert p.returncode == 0 and json.loads(p.stdout)[0]["ok"], p.stderr
-    p = subprocess.run([sys.executable, "-m", "solver", "--help"], capture_output=True,
+    p = subprocess.run([sys.executable, "-m", "accelab", "--help"], capture_output=True,
                        text=True, timeout=120)
     assert p.returncode == 0 and "bench" in p.stdout and "assign" in p.stdout

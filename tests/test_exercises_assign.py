@@ -9,7 +9,7 @@ import sys
 from exercises.assign import AssignError, assign
 from exercises.simulate import key_code, submit
 
-ACCELAB = [sys.executable, "-m", "solver"]
+ACCELAB = [sys.executable, "-m", "accelab"]
 
 
 def test_assign_checks_every_roster_student_and_says_which_fails(tmp_path):
@@ -44,10 +44,10 @@ def test_an_assignment_with_submissions_is_replaced_only_when_forced(tmp_path):
         assert "already has 1 submission" in str(exc) and "units" in str(exc)
     said = []
     assign(course, "A", ["rotation"], units="SI", generate=False, force=True, say=said.append)
-    kept = [f for f in os.listdir(os.path.join(course, "source", "A"))
-            if f.startswith("accelab.") and f != "accelab.json"]
-    assert len(kept) == 1 and "units" in said[0]
-    assert json.load(open(os.path.join(course, "source", "A", kept[0])))["units"] == "US"
+    folder = os.path.join(course, ".accelab", "replaced")
+    kept = os.listdir(folder)
+    assert len(kept) == 1 and kept[0].startswith("A-") and "units" in said[0]
+    assert json.load(open(os.path.join(folder, kept[0])))["units"] == "US"
 
 
 def test_demo_never_deletes_a_folder_it_did_not_make(tmp_path):

@@ -41,7 +41,7 @@ def nbgrader(*args, cwd, user=None):
 
 
 def accelab(*args, cwd):
-    return run([sys.executable, "-m", "solver", *args], cwd)
+    return run([sys.executable, "-m", "accelab", *args], cwd)
 
 
 def student_config(home, exchange):

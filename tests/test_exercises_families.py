@@ -189,7 +189,7 @@ def test_public_variant_has_no_answers_and_exprs_reproduce_the_key():
 
 def test_variant_cli_json(tmp_path, capsys):
     from exercises.notebook import write_source
-    from solver.cli import main
+    from accelab.cli import main
     spec = make_spec("mech101", "A", ["rotation", "tolerance"], units="SI")
     write_source(str(tmp_path), spec)
     assert main(["variant", "--course", str(tmp_path), "--assignment", "A", "--student",

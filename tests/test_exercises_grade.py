@@ -32,7 +32,7 @@ from _exercises_helpers import answers_code
 pytestmark = pytest.mark.slow
 
 SECRET = "s3cr3t-instructor-token-4711"
-ACCELAB = [sys.executable, "-m", "solver"]
+ACCELAB = [sys.executable, "-m", "accelab"]
 CELL_SECONDS, TOTAL_SECONDS = 3, 20
 HONEST = ["ann", "bob"]
 

@@ -1,5 +1,5 @@
 """The closed-form mechanisms in the reference: written as their vector loops
-(CONVENTIONS) and solved by :class:`~.loops.LoopReference`, the same code
+(docs/conventions.md#mechanisms) and solved by :class:`~.loops.LoopReference`, the same code
 that solves every other linkage.
 
 Each mechanism's position is first found by plain geometry in mpmath
@@ -259,7 +259,7 @@ def slotted_link(theta, omega, alpha, jerk, p, p_dot, p_ddot, p_dddot, dps=DPS):
 def batch_branch(mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
                  circuit="open", dps=DPS):
     """The reference as the batch solver reports it: SI floats, vectors as
-    [x, y], named as in CONVENTIONS (with a coupler point P: A_P, J_P ...; for
+    [x, y], named as in docs/conventions.md#outputs (with a coupler point P: A_P, J_P ...; for
     the inverted slider-crank also A_coriolis, A_slip, V_slip and A_A4, the
     acceleration of the point of link 4 under A). None if not assemblable."""
     args = (mechanism, geometry, theta2, omega2, alpha2, jerk2, theta1, circuit)

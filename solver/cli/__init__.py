@@ -7,7 +7,7 @@ and the function that runs it. Nothing here knows the layers above.
 
 from . import draw, figures, solve
 
-__all__ = ["register", "main"]
+__all__ = ["register"]
 
 
 def register(subparsers):
@@ -15,10 +15,3 @@ def register(subparsers):
     for command in (solve, draw, figures):
         command.register(subparsers)
 
-
-def main(argv=None):
-    """The whole ``accelab`` command, for callers written before it moved to
-    :func:`accelab.cli.main` (the one import of the application layer from
-    the library, allowed as a compatibility entry point in tests/test_layers.py)."""
-    from accelab.cli import main as accelab_main
-    return accelab_main(argv)

@@ -32,7 +32,7 @@ mechanisms and their parameters (alpha2 and jerk2 default to 0):
                 f", theta2, omega2, alpha2, jerk2"
                 + (", circuit=open|crossed" if PARAMETERS[m].circuits else "")
                 for m in BATCH_MECHANISMS) + """
-  loops: a JSON description (see CONVENTIONS); use --cases
+  loops: a JSON description (see docs/conventions.md#vector-loop-format); use --cases
 
 exit status: 0 every case solved, 1 some case reported an error, 2 unusable input."""
 

@@ -80,7 +80,7 @@ def construct(mechanism, circuit=None, **params):
 
 
 def construct_case(case):
-    """Construction of one batch case (CONVENTIONS format, read by
+    """Construction of one batch case (docs/conventions.md#batch-format, read by
     :func:`solver.cases.read_case`). Raises the AccelabError family."""
     from ..cases import check_mechanism, read_case
     from ..errors import InvalidInput

@@ -34,7 +34,7 @@ def construct(a, b, theta2, omega2, alpha2, c=0.0, theta1=0.0, circuit="open"):
         Angle of the slide axis [rad].
     circuit : {'open', 'crossed'}
         ``open``: the slider on the +x side (along the slide axis) of the crank
-        pin A, as in CONVENTIONS.
+        pin A, as in docs/conventions.md#circuits.
 
     Returns
     -------

@@ -1,6 +1,6 @@
 """The pin-jointed fourbar, position to jerk, in closed form (unit-free).
 
-Vector loop (eq. 4.5c, repeated in section 7.3; CONVENTIONS):
+Vector loop (eq. 4.5c, repeated in section 7.3; docs/conventions.md#mechanisms):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0
 
 Position. With A = a e^{j theta2} and O4 = d e^{j theta1}, the triangle

@@ -1,6 +1,6 @@
 """The inverted slider-crank, position to jerk, with its Coriolis term (unit-free).
 
-Vector loop (CONVENTIONS; its second derivative is eq. 7.20):
+Vector loop (docs/conventions.md#mechanisms; its second derivative is eq. 7.20):
     a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
     theta3 = theta4 + gamma,  b(t) the varying (signed) length from B to A.
 

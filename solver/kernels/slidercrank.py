@@ -1,6 +1,6 @@
 """The offset slider-crank, position to jerk, in closed form (unit-free).
 
-Vector loop (eq. 4.14b, repeated in section 7.3; CONVENTIONS):
+Vector loop (eq. 4.14b, repeated in section 7.3; docs/conventions.md#mechanisms):
     a e^{j theta2} - b e^{j theta3} - c e^{j theta4} - d e^{j theta1} = 0,
     theta4 = theta1 + 90 deg, c = slider offset (signed), d = slider position.
 

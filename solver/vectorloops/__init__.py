@@ -1,6 +1,6 @@
 """Any planar linkage as vector loops, solved by Newton-Raphson (section 7.8).
 
-A linkage is a set of named vectors and the loops they close (CONVENTIONS,
+A linkage is a set of named vectors and the loops they close (docs/conventions.md#vector-loop-format,
 "Any linkage as vector loops"). Position comes from Newton-Raphson with the
 analytic Jacobian; velocity, acceleration and jerk from linear solves with
 the same Jacobian. :class:`VectorLoopLinkage` is the unit-aware class;

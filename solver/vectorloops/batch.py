@@ -1,4 +1,4 @@
-"""The ``"mechanism": "loops"`` case of the batch contract (CONVENTIONS), which
+"""The ``"mechanism": "loops"`` case of the batch contract (docs/conventions.md#batch-format), which
 :func:`solver.batch.solve_case` hands over to :func:`solve_loops_case`."""
 
 import numpy as np

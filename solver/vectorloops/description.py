@@ -1,4 +1,4 @@
-"""Read a vector-loop description (CONVENTIONS, "Any linkage as vector loops")
+"""Read a vector-loop description (docs/conventions.md#vector-loop-format)
 into index arrays of SI floats that the unit-free Newton-Raphson core uses.
 
 Each vector v has a length L_v (fixed, or an unknown: a slider) and an angle

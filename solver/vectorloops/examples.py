@@ -1,6 +1,6 @@
 """Linkages written as vector loops, shipped as examples and used by the tests,
 the course and the benchmark. Each function returns a description dict in
-the CONVENTIONS format (without the input motion)."""
+the format of docs/conventions.md#vector-loop-format (without the input motion)."""
 
 
 def fourbar(a="2 in", b="6 in", c="9 in", d="7 in", p="3 in", delta3="40 deg",
