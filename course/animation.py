@@ -142,7 +142,7 @@ def _value(con, name, motion_values):
 def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitudes=None,
             kinds=("resultant",), title=None, names=None, trace=(), fps=10, dpi=96,
             size=(7.4, 3.5)):
-    """Animate ``case`` (a batch case, CONVENTIONS format) through its cycle.
+    """Animate ``case`` (a batch case, as docs/conventions.md describes) through its cycle.
 
     Parameters
     ----------
