@@ -36,7 +36,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from course.animation import animate
-from course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style, vector
+from course.kit import (COLORS, cartesian, explore, in_g, point_label, polar, stated,
+                        use_style, vector)
 from exercises.practice import practice
 from solver import Q_, RotatingPoint
 from solver.graphical import construct_case
@@ -329,8 +330,8 @@ P1 = R_PA1
 ax1.add_patch(plt.Rectangle((-0.25, -0.08), 0.5, 0.08, fc="#dddddd", ec="#4d4d4d"))
 ax1.plot([0, P1.real], [0, P1.imag], color="#4d4d4d", lw=4, solid_capstyle="round")
 ax1.scatter([0, P1.real], [0, P1.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
-ax1.annotate("A", (0, 0), xytext=(-16, 6), textcoords="offset points")
-ax1.annotate("P", (P1.real, P1.imag), xytext=(-16, 4), textcoords="offset points")
+point_label(ax1, "A", 0j)
+point_label(ax1, "P", P1)
 vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
 vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential",
        r"$\mathbf{A}^t_{PA}$", s1)
@@ -351,7 +352,7 @@ ax2.plot(road.real, road.imag, color="#bbbbbb", lw=6, solid_capstyle="butt")
 ax2.plot([R_A2.real - 15, R_A2.real + 15], [R_A2.imag] * 2, color="#bbbbbb", lw=6)
 for z, name in ((R_P2, "P"), (R_A2, "A")):
     ax2.scatter([z.real], [z.imag], marker="s", s=60, color="#4d4d4d", zorder=5)
-    ax2.annotate(f"car {name}", (z.real, z.imag), xytext=(8, -16), textcoords="offset points")
+    point_label(ax2, f"car {name}", z)
 ax2.plot([R_P2.real, R_A2.real], [R_P2.imag, R_A2.imag], ls=":", color="#888888")
 vector(ax2, R_P2, complex(A_P2.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s2)
 vector(ax2, R_A2, complex(A_A2.magnitude), "known", r"$\mathbf{A}_A$", s2)

@@ -90,7 +90,8 @@ use_style()
 #
 # ### 1. Newton-Raphson by hand, on the fourbar
 #
-# The fourbar $a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in at $\theta_2 = 30°$, from the guess
+# The fourbar $a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in at $\theta_2 = 30°$ (the course's Example
+# 7-1 linkage: the chapter's example prints no numbers, **these are the course's own**), from the guess
 # $\theta_3 = 90°$, $\theta_4 = 130°$. Ten lines do it; the cell prints the size of the loop's
 # residual at each step and checks the result against the closed form of notebook 3.
 
@@ -554,7 +555,44 @@ explore(draw, theta2=(0, 360, 5, 57, "deg"))
 # nearly zero quantity, so finite crank motion demands unbounded rates: a limit position.
 #
 # </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+assert len(watt["loops"]) == 2 and len(slider_six["loops"]) == 2
+
+# %% [markdown]
+# ## Further problems
 #
+# In the style of the chapter's problem set, for a linkage with no closed form; set it up as
+# vectors and loops, then solve with `VectorLoopLinkage`. The answers are folded.
+#
+# **Problem 10.1.** The sixbar with a slider of example 2 runs at a steady 12 rad/s. At
+# $\theta_2 = 120^\circ$, where is the slider, how fast is it moving and how hard is it
+# accelerating?
+#
+# <details><summary>Answer</summary>
+#
+# $S$ = 12.42 in, $\dot S$ = 7.97 in/s and $\ddot S$ = 39.1 in/s$^2$; the rod CD then lies
+# almost along the slide ($\theta_5 = 1.05^\circ$).
+#
+# </details>
+#
+# **Problem 10.2.** How many unknowns does a linkage of three independent loops need, and how
+# many rows has its Jacobian?
+#
+# <details><summary>Answer</summary>
+#
+# Six unknowns (two per loop) and a square 6 by 6 Jacobian: each loop gives the real and the
+# imaginary part of one vector equation.
+#
+# </details>
+
+# %% tags=["remove-input"] jupyter={"source_hidden": true}
+r101 = linkage.solve(theta2="120 deg", omega2="12 rad/s", alpha2="0 rad/s^2")
+S101 = r101.vectors["S"]
+stated(S101.length, "12.42", "in"), stated(S101.length_dot, "7.97", "in/s")
+stated(S101.length_ddot, "39.1", "in/s^2"), stated(r101.vectors["R5"].angle, "1.05", "deg");
+
+# %% [markdown]
 # ## Common mistakes
 #
 # - **Unknowns and equations that do not match** (two per loop). The solver refuses such a

@@ -45,7 +45,7 @@ STATIC_WIDTH = 900
 
 __all__ = ["COLORS", "LINESTYLES", "LINK_COLOR", "CIRCUIT_COLORS", "G0", "use_style",
            "is_static", "static_values", "small_multiples", "explore", "cartesian", "polar",
-           "in_g", "vector", "stated", "measure"]
+           "in_g", "vector", "point_label", "stated", "measure"]
 
 
 def use_style():
@@ -324,3 +324,11 @@ def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, beside=0.0, 
     (negative: right), e.g. off a link it lies along. Returns the tip."""
     from solver.graphical.draw import arrow
     return arrow(ax, start, vec, kind, label, scale, beside)
+
+
+def point_label(ax, text, z, **kw):
+    """Name the point ``z`` (complex, drawing units): the label is placed when the
+    figure is drawn, beside the point and clear of the figure's lines, texts and
+    other labels (as :func:`vector` places its labels)."""
+    from solver.graphical.labels import labels_of
+    labels_of(ax).add_point(text, complex(z), fontsize=kw.pop("fontsize", 11), **kw)
