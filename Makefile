@@ -7,7 +7,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv test test-fast demo figures docs bench clean
+.PHONY: venv test test-fast demo figures docs bench bench-grading clean
 
 venv: $(STAMP)
 
@@ -42,6 +42,10 @@ docs: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/accelab bench --out build/bench
+
+# grading speed: 20 submissions of the demo assignment, sandbox, feedback and CSV
+bench-grading: $(STAMP)
+	$(BIN)/python -m benchmarks.grading --students 20 --jobs 2 --out build/bench
 
 clean:
 	rm -rf build .pytest_cache

@@ -21,7 +21,7 @@ def _box(cons):
     return min(xs) - m, max(xs) + m, min(ys) - m, max(ys) + m
 
 
-def draw(problem, dpi=90):
+def statement_figure(problem, dpi=90):
     """PNG bytes of the problem's figure."""
     import matplotlib
     matplotlib.use("Agg")

@@ -22,7 +22,7 @@ import nbformat
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
 from .assignment import DEFAULT_ANGLE_TOLERANCE, build_variant, check_spec
-from .figure import draw
+from .figure import statement_figure
 
 PREVIEW_STUDENT = "preview"
 
@@ -92,7 +92,7 @@ def build_notebook(spec, title=None):
                        f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
                        "v = load_variant(SPEC, student_id())\n", "parameters", locked=True))
     for k, problem in enumerate(preview.problems, start=1):
-        png = base64.b64encode(draw(problem)).decode("ascii")
+        png = base64.b64encode(statement_figure(problem)).decode("ascii")
         rows = "\n".join(f"| `{a.name}` | {a.description} | "
                          f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')} |"
                          for a in problem.answers)

@@ -88,10 +88,10 @@ class Practice:
         return Q_(value, Q_(1.0, a.unit or "").to_base_units().units).to(a.unit or "")
 
     def _figure_png(self):
-        from .figure import draw
+        from .figure import statement_figure
         try:
             with silenced():
-                return draw(self.problem)
+                return statement_figure(self.problem)
         except Exception:
             return None
 

@@ -222,7 +222,7 @@ if __name__ == "__main__":  # regenerate the baselines
 @pytest.mark.parametrize("family", ["rotation", "fourbar", "coupler", "slidercrank", "coriolis",
                                     "fivebar", "jerk", "tolerance"])
 def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
-    """exercises.figure.draw(problem) -> PNG bytes, drawn by draw_linkage (the
+    """exercises.figure.statement_figure(problem) -> PNG bytes, drawn by draw_linkage (the
     project's one linkage drawer) as a schematic with the chapter's symbols."""
     from exercises import figure
     from exercises.families import generate
@@ -235,7 +235,7 @@ def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
         return real(con, *args, **kw)
 
     monkeypatch.setattr(drawing, "draw_linkage", spy)
-    png = figure.draw(generate(family, 7))
+    png = figure.statement_figure(generate(family, 7))
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 3000
     assert calls and all(kw.get("vectors") is False for kw in calls)
     assert calls[0].get("symbols") is True

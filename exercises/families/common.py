@@ -91,7 +91,7 @@ def _in_unit(value, unit, name):
 PRACTICE = contextvars.ContextVar("practice", default=False)
 
 
-def draw(rng, spec, nonzero=False, signed=False):
+def draw_value(rng, spec, nonzero=False, signed=False):
     """One value on the grid lo, lo+step, ..., hi (textbook precision).
 
     ``signed`` also flips the sign at random; ``nonzero`` redraws zero. Practice
@@ -131,7 +131,7 @@ def solve_checked(cases, min_condition=MIN_CONDITION):
     return outputs
 
 
-def generate(family, seed, build, units):
+def first_accepted(family, seed, build, units):
     """Draw with ``build(rng)`` until it returns a Problem; the rng is seeded by
     ``seed`` so the result is deterministic."""
     check_units(units)
@@ -156,8 +156,8 @@ def sizable(*pairs):
             raise Reject()
 
 
-__all__ = ["Problem", "Reject", "GenerationError", "UNITS", "ranges_for", "draw", "fmt",
-           "solve_checked", "generate", "sizable", "display_unit", "check_units"]
+__all__ = ["Problem", "Reject", "GenerationError", "UNITS", "ranges_for", "draw_value", "fmt",
+           "solve_checked", "first_accepted", "sizable", "display_unit", "check_units"]
 
 
 FOURBAR_DEFAULTS = {"a": (1.0, 4.0, 0.5, "length"), "b": (3.0, 9.0, 0.5, "length"),
@@ -169,13 +169,13 @@ FOURBAR_DEFAULTS = {"a": (1.0, 4.0, 0.5, "length"), "b": (3.0, 9.0, 0.5, "length
 def fourbar_case(rng, r, L):
     """A fourbar batch case drawn from the ranges ``r`` (lengths in unit ``L``);
     the circuit is drawn too."""
-    return {"mechanism": "fourbar", "a": fmt(draw(rng, r["a"], nonzero=True), L),
-            "b": fmt(draw(rng, r["b"], nonzero=True), L),
-            "c": fmt(draw(rng, r["c"], nonzero=True), L),
-            "d": fmt(draw(rng, r["d"], nonzero=True), L),
-            "theta2": fmt(draw(rng, r["theta2"]), "deg"),
-            "omega2": fmt(draw(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
-            "alpha2": fmt(draw(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
+    return {"mechanism": "fourbar", "a": fmt(draw_value(rng, r["a"], nonzero=True), L),
+            "b": fmt(draw_value(rng, r["b"], nonzero=True), L),
+            "c": fmt(draw_value(rng, r["c"], nonzero=True), L),
+            "d": fmt(draw_value(rng, r["d"], nonzero=True), L),
+            "theta2": fmt(draw_value(rng, r["theta2"]), "deg"),
+            "omega2": fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
+            "alpha2": fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
             "circuit": "open" if rng.random() < 0.5 else "crossed"}
 
 

@@ -3,7 +3,7 @@ block on link 3 slides along link 4; graded are alpha4, the Coriolis component
 2 b_dot omega3 j e^{j theta3} (eq. 7.21c) and the slip acceleration b_ddot."""
 
 from ..problem import Answer, Problem
-from .common import (UNITS, draw, fmt, generate, given_of, ranges_for, sizable, solve_checked)
+from .common import (UNITS, draw_value, fmt, first_accepted, given_of, ranges_for, sizable, solve_checked)
 
 FAMILY = "coriolis"
 TITLE = "Coriolis acceleration in an inverted slider-crank"
@@ -27,12 +27,12 @@ def generate_problem(seed, ranges=None, units="US"):
 
     def build(rng):
         case = {"mechanism": "invertedslidercrank",
-                "a": fmt(draw(rng, r["a"], nonzero=True), L), "c": fmt(draw(rng, r["c"]), L),
-                "d": fmt(draw(rng, r["d"], nonzero=True), L),
-                "gamma": fmt(draw(rng, r["gamma"], nonzero=True), "deg"),
-                "theta2": fmt(draw(rng, r["theta2"]), "deg"),
-                "omega2": fmt(draw(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
-                "alpha2": fmt(draw(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
+                "a": fmt(draw_value(rng, r["a"], nonzero=True), L), "c": fmt(draw_value(rng, r["c"]), L),
+                "d": fmt(draw_value(rng, r["d"], nonzero=True), L),
+                "gamma": fmt(draw_value(rng, r["gamma"], nonzero=True), "deg"),
+                "theta2": fmt(draw_value(rng, r["theta2"]), "deg"),
+                "omega2": fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
+                "alpha2": fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
                 "circuit": "open" if rng.random() < 0.5 else "crossed"}
         out = solve_checked({"K": case})["K"]
         A_A = abs(complex(*out["A_A"]))
@@ -50,4 +50,4 @@ def generate_problem(seed, ranges=None, units="US"):
                                        "circuit"]), answers,
                        figure={"mechanism": "invertedslidercrank", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

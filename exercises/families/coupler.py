@@ -2,7 +2,7 @@
 A, at angle delta3 from line AB on the coupler."""
 
 from ..problem import Answer, Problem
-from .common import (FOURBAR_DEFAULTS, UNITS, draw, fmt, fourbar_case, generate, given_of,
+from .common import (FOURBAR_DEFAULTS, UNITS, draw_value, fmt, fourbar_case, first_accepted, given_of,
                      ranges_for, sizable, solve_checked)
 
 FAMILY = "coupler"
@@ -22,8 +22,8 @@ def generate_problem(seed, ranges=None, units="US"):
 
     def build(rng):
         case = fourbar_case(rng, r, L)
-        case["p"] = fmt(draw(rng, r["p"], nonzero=True), L)
-        case["delta3"] = fmt(draw(rng, r["delta3"]), "deg")
+        case["p"] = fmt(draw_value(rng, r["p"], nonzero=True), L)
+        case["delta3"] = fmt(draw_value(rng, r["delta3"]), "deg")
         out = solve_checked({"C": case})["C"]
         A_P = complex(*out["A_P"])
         sizable((A_P, complex(*out["A_A"])),
@@ -40,4 +40,4 @@ def generate_problem(seed, ranges=None, units="US"):
         return Problem(FAMILY, TITLE, STATEMENT, given, answers,
                        figure={"mechanism": "fourbar", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

@@ -2,7 +2,7 @@
 driving link 5 through gears of ratio lam and phase phi."""
 
 from ..problem import Answer, Problem
-from .common import (UNITS, draw, fmt, generate, given_of, ranges_for, sizable, solve_checked)
+from .common import (UNITS, draw_value, fmt, first_accepted, given_of, ranges_for, sizable, solve_checked)
 
 FAMILY = "fivebar"
 TITLE = "Accelerations in a geared fivebar linkage"
@@ -27,12 +27,12 @@ def generate_problem(seed, ranges=None, units="US"):
     def build(rng):
         case = {"mechanism": "fivebar"}
         for k in "abcdf":
-            case[k] = fmt(draw(rng, r[k], nonzero=True), L)
+            case[k] = fmt(draw_value(rng, r[k], nonzero=True), L)
         case.update(lam=float(RATIOS[int(rng.integers(len(RATIOS)))]),
-                    phi=fmt(draw(rng, r["phi"]), "deg"),
-                    theta2=fmt(draw(rng, r["theta2"]), "deg"),
-                    omega2=fmt(draw(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
-                    alpha2=fmt(draw(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
+                    phi=fmt(draw_value(rng, r["phi"]), "deg"),
+                    theta2=fmt(draw_value(rng, r["theta2"]), "deg"),
+                    omega2=fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
+                    alpha2=fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
                     circuit="open" if rng.random() < 0.5 else "crossed")
         out = solve_checked({"F": case})["F"]
         scale = max(abs(out["alpha3"]), abs(out["alpha4"]), out["omega3"] ** 2 + 1.0)
@@ -47,4 +47,4 @@ def generate_problem(seed, ranges=None, units="US"):
                                        "alpha2", "circuit"]), answers,
                        figure={"mechanism": "fivebar", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

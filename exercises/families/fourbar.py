@@ -2,7 +2,7 @@
 crank position, angular velocity and angular acceleration."""
 
 from ..problem import Answer, Problem
-from .common import (FOURBAR_DEFAULTS, UNITS, fourbar_case, generate, given_of, ranges_for,
+from .common import (FOURBAR_DEFAULTS, UNITS, fourbar_case, first_accepted, given_of, ranges_for,
                      sizable, solve_checked)
 
 FAMILY = "fourbar"
@@ -39,4 +39,4 @@ def generate_problem(seed, ranges=None, units="US"):
         return Problem(FAMILY, TITLE, STATEMENT, given, answers,
                        figure={"mechanism": "fourbar", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

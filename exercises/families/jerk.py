@@ -2,7 +2,7 @@
 coupler and rocker and the linear jerk of B, for a crank with constant alpha2."""
 
 from ..problem import Answer, Problem
-from .common import (FOURBAR_DEFAULTS, UNITS, fourbar_case, generate, given_of, ranges_for,
+from .common import (FOURBAR_DEFAULTS, UNITS, fourbar_case, first_accepted, given_of, ranges_for,
                      sizable, solve_checked)
 
 FAMILY = "jerk"
@@ -35,4 +35,4 @@ def generate_problem(seed, ranges=None, units="US"):
         return Problem(FAMILY, TITLE, STATEMENT, given, answers,
                        figure={"mechanism": "fourbar", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

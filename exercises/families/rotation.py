@@ -10,7 +10,7 @@ Graded: A_A in cartesian form, A_B in polar form, and |A_BA| = |A_B - A_A|
 import math
 
 from ..problem import Answer, Problem
-from .common import Reject, draw, fmt, generate, ranges_for, sizable, solve_checked, UNITS
+from .common import Reject, draw_value, fmt, first_accepted, ranges_for, sizable, solve_checked, UNITS
 
 FAMILY = "rotation"
 TITLE = "A point on a body in pure rotation"
@@ -31,11 +31,11 @@ def generate_problem(seed, ranges=None, units="US"):
     L, acc = UNITS[units]["length"], UNITS[units]["acceleration"]
 
     def build(rng):
-        p = draw(rng, r["p"], nonzero=True)
-        theta_A = draw(rng, r["theta_A"])
-        omega = draw(rng, r["omega"], nonzero=True, signed=True)
-        alpha = draw(rng, r["alpha"], nonzero=True, signed=True)
-        dt = draw(rng, r["dt"], nonzero=True)
+        p = draw_value(rng, r["p"], nonzero=True)
+        theta_A = draw_value(rng, r["theta_A"])
+        omega = draw_value(rng, r["omega"], nonzero=True, signed=True)
+        alpha = draw_value(rng, r["alpha"], nonzero=True, signed=True)
+        dt = draw_value(rng, r["dt"], nonzero=True)
         omega_B = omega + alpha * dt
         if omega_B * omega <= 0:      # keep one sense of rotation between A and B
             raise Reject()
@@ -67,5 +67,5 @@ def generate_problem(seed, ranges=None, units="US"):
         return Problem(FAMILY, TITLE, STATEMENT, given, answers,
                        figure={"mechanism": "rotation", "case": cases["A"], "case_B": cases["B"]})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)
 

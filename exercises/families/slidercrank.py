@@ -2,7 +2,7 @@
 acceleration and the slider's acceleration."""
 
 from ..problem import Answer, Problem
-from .common import (UNITS, draw, fmt, generate, given_of, ranges_for, sizable, solve_checked)
+from .common import (UNITS, draw_value, fmt, first_accepted, given_of, ranges_for, sizable, solve_checked)
 
 FAMILY = "slidercrank"
 TITLE = "Accelerations in a slider-crank"
@@ -22,11 +22,11 @@ def generate_problem(seed, ranges=None, units="US"):
     L, acc = UNITS[units]["length"], UNITS[units]["acceleration"]
 
     def build(rng):
-        case = {"mechanism": "slidercrank", "a": fmt(draw(rng, r["a"], nonzero=True), L),
-                "b": fmt(draw(rng, r["b"], nonzero=True), L), "c": fmt(draw(rng, r["c"]), L),
-                "theta2": fmt(draw(rng, r["theta2"]), "deg"),
-                "omega2": fmt(draw(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
-                "alpha2": fmt(draw(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
+        case = {"mechanism": "slidercrank", "a": fmt(draw_value(rng, r["a"], nonzero=True), L),
+                "b": fmt(draw_value(rng, r["b"], nonzero=True), L), "c": fmt(draw_value(rng, r["c"]), L),
+                "theta2": fmt(draw_value(rng, r["theta2"]), "deg"),
+                "omega2": fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
+                "alpha2": fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
                 "circuit": "open"}
         out = solve_checked({"S": case})["S"]
         sizable((out["alpha3"], max(abs(out["alpha3"]), out["omega3"] ** 2 + 1.0)),
@@ -41,4 +41,4 @@ def generate_problem(seed, ranges=None, units="US"):
                        given_of(case, ["a", "b", "c", "theta2", "omega2", "alpha2"]), answers,
                        figure={"mechanism": "slidercrank", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)

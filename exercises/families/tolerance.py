@@ -7,7 +7,7 @@ against the everyday levels of Table 7-1.
 """
 
 from ..problem import Answer, Problem
-from .common import Reject, draw, fmt, generate, ranges_for, solve_checked, UNITS
+from .common import Reject, draw_value, fmt, first_accepted, ranges_for, solve_checked, UNITS
 
 FAMILY = "tolerance"
 TITLE = "Human tolerance: an amusement ride"
@@ -40,9 +40,9 @@ def generate_problem(seed, ranges=None, units="US"):
     big = UNITS[units]["big_length"]
 
     def build(rng):
-        R = draw(rng, r["R"], nonzero=True)
-        omega = draw(rng, r["omega"], nonzero=True)
-        alpha = draw(rng, r["alpha"], nonzero=True)
+        R = draw_value(rng, r["R"], nonzero=True)
+        omega = draw_value(rng, r["omega"], nonzero=True)
+        alpha = draw_value(rng, r["alpha"], nonzero=True)
         case = {"mechanism": "rotation", "p": fmt(R, big), "theta2": "0 deg",
                 "omega2": fmt(omega, "rpm"), "alpha2": fmt(alpha, "rad/s^2")}
         out = solve_checked({"R": case})
@@ -60,4 +60,4 @@ def generate_problem(seed, ranges=None, units="US"):
         return Problem(FAMILY, TITLE, STATEMENT, given, answers,
                        figure={"mechanism": "rotation", "case": case})
 
-    return generate(FAMILY, seed, build, units)
+    return first_accepted(FAMILY, seed, build, units)
