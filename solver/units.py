@@ -32,9 +32,12 @@ from .errors import InvalidInput
 __all__ = ["ureg", "Q_", "parse_quantity", "to_si", "quantity", "KINDS", "SI_UNITS",
            "MAX_TEXT", "show"]
 
+#: The package's one pint registry: every Quantity that accelab reads or
+#: returns belongs to it (a Quantity of another registry is converted once).
 ureg = pint.UnitRegistry()
 ureg.define("rev = revolution")  # '10 rev/s', the unambiguous way to say 10 Hz of a crank
 pint.set_application_registry(ureg)
+#: ``Q_(value, unit)``: a Quantity of :data:`ureg`, e.g. ``Q_(30, "deg")``.
 Q_ = ureg.Quantity
 
 #: the longest text read as a quantity [characters]

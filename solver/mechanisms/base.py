@@ -376,6 +376,8 @@ class PointMotion:
         self._si = parts
 
     def si(self, name):
+        """The SI value of ``name`` (``R`` [m], ``V`` [m/s], ``A``, ``A_t``,
+        ``A_n`` [m/s^2], ``J`` [m/s^3]; complex: x + jy), unit-free."""
         return self._si[name]
 
     def __getattr__(self, name):
@@ -525,6 +527,8 @@ class Mechanism:
         return None
 
     def outputs(self, result):
+        """Names of every output a ``result`` of this mechanism can report, in
+        the order of docs/conventions.md#outputs (SI units: m, rad, s)."""
         return self._outputs
 
     # --- solving ----------------------------------------------------------

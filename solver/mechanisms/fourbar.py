@@ -90,6 +90,8 @@ class FourBar(Mechanism):
         return self._finish(m, inputs, pts=pts)
 
     def outputs(self, result):
+        """The fourbar's outputs, with those of the coupler point P (``R_P``,
+        ``V_P``, ``A_P``, ``A_PA``, ``J_P``) when the mechanism has one."""
         return self._outputs + (self._point_outputs if result.has_point("P") else ())
 
     def _not_assemblable_reason(self, motion, inputs):

@@ -47,7 +47,7 @@ def other_branch(system, t_c, q_c, t, q_s, sign, tol, slack):
     sign : +1 or -1
         Orientation wanted (that of the assembly before the crossing).
     tol : float
-        Newton-Raphson tolerance.
+        Newton-Raphson tolerance [-] (loop residual relative to the length scale).
     slack : float
         Extra distance [scaled] allowed from q_c.
 

@@ -438,8 +438,8 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
     Parameters
     ----------
     tol : float
-        Newton-Raphson's convergence tolerance (loop residual relative to the
-        length scale; see :meth:`LoopSystem.newton`).
+        Newton-Raphson's convergence tolerance [-]: the loop residual relative
+        to the length scale (see :meth:`LoopSystem.newton`).
     batch : bool
         Solve the positions between a coarse sequential chain together
         (default); False walks position by position (the reference path).
@@ -461,6 +461,8 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
 
 
 def singular_message(theta2, cond):
+    """The message of a singular position: ``theta2`` [rad] and the Jacobian's
+    condition measure ``cond`` (1 best, 0 singular) [-]."""
     return (f"the loop equations are singular at theta2 = {np.degrees(theta2):.6g} deg "
             f"(Jacobian condition measure {cond:.2e} < {SINGULAR_CONDITION:g}; its condition "
             f"number is about {2 / max(cond, 1e-300):.2e}): two links are aligned (a toggle or "
