@@ -31,6 +31,7 @@ import pytest
 
 import course
 from course import cli as course_cli
+from docs.notebooks import problems
 
 ROOT = Path(__file__).resolve().parents[1]
 COURSE = ROOT / "course"
@@ -63,20 +64,6 @@ def kernel_env():
     env.pop("PYTHONPATH", None)
     env.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
     return env
-
-
-def problems(nb):
-    """Error outputs and stderr text of an executed notebook, one line each."""
-    out = []
-    for i, cell in enumerate(nb.cells):
-        if cell.cell_type != "code":
-            continue
-        for o in cell.get("outputs", []):
-            if o.output_type == "error":
-                out.append(f"cell {i}: {o.ename}: {o.evalue}")
-            elif o.output_type == "stream" and o.name == "stderr":
-                out.append(f"cell {i}: stderr: {o.text.strip()[:500]}")
-    return out
 
 
 _written = {}

@@ -355,6 +355,21 @@ def _inset_plan(ax, box, starts, vectors, tiny):
     return centre, width_data / factor / 2, factor
 
 
+def _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles):
+    """Paint the vectors ``drawn`` ((start, vector) pairs) with ``paint``, and
+    those too short to see again in a magnified inset when there is room for
+    one; returns the label layer."""
+    labels = LabelLayer(ax)
+    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
+    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
+    if plan is None:
+        tiny = []
+    paint(ax, labels, None, tiny)
+    if plan:
+        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    return labels
+
+
 def _magnifier(ax, box, plan, tiny, draw, obstacles):
     """A magnified inset of the region ``plan`` (see :func:`_inset_plan`) around
     the vectors ``tiny``. ``draw(inset_ax, labels, region, tiny)`` paints the
@@ -633,14 +648,7 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
                                   offset=offsets[i], priority=1 + (0 if a.kind == "resultant"
                                                                    else 0.5))
 
-    labels = LabelLayer(ax)
-    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
-    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
-    if plan is None:
-        tiny = []
-    paint(ax, labels, None, tiny)
-    if plan:
-        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
     kinds = {a.kind for a in arrows}
     if scale_bars:
         x0, x1, y0, y1 = box
@@ -719,14 +727,7 @@ def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, le
                 labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),
                                   priority=1 + (0 if a.kind == "resultant" else 0.5))
 
-    labels = LabelLayer(ax)
-    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
-    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
-    if plan is None:
-        tiny = []
-    paint(ax, labels, None, tiny)
-    if plan:
-        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
     kinds = {a.kind for a in arrows}
     if scale_bar:
         L = nice(0.22 * size)
