@@ -56,10 +56,13 @@ def _cell(nb, gid):
     return next(c for c in nb.cells if c.metadata.get("nbgrader", {}).get("grade_id") == gid)
 
 
-def prepend(code, name, text):
-    out = dict(code)
-    out[name] = text + "\n" + out[name]
-    return out
+def own_answers_after(course, student, probe, which=0):
+    """The student's own right answers, with ``probe`` run first in the cell of
+    answer number ``which``."""
+    code = outside(course, student)
+    name = list(code)[which]
+    code[name] = probe + code[name]
+    return code
 
 
 def all_wrong(code, units):
@@ -196,10 +199,7 @@ except Exception as exc:
     print("write ->", type(exc).__name__)
 print(sorted(os.environ))
 '''
-    code = outside(course, "read_course")
-    first = next(iter(code))
-    code[first] = probe + code[first]
-    return code, None
+    return own_answers_after(course, "read_course", probe), None
 
 
 @attack
@@ -221,10 +221,7 @@ if os.fork() == 0:
         time.sleep(120)
     os._exit(0)
 '''
-    code = outside(course, "background_gradebook")
-    first = next(iter(code))
-    code[first] = probe + code[first]
-    return code, None
+    return own_answers_after(course, "background_gradebook", probe), None
 
 
 @attack
@@ -270,12 +267,10 @@ def duplicated_pair(course, units, name_of):
 @attack
 def fork_bomb(course, units, name_of):
     """A fork bomb in one answer cell; the rest right."""
-    code = outside(course, "fork_bomb")
-    name = list(code)[1]
-    code[name] = ("import os\npids = []\nwhile True:\n    try:\n        pids.append(os.fork())\n"
-                  "    except OSError:\n        break\n    if pids[-1] == 0:\n"
-                  "        import time; time.sleep(60); os._exit(0)\n" + code[name])
-    return code, None
+    probe = ("import os\npids = []\nwhile True:\n    try:\n        pids.append(os.fork())\n"
+             "    except OSError:\n        break\n    if pids[-1] == 0:\n"
+             "        import time; time.sleep(60); os._exit(0)\n")
+    return own_answers_after(course, "fork_bomb", probe, which=1), None
 
 
 @attack
@@ -291,22 +286,18 @@ def memory_hog(course, units, name_of):
 @attack
 def disk_filler(course, units, name_of):
     """Fill the disk: one huge file, then many files; the answers right."""
-    code = outside(course, "disk_filler")
-    first = next(iter(code))
-    code[first] = ("import os\nfor i in range(10 ** 6):\n    try:\n"
-                   "        open(f'/tmp/fill{i}', 'wb').write(b'x' * 10 ** 7)\n"
-                   "    except OSError as exc:\n        print('stopped at', i, exc.errno)\n"
-                   "        break\n" + code[first])
-    return code, None
+    probe = ("import os\nfor i in range(10 ** 6):\n    try:\n"
+             "        open(f'/tmp/fill{i}', 'wb').write(b'x' * 10 ** 7)\n"
+             "    except OSError as exc:\n        print('stopped at', i, exc.errno)\n"
+             "        break\n")
+    return own_answers_after(course, "disk_filler", probe), None
 
 
 @attack
 def print_100mb(course, units, name_of):
     """Print 100 MB; the answers right."""
-    code = outside(course, "print_100mb")
-    first = next(iter(code))
-    code[first] = "print('x' * 100_000_000)\nimport os\nos.write(1, b'y' * 10 ** 7)\n" + code[first]
-    return code, None
+    probe = "print('x' * 100_000_000)\nimport os\nos.write(1, b'y' * 10 ** 7)\n"
+    return own_answers_after(course, "print_100mb", probe), None
 
 
 ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken"]
