@@ -76,7 +76,7 @@ def _even_steps(theta2):
 # --- pylinkage ------------------------------------------------------------------
 def _pylinkage(NotApplicable):
     def prepare(case, theta2):
-        from pylinkage.mechanism import fourbar
+        from pylinkage.mechanism import DriverLink, fourbar
         from .cases import MOTION
         if case.mechanism != "fourbar":
             raise NotApplicable(SLIDER_NOTE if case.mechanism == "slidercrank" else
@@ -90,7 +90,8 @@ def _pylinkage(NotApplicable):
         mech = fourbar(crank=p["a"], coupler=p["b"], rocker=p["c"], ground=p["d"],
                        omega=step, initial_angle=float(theta2[0]) - step,
                        branch=1 if case.circuit == "open" else 0)
-        mech.set_input_velocity(mech._driver_links[0], MOTION["omega2"], MOTION["alpha2"])
+        crank = next(link for link in mech.links if isinstance(link, DriverLink))
+        mech.set_input_velocity(crank, MOTION["omega2"], MOTION["alpha2"])
         mech.compile()
         snapshot = list(mech.get_joint_positions())
 

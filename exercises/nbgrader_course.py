@@ -20,11 +20,10 @@ CONFIG = '''\
 import os
 
 from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPreprocessor
-from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, ClearOutput,
-                                    GetGrades, LimitOutput, OverwriteCells,
-                                    OverwriteKernelspec, SaveAutoGrades)
+from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
+                                    LimitOutput, SaveAutoGrades)
 
-from exercises.grader.nbgrader_step import CleanFeedback, DropDuplicateIds, JudgeSubmission
+from exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission, sanitize_steps
 
 c = get_config()  # noqa: F821
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -34,8 +33,9 @@ c.CourseDirectory.db_url = "sqlite:///" + os.path.join(HERE, "gradebook.db")
 c.Exchange.root = os.path.join(HERE, "exchange")
 c.CourseDirectory.ignore = [".ipynb_checkpoints", "*.pyc", "__pycache__", "feedback", ".accelab"]
 
-c.Autograde.sanitize_preprocessors = [ClearOutput, DropDuplicateIds, OverwriteKernelspec,
-                                      OverwriteCells, CheckCellMetadata]
+# nbgrader's sanitizing, mended: a copied cell or forged cell metadata costs only
+# the cells it touches, never the whole submission
+c.Autograde.sanitize_preprocessors = sanitize_steps()
 # autograde: each submission runs in a sandbox; its answers are judged outside it,
 # against the submitter's key (JudgeSubmission takes the place of Execute)
 c.Autograde.autograde_preprocessors = [JudgeSubmission, ClearMetadataPreprocessor, LimitOutput,

@@ -300,6 +300,31 @@ def print_100mb(course, units, name_of):
     return own_answers_after(course, "print_100mb", probe), None
 
 
+@attack
+def forged_metadata(course, units, name_of):
+    """Forge nbgrader's cell metadata: every grade cell worth 100 points, a new
+    "bonus" grade cell that passes, a test cell turned into a solution cell and a
+    hidden test's source emptied; the first answer right, the others wrong."""
+    code = all_wrong(units, units)
+    first = next(iter(code))
+    code[first] = outside(course, "forged_metadata")[first]
+
+    def edit(nb):
+        for cell in nb.cells:
+            meta = cell.metadata.get("nbgrader", {})
+            if meta.get("grade"):
+                meta["points"] = 100
+        names = list(units)
+        test = _cell(nb, f"test_{names[1]}")
+        test.source = "pass"
+        test.metadata["nbgrader"].update(solution=True, locked=False)
+        bonus = new_code_cell("print('all right')")
+        bonus.metadata["nbgrader"] = {"grade": True, "solution": False, "locked": False,
+                                      "grade_id": "bonus", "points": 1000, "schema_version": 3}
+        nb.cells.append(bonus)
+    return code, edit
+
+
 ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken"]
 
 
@@ -472,6 +497,20 @@ def test_printing_100_mb_is_cut(graded):
                                         "A.html")) < 3_000_000
 
 
+def test_forged_cell_metadata_earns_nothing(graded):
+    """Points, grade cells and test sources come from the instructor's source, not
+    from the submission: only the one right answer counts, at its own weight."""
+    assert total(graded, "forged_metadata") == 1.0, graded["rows"]["forged_metadata"]
+    assert "bonus" not in graded["rows"]["forged_metadata"]
+    notes = graded["rows"]["forged_metadata"]["notes"]
+    assert "metadata of 11 cell(s) was changed" in notes and "bonus (not graded)" in notes, notes
+    from nbgrader.api import Gradebook
+    db = "sqlite:///" + os.path.join(graded["course"], "gradebook.db")
+    with Gradebook(db, course_id="attacks") as gb:
+        sub = gb.find_submission("A", "forged_metadata")
+        assert (sub.score, sub.max_score) == (1.0, len(graded["names"]))
+
+
 # ---- the instructor's side -------------------------------------------------------------------
 
 def test_csv_covers_the_roster_and_the_submitters(graded):
@@ -507,12 +546,14 @@ def test_feedback_never_shows_an_expected_value(graded):
         assert html
         # an embedded image's base64 text is no number shown (its letters may hold any digits)
         html = re.sub(r"data:image/[a-z+]+;base64,[A-Za-z0-9+/=\s]+", "data:image/...", html)
+        # nor are the tags' attributes (cell ids such as "b329a621"): only the text shows
+        html = re.sub(r"<[^>]*>", " ", html)
         code = key_code(spec, student)
         for name, line in code.items():
             if "Q_(" in line and (names is None or name in names):
                 value = float(line.split("Q_(")[1].split(",")[0])
                 for text in (repr(value), f"{value:.6g}", f"{value:.5g}", f"{value:.4g}"):
-                    pattern = r"(?<![\d.])" + re.escape(text) + r"(?![\d])"
+                    pattern = r"(?<![\w.])" + re.escape(text) + r"(?![\w])"
                     found = re.search(pattern, html)
                     assert not found, (student, name, text,
                                        html[max(0, found.start() - 300):found.end() + 100])

@@ -90,13 +90,10 @@ def is_new(course_dir, assignment, student):
 
 def sanitize(config, course_dir, assignment, student, nb):
     """The notebook as nbgrader's autograde sanitizes it (same preprocessors)."""
-    from nbgrader.preprocessors import (CheckCellMetadata, ClearOutput, OverwriteCells,
-                                        OverwriteKernelspec)
-    from .nbgrader_step import DropDuplicateIds
+    from .nbgrader_step import sanitize_steps
     resources = {"nbgrader": {"db_url": config.CourseDirectory.db_url, "assignment": assignment,
                               "notebook": assignment, "student": student}}
-    for cls in (ClearOutput, DropDuplicateIds, OverwriteKernelspec, OverwriteCells,
-                CheckCellMetadata):
+    for cls in sanitize_steps():
         nb, resources = cls(config=config).preprocess(nb, resources)
     return nb
 

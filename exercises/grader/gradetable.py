@@ -38,7 +38,7 @@ def damage(course_dir, assignment, student):
         ref = nbformat.read(release, as_version=4)
     except Exception:
         return []
-    seen, notes = {}, []
+    seen, notes, forged = {}, [], []
     for cell in nb.cells:
         gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
         if gid:
@@ -59,7 +59,25 @@ def damage(course_dir, assignment, student):
                                                        if meta.get("grade") else ""))
         elif meta.get("locked") and got[gid].source.strip() != cell.source.strip():
             notes.append(f"locked cell {gid} was altered (restored before grading)")
+        elif _role(got[gid]) != _role(cell):
+            forged.append(gid)
+    if forged:
+        notes.append(f"the nbgrader metadata of {len(forged)} cell(s) was changed ("
+                     f"{', '.join(forged[:3])}{', ...' if len(forged) > 3 else ''}; restored "
+                     f"before grading)")
+    known = {c.metadata.get("nbgrader", {}).get("grade_id") for c in ref.cells}
+    invented = sorted(g for g in seen if g not in known)
+    if invented:
+        notes.append(f"cells with grade ids the assignment does not have: "
+                     f"{', '.join(invented[:5])} (not graded)")
     return notes
+
+
+def _role(cell):
+    """A cell's nbgrader role: what it is graded as, and for how many points."""
+    meta = cell.metadata.get("nbgrader", {})
+    return (cell.cell_type, bool(meta.get("grade")), bool(meta.get("solution")),
+            bool(meta.get("locked")), float(meta.get("points", 0) or 0))
 
 
 def read_outcome(course_dir, assignment, student):

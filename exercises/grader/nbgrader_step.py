@@ -7,6 +7,9 @@
   in this process, and writes outputs and verdicts into the notebook. nbgrader's
   own ``SaveAutoGrades`` then scores the test cells and writes the gradebook:
   after the sandbox is gone, from the grader's process.
+* :class:`DropDuplicateIds` and :class:`RestoreCellRoles` mend what nbgrader's
+  sanitizing steps leave to break a whole submission (a copied cell, forged
+  cell metadata): such a change costs only the cells it touches.
 * :class:`CleanFeedback` makes feedback show error messages without tracebacks.
 """
 
@@ -148,6 +151,56 @@ class DropDuplicateIds(NbGraderPreprocessor):
             elif gid:
                 seen.add(gid)
         return nb, resources
+
+
+class RestoreCellRoles(NbGraderPreprocessor):
+    """Every cell's nbgrader role as the instructor's source has it, whatever the
+    submission's metadata says: grade, solution, task and locked flags and the
+    points of each grade cell the gradebook knows; a cell with a grade id the
+    gradebook does not know (or none) loses its nbgrader metadata.
+
+    nbgrader's OverwriteCells restores a locked cell's source, type and points,
+    but not its grade and solution flags: a test cell a student marked as a
+    solution then fails its checksum check and the whole submission is lost
+    ("Inconsistent checksums"); a cell a student invented keeps ``grade: true``
+    without an id. Run before OverwriteCells, this leaves nothing for either.
+    """
+
+    def preprocess(self, nb, resources):
+        from nbgrader.api import Gradebook
+        info = resources["nbgrader"]
+        with Gradebook(info["db_url"]) as gb:
+            source = gb.find_notebook(info["notebook"], info["assignment"])
+            locked = {c.name: bool(c.locked) for c in source.source_cells}
+            points = {c.name: float(c.max_score) for c in source.grade_cells}
+            solution = {c.name for c in source.solution_cells}
+            task = {c.name for c in source.task_cells}
+        for cell in nb.cells:
+            meta = cell.get("metadata", {})
+            if "nbgrader" not in meta:
+                continue
+            gid = meta["nbgrader"].get("grade_id")
+            if gid not in locked:
+                del meta["nbgrader"]
+                continue
+            role = {k: v for k, v in meta["nbgrader"].items()
+                    if k in ("grade_id", "schema_version", "checksum", "cell_type")}
+            role.update(grade=gid in points, solution=gid in solution, locked=locked[gid])
+            if gid in task:
+                role["task"] = True
+            if gid in points:
+                role["points"] = points[gid]
+            meta["nbgrader"] = role
+        return nb, resources
+
+
+def sanitize_steps():
+    """nbgrader's sanitizing steps as accelab runs them, in order: the same in
+    ``accelab grade`` and in the course's nbgrader_config.py."""
+    from nbgrader.preprocessors import (CheckCellMetadata, ClearOutput, OverwriteCells,
+                                        OverwriteKernelspec)
+    return [ClearOutput, DropDuplicateIds, RestoreCellRoles, OverwriteKernelspec,
+            OverwriteCells, CheckCellMetadata]
 
 
 class CleanFeedback(NbGraderPreprocessor):

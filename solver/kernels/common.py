@@ -281,11 +281,12 @@ def triangle_angles(s, b, c, span):
 
 #: positions per piece when a kernel solves a long sweep piece by piece
 #: (:func:`in_pieces`; the fourbar's in-place path works in pieces of the
-#: same size): the temporaries of a piece (64 kB each) stay in the cache and
-#: come from the heap without page faults. Measured on the 2-core AMD EPYC
-#: (16 MB L3) at 10^5 positions: the slider-crank, inverted slider-crank and
-#: fivebar 5-15 % faster than whole arrays with pieces of 8192 (4096, 16384
-#: and 32768 did worse); the fourbar the same with 8192 and 16384.
+#: same size). A piece's temporaries are 64 kB each (8192 float64), so a
+#: piece's working set stays in the CPU's caches and its arrays are reused
+#: from the heap without page faults. The reason holds for any
+#: current CPU, not one machine; at 10^5 positions pieces of 8192 were 5-15 %
+#: faster than whole arrays (slider-crank, inverted slider-crank, fivebar) and
+#: as fast (fourbar), and 4096, 16384 and 32768 no better (README, "Speed").
 PIECE = 8192
 #: sweeps shorter than this are solved as whole arrays: below some 5 x 10^4
 #: positions the pieces' fixed cost and copies made them slower
