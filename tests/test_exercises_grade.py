@@ -325,7 +325,7 @@ def forged_metadata(course, units, name_of):
     return code, edit
 
 
-ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken"]
+ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge"]
 
 
 @pytest.fixture(scope="module")
@@ -357,6 +357,10 @@ def graded(tmp_path_factory):
     os.makedirs(os.path.join(course, "submitted", "broken", "A"))
     with open(os.path.join(course, "submitted", "broken", "A", "A.ipynb"), "w") as fh:
         fh.write('{"cells": [ this is not json')
+    huge = submit(course, "A", "huge", outside(course, "huge"))
+    nb = nbformat.read(huge, as_version=4)      # 60 MB of text that would be read in full
+    nb.cells.append(nbformat.v4.new_markdown_cell("x" * 60_000_000))
+    nbformat.write(nb, huge)
     before = course_snapshot(course)
     env = dict(os.environ, ACCELAB_TEST_SECRET=SECRET)
     start = time.monotonic()
@@ -534,6 +538,12 @@ def test_unreadable_notebook_gets_zero_with_the_reason(graded):
     assert "manual" not in row["notes"]
     assert "cannot be read" in feedback_text(graded, "broken")
     assert graded["proc"].returncode == 1
+
+
+def test_a_huge_notebook_is_not_read_and_gets_zero_with_the_reason(graded):
+    row = graded["rows"]["huge"]
+    assert row["total"] == "0.0" and "more than the 50 MB" in row["notes"], row
+    assert "Clear All Outputs" in feedback_text(graded, "huge")
 
 
 def test_feedback_never_shows_an_expected_value(graded):

@@ -24,12 +24,10 @@ import warnings
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
 
-import nbformat
-
 from ..nbgrader_course import ensure_path, roster_ids
 from ..notebook import read_spec
-from .nbgrader_step import (PREPARED, _LOCK, cached_key, command_for, outcome_path,
-                            save_outcome)
+from .nbgrader_step import (PREPARED, _LOCK, NotebookTooLarge, cached_key, command_for,
+                            outcome_path, read_submission, save_outcome)
 from .outcome import Outcome
 from .plan import fingerprint, plan_of
 from .sandbox import SandboxUnavailable, sandbox
@@ -102,9 +100,12 @@ def prepare(config, course_dir, assignment, spec, student, command, limits, slot
     """Read, sanitize, plan and run one submission in its sandbox."""
     sub = Submission(student)
     try:
-        nb = nbformat.read(submitted_path(course_dir, assignment, student), as_version=4)
+        nb = read_submission(submitted_path(course_dir, assignment, student))
     except FileNotFoundError:
         sub.readable, sub.problem = False, f"no {assignment}.ipynb in the submission"
+        return sub
+    except NotebookTooLarge as exc:
+        sub.readable, sub.problem = False, str(exc)
         return sub
     except Exception as exc:
         sub.readable = False

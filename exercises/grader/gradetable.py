@@ -12,7 +12,7 @@ import warnings
 import nbformat
 
 from ..nbgrader_course import course_id_of, gradebook, roster_ids
-from .nbgrader_step import outcome_path
+from .nbgrader_step import outcome_path, read_submission
 from .plan import TEST_PREFIX
 
 
@@ -34,7 +34,7 @@ def damage(course_dir, assignment, student):
     release = os.path.join(course_dir, "release", assignment, f"{assignment}.ipynb")
     path = os.path.join(course_dir, "submitted", student, assignment, f"{assignment}.ipynb")
     try:
-        nb = nbformat.read(path, as_version=4)
+        nb = read_submission(path)
         ref = nbformat.read(release, as_version=4)
     except Exception:
         return []

@@ -73,10 +73,34 @@ def limits_of(step):
                   processes=step.processes)
 
 
+#: the largest submitted notebook the grader reads [MB]: a released notebook is well
+#: under 1 MB and a worked one with its figures a few MB; a larger file is not read
+#: (parsed, it would take several times its size of the grader's memory)
+MAX_NOTEBOOK_MB = 50
+
+
+class NotebookTooLarge(ValueError):
+    """A submitted notebook larger than :data:`MAX_NOTEBOOK_MB`."""
+
+
+def read_submission(path):
+    """A submitted notebook, read only if it is no larger than MAX_NOTEBOOK_MB.
+
+    Raises NotebookTooLarge (with what to do), or what nbformat raises.
+    """
+    size = os.path.getsize(path) / 1e6
+    if size > MAX_NOTEBOOK_MB:
+        raise NotebookTooLarge(
+            f"the notebook is {size:.0f} MB, more than the {MAX_NOTEBOOK_MB} MB the grader "
+            f"reads; clear its outputs (Kernel > Restart Kernel and Clear All Outputs), save "
+            f"it and submit again")
+    return nbformat.read(path, as_version=4)
+
+
 def submitted_notebook(course_dir, assignment, student, notebook):
     path = os.path.join(course_dir, "submitted", student, assignment, f"{notebook}.ipynb")
     try:
-        return nbformat.read(path, as_version=4)
+        return read_submission(path)
     except Exception:
         return None
 
