@@ -325,7 +325,7 @@ def forged_metadata(course, units, name_of):
     return code, edit
 
 
-ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge"]
+ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge", "linked"]
 
 
 @pytest.fixture(scope="module")
@@ -356,7 +356,10 @@ def graded(tmp_path_factory):
         fh.write("2040-01-02 10:00:00.000000 UTC")
     os.makedirs(os.path.join(course, "submitted", "broken", "A"))
     with open(os.path.join(course, "submitted", "broken", "A", "A.ipynb"), "w") as fh:
-        fh.write('{"cells": [ this is not json')
+        fh.write('{"cells": [ ' + SECRET)      # as if collect had copied a secret file
+    os.makedirs(os.path.join(course, "submitted", "linked", "A"))
+    os.symlink(os.path.join(course, "nbgrader_config.py"),
+               os.path.join(course, "submitted", "linked", "A", "A.ipynb"))
     huge = submit(course, "A", "huge", outside(course, "huge"))
     nb = nbformat.read(huge, as_version=4)      # 60 MB of text that would be read in full
     nb.cells.append(nbformat.v4.new_markdown_cell("x" * 60_000_000))
@@ -537,6 +540,11 @@ def test_unreadable_notebook_gets_zero_with_the_reason(graded):
     assert row["total"] == "0.0" and "cannot be read" in row["notes"]
     assert "manual" not in row["notes"]
     assert "cannot be read" in feedback_text(graded, "broken")
+    # nothing of the file is quoted: it may be any file a link made collect copy
+    assert SECRET not in row["notes"] and SECRET not in feedback_text(graded, "broken")
+    row = graded["rows"]["linked"]
+    assert row["total"] == "0.0" and "a link to another file" in row["notes"], row
+    assert "course_id" not in feedback_text(graded, "linked")
     assert graded["proc"].returncode == 1
 
 

@@ -26,8 +26,8 @@ from dataclasses import dataclass, field
 
 from ..nbgrader_course import ensure_path, roster_ids
 from ..notebook import read_spec
-from .nbgrader_step import (PREPARED, _LOCK, NotebookTooLarge, cached_key, command_for,
-                            outcome_path, read_submission, save_outcome)
+from .nbgrader_step import (PREPARED, _LOCK, NotebookTooLarge, NotebookUnreadable, cached_key,
+                            command_for, outcome_path, read_submission, save_outcome)
 from .outcome import Outcome
 from .plan import fingerprint, plan_of
 from .sandbox import SandboxUnavailable, sandbox
@@ -104,12 +104,12 @@ def prepare(config, course_dir, assignment, spec, student, command, limits, slot
     except FileNotFoundError:
         sub.readable, sub.problem = False, f"no {assignment}.ipynb in the submission"
         return sub
-    except NotebookTooLarge as exc:
+    except (NotebookTooLarge, NotebookUnreadable) as exc:
         sub.readable, sub.problem = False, str(exc)
         return sub
-    except Exception as exc:
+    except Exception as exc:   # an OSError: nothing of the file is quoted
         sub.readable = False
-        sub.problem = f"the notebook cannot be read ({type(exc).__name__}: {str(exc)[:200]})"
+        sub.problem = f"the notebook cannot be read ({type(exc).__name__})"
         return sub
     try:
         nb = sanitize(config, course_dir, assignment, student, nb)

@@ -83,18 +83,38 @@ class NotebookTooLarge(ValueError):
     """A submitted notebook larger than :data:`MAX_NOTEBOOK_MB`."""
 
 
-def read_submission(path):
-    """A submitted notebook, read only if it is no larger than MAX_NOTEBOOK_MB.
+class NotebookUnreadable(ValueError):
+    """A submission that is no notebook the grader reads; its message says why
+    without quoting the file (which may be any file a link pointed to)."""
 
-    Raises NotebookTooLarge (with what to do), or what nbformat raises.
+
+def read_submission(path):
+    """A submitted notebook: a regular file of at most MAX_NOTEBOOK_MB in the
+    notebook format.
+
+    Raises FileNotFoundError, NotebookTooLarge or NotebookUnreadable, each with
+    a message for the student that quotes nothing of the file.
     """
+    if os.path.islink(path):
+        raise NotebookUnreadable("the notebook cannot be read: it is a link to another file, "
+                                 "not a notebook")
     size = os.path.getsize(path) / 1e6
     if size > MAX_NOTEBOOK_MB:
         raise NotebookTooLarge(
             f"the notebook is {size:.0f} MB, more than the {MAX_NOTEBOOK_MB} MB the grader "
             f"reads; clear its outputs (Kernel > Restart Kernel and Clear All Outputs), save "
             f"it and submit again")
-    return nbformat.read(path, as_version=4)
+    try:
+        return nbformat.read(path, as_version=4)
+    except UnicodeDecodeError:
+        why = "it is not text in UTF-8, as a notebook is"
+    except nbformat.reader.NotJSONError:
+        why = "it is not a JSON file, as a notebook saved by Jupyter is"
+    except RecursionError:
+        why = "it is nested too deeply to be a notebook"
+    except (nbformat.ValidationError, ValueError, KeyError, TypeError, AttributeError):
+        why = "it does not follow the notebook format"
+    raise NotebookUnreadable(f"the notebook cannot be read: {why}")
 
 
 def submitted_notebook(course_dir, assignment, student, notebook):
