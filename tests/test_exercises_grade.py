@@ -325,6 +325,19 @@ def forged_metadata(course, units, name_of):
     return code, edit
 
 
+@attack
+def script_for_the_instructor(course, units, name_of):
+    """HTML and script in a markdown cell, a javascript: link and an HTML raw cell,
+    meant to run in the instructor's formgrader or feedback page; the answers right."""
+    def edit(nb):
+        nb.cells.insert(3, nbformat.v4.new_markdown_cell(
+            "Notes <script>window.accelabOwned = 1</script> [see](javascript:accelabOwned=1)\n"
+            "<img src=x onerror=\"accelabOwned=1\">"))
+        nb.cells.insert(3, nbformat.v4.new_raw_cell(
+            "<script>window.accelabOwned = 2</script>", metadata={"raw_mimetype": "text/html"}))
+    return outside(course, "script_for_the_instructor"), edit
+
+
 ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge", "linked"]
 
 
@@ -516,6 +529,23 @@ def test_forged_cell_metadata_earns_nothing(graded):
     with Gradebook(db, course_id="attacks") as gb:
         sub = gb.find_submission("A", "forged_metadata")
         assert (sub.score, sub.max_score) == (1.0, len(graded["names"]))
+
+
+def test_a_students_html_never_runs_in_the_instructors_pages(graded):
+    assert total(graded, "script_for_the_instructor") == len(graded["names"])
+    html = open(os.path.join(graded["course"], "feedback", "script_for_the_instructor", "A",
+                             "A.html")).read()
+    assert "accelabOwned" in html      # what the student wrote is shown, as text
+    for live in ("<script>window.accelabOwned", "<img src=x onerror", 'href="javascript:'):
+        assert live not in html, live
+    # formgrader renders the autograded notebook with the same markdown filter
+    from nbconvert.filters.markdown import markdown2html
+    nb = nbformat.read(os.path.join(graded["course"], "autograded", "script_for_the_instructor",
+                                    "A", "A.ipynb"), as_version=4)
+    shown = "".join(markdown2html(c.source) for c in nb.cells if c.cell_type != "code"
+                    and not c.metadata.get("nbgrader", {}).get("locked"))
+    assert "accelabOwned" in shown and "<script>window" not in shown
+    assert all(c.cell_type != "raw" for c in nb.cells)
 
 
 # ---- the instructor's side -------------------------------------------------------------------

@@ -10,11 +10,14 @@
 * :class:`DropDuplicateIds` and :class:`RestoreCellRoles` mend what nbgrader's
   sanitizing steps leave to break a whole submission (a copied cell, forged
   cell metadata): such a change costs only the cells it touches.
+  :class:`QuoteStudentText` keeps a student's HTML out of the pages the
+  instructor opens.
 * :class:`CleanFeedback` makes feedback show error messages without tracebacks.
 """
 
 import json
 import os
+import re
 import threading
 
 import nbformat
@@ -229,13 +232,37 @@ class RestoreCellRoles(NbGraderPreprocessor):
                 continue
             role = {k: v for k, v in meta["nbgrader"].items()
                     if k in ("grade_id", "schema_version", "checksum", "cell_type")}
-            role.update(grade=gid in points, solution=gid in solution, locked=locked[gid])
-            if gid in task:
-                role["task"] = True
+            role.update(grade=gid in points, solution=gid in solution, task=gid in task,
+                        locked=locked[gid])
             if gid in points:
                 role["points"] = points[gid]
             meta["nbgrader"] = role
         return nb, resources
+
+
+class QuoteStudentText(NbGraderPreprocessor):
+    """What a student wrote outside code is shown as text, never as HTML.
+
+    nbgrader's feedback and formgrader pages render markdown with raw HTML and
+    ``javascript:`` links as they are, and raw cells as HTML: a ``<script>`` in a
+    submission would run in the instructor's formgrader, with the instructor's
+    rights over every grade. Every markdown or raw cell that is not a locked cell
+    of the source (whose text OverwriteCells has put back) becomes a fenced text
+    block: shown letter for letter, with nothing in it parsed or run.
+    """
+
+    def preprocess_cell(self, cell, resources, index):
+        if cell.cell_type in ("markdown", "raw") and not cell.metadata.get(
+                "nbgrader", {}).get("locked"):
+            text = cell.source
+            longest = max((len(run) for run in re.findall(r"~+", text)), default=0)
+            fence = "~" * max(3, longest + 1)
+            cell.source = f"{fence}text\n{text}\n{fence}"
+            if cell.cell_type == "raw":
+                cell.cell_type = "markdown"
+                cell.metadata.pop("raw_mimetype", None)
+                cell.metadata.pop("format", None)
+        return cell, resources
 
 
 def sanitize_steps():
@@ -244,7 +271,7 @@ def sanitize_steps():
     from nbgrader.preprocessors import (CheckCellMetadata, ClearOutput, OverwriteCells,
                                         OverwriteKernelspec)
     return [ClearOutput, DropDuplicateIds, RestoreCellRoles, OverwriteKernelspec,
-            OverwriteCells, CheckCellMetadata]
+            OverwriteCells, QuoteStudentText, CheckCellMetadata]
 
 
 class CleanFeedback(NbGraderPreprocessor):
