@@ -144,7 +144,11 @@ def read(asked, report, ureg):
 
     ``ureg`` is the registry to read units with (the package's own).
     """
+    if not isinstance(report, dict):
+        report = {}
     name, state = asked.name, report.get("state")
+    if not isinstance(state, str):
+        state = "garbled"
     if state == "missing":
         return Reading(name, problem=(
             f"no variable `{name}` is defined: assign your answer to `{name}` in its answer "
@@ -153,15 +157,15 @@ def read(asked, report, ureg):
         if state != "text":
             return Reading(name, problem=f"`{name}` must be a word in quotes, one of "
                            f"{list(asked.choices)}")
-        word = str(report.get("text", "")).strip().lower()
+        word = str(report.get("text", ""))[:200].strip().lower()
         if word not in asked.choices:
-            return Reading(name, problem=f"`{name}` = {report.get('text')!r} is not one of "
-                           f"{list(asked.choices)}")
+            return Reading(name, problem=f"`{name}` = {_short(report.get('text'))} is not one "
+                           f"of {list(asked.choices)}")
         return Reading(name, word=word)
     if state not in ("number", "quantity"):
         got = {"text": "a string", "array": "a list or an array", "complex": "a complex number",
-               "unreadable": "a value that cannot be read"}.get(
-                   state, f"{report.get('type', 'something else')}")
+               "unreadable": "a value that cannot be read", "garbled": "no readable report"}.get(
+                   state, _short(report.get("type", "something else"), quote=False))
         return Reading(name, problem=f"`{name}` must be one number or a Quantity (got {got}); "
                        f"for example `{_example(asked)}`")
     if "shape" in report:
@@ -169,10 +173,14 @@ def read(asked, report, ureg):
     if report.get("complex"):
         return Reading(name, problem=f"`{name}` must be a real number, not a complex one: "
                        "give a magnitude and a direction, or the x and y components")
-    if "nonfinite" in report or "magnitude" not in report:
+    try:
+        x = float(report["magnitude"]) if type(report.get("magnitude")) in (
+            int, float) else math.nan
+    except OverflowError:       # an integer beyond float64
+        x = math.inf
+    if "nonfinite" in report or not math.isfinite(x):
         return Reading(name, problem=f"`{name}` is not a finite number "
-                       f"({report.get('nonfinite', 'no value')})")
-    x = float(report["magnitude"])
+                       f"({_short(report.get('nonfinite', 'no value'), quote=False)})")
     asked_unit = ureg.Unit(asked.unit or "")
     if state == "number":
         if asked.quantity_required:
@@ -181,7 +189,14 @@ def read(asked, report, ureg):
                 f"write e.g. `{_example(asked)}`"))
         si = ureg.Quantity(x, asked_unit).to_base_units().magnitude
         return Reading(name, si=float(si), bare=True, raw=x)
-    return _read_quantity(asked, x, str(report.get("units", "")), asked_unit, ureg)
+    units = report.get("units", "")
+    return _read_quantity(asked, x, units if isinstance(units, str) else "?", asked_unit, ureg)
+
+
+def _short(value, quote=True, limit=60):
+    """A value from a report as a message shows it: short, whatever it is."""
+    text = repr(value) if quote else str(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _read_quantity(asked, x, units_text, asked_unit, ureg):

@@ -135,3 +135,28 @@ def test_reading_gives_si_once():
     assert r.ok and r.bare and r.raw == 100 and r.si == pytest.approx(EXPECTED)
     r = read(ACC, {"state": "quantity", "magnitude": 1.0, "units": "(" * 5000}, ureg)
     assert not r.ok and "cannot read" in r.problem
+
+
+# ---- a report is the student's: the kernel can send anything ------------------------
+
+FORGED = [
+    {}, {"state": None}, {"state": ["number"]}, {"state": "number"},
+    {"state": "number", "magnitude": [1, 2]}, {"state": "number", "magnitude": {"a": 1}},
+    {"state": "number", "magnitude": "100"}, {"state": "number", "magnitude": True},
+    {"state": "number", "magnitude": 10 ** 400}, {"state": "number", "magnitude": None},
+    {"state": "quantity", "magnitude": 100.0, "units": ["in/s^2"]},
+    {"state": "quantity", "magnitude": 100.0, "units": "in/s^2" * 10000},
+    {"state": "quantity", "magnitude": 100.0, "units": {"in": 1}},
+    {"state": "other", "type": "x" * 1_000_000}, {"state": "other", "type": [[["deep"]]]},
+    {"state": "number", "magnitude": 1.0, "nonfinite": "z" * 1_000_000},
+    {"state": "text", "text": ["gentle"]}, {"state": "text", "text": "g" * 1_000_000},
+]
+
+
+@pytest.mark.parametrize("report", FORGED, ids=range(len(FORGED)))
+@pytest.mark.parametrize("asked", [ACC, ANG, QTY, CHOICE], ids=lambda a: a.name)
+def test_a_forged_report_is_refused_briefly_and_never_raises(asked, report):
+    verdict = judge(asked, report, EXPECTED if asked is not CHOICE else "gentle", 0.01, 1.0,
+                    ureg)
+    assert not verdict.ok and verdict.credit == 0
+    assert len(verdict.message) < 600, verdict.message[:700]

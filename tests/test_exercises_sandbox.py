@@ -107,3 +107,20 @@ def test_a_kernel_that_writes_garbage_on_the_protocol_costs_its_cell(command):
     r = run(command, LOAD, "import os, sys\nos.write(int(sys.argv[2]), b'\\xff' * 64)", "x = 2.0")
     assert r.cells[1].status in ("died", "timeout")
     assert r.reports["x"]["magnitude"] == 2.0
+
+
+FRAME = "import os, sys, struct\nos.write(int(sys.argv[2]), struct.pack('>I', len(body)) + body)"
+
+
+@pytest.mark.parametrize("body", [
+    "b'[' * 1_000_000",                                         # JSON nested too deep to read
+    "b'{\"status\": \"ok\", \"outputs\": 5, \"refused\": 7, \"values\": [1]}'",  # odd shapes
+    "b'{\"status\": \"error\", \"outputs\": [[[]]], \"ename\": {}, \"evalue\": []}'",
+])
+def test_a_forged_reply_costs_only_the_submission_never_the_grader(command, body):
+    """The kernel is the student's: a reply of any shape, sent in place of the real
+    one, is that cell's failure (or garbles that student's own reports) and
+    run_plan still returns."""
+    r = run(command, LOAD, f"body = {body}\n" + FRAME, "x = 2.0")
+    assert set(r.cells) == {0, 1, 2, 3}
+    assert r.reports["x"].get("magnitude") in (2.0, None)

@@ -170,10 +170,13 @@ def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=
     with ThreadPoolExecutor(max_workers=max(1, int(jobs))) as pool, \
             warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        futures = [pool.submit(prepare, config, course_dir, assignment, spec, s, command,
-                               limits, slots) for s in chosen]
+        futures = {pool.submit(prepare, config, course_dir, assignment, spec, s, command,
+                               limits, slots): s for s in chosen}
         for n, fut in enumerate(as_completed(futures), start=1):
-            sub = fut.result()
+            try:
+                sub = fut.result()
+            except Exception:   # never one submission's failure for the whole class:
+                sub = Submission(futures[fut])  # nbgrader's autograde tries it alone
             subs[sub.student] = sub
             if sub.readable:
                 t1 = time.monotonic()

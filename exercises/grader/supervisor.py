@@ -130,7 +130,7 @@ class Kernel:
                           f"limit of {MAX_FRAME}")
         try:
             reply = json.loads(self._read(size, deadline).decode("utf-8"))
-        except ValueError:
+        except (ValueError, RecursionError):    # not JSON, or nested too deep to read
             raise Failure("the notebook's process sent something that is not a reply") from None
         if not isinstance(reply, dict):
             raise Failure("the notebook's process sent something that is not a reply")
@@ -260,15 +260,13 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
             if step.kind == "code":
                 reply = kernel.call({"op": "run", "source": step.source},
                                     min(limits.cell_seconds, left))
-                cells[k] = _cell_run(reply, time.monotonic() - t0, output_left)
+                cells[k] = _readable(_cell_run, reply, time.monotonic() - t0, output_left)
                 done.append(k)
             else:
                 reply = kernel.call({"op": "report", "names": [step.name]},
                                     min(REPORT_SECONDS, left))
-                values = reply.get("values") if isinstance(reply.get("values"), dict) else {}
-                report = values.get(step.name)
-                reports[step.name] = report if isinstance(report, dict) else {"state": "garbled"}
-                _note_loaded(reply, loaded, refused)
+                reports[step.name] = _readable(_report_of, reply, step.name)
+                _readable(_note_loaded, reply, loaded, refused)
                 cells[k] = CellRun("ok", seconds=time.monotonic() - t0)
         except Failure as exc:
             seconds = time.monotonic() - t0
@@ -299,11 +297,28 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
     return RunResult(cells, reports, loaded, refused, time.monotonic() - start, starts, error)
 
 
+def _readable(read, reply, *args):
+    """``read(reply, *args)``; a reply of a shape the grader does not expect (the
+    kernel is the student's: it can send anything) is the cell's failure, never
+    the grader's."""
+    try:
+        return read(reply, *args)
+    except (TypeError, AttributeError, ValueError, KeyError, IndexError, RecursionError):
+        raise Failure("the notebook's process sent a reply the grader cannot read") from None
+
+
+def _report_of(reply, name):
+    values = reply.get("values")
+    report = values.get(name) if isinstance(values, dict) else None
+    return report if isinstance(report, dict) else {"state": "garbled"}
+
+
 def _note_loaded(reply, loaded, refused):
     who = reply.get("loaded")
     if isinstance(who, str) and who[:100] not in loaded:
         loaded.append(who[:100])
-    for other in reply.get("refused") or []:
+    others = reply.get("refused")
+    for other in others if isinstance(others, list) else []:
         if isinstance(other, str) and other[:100] not in refused and len(refused) < 20:
             refused.append(other[:100])
 
@@ -311,7 +326,8 @@ def _note_loaded(reply, loaded, refused):
 def _cell_run(reply, seconds, output_left):
     """A :class:`CellRun` from a run reply, its outputs checked and capped."""
     outputs = []
-    for out in reply.get("outputs") or []:
+    given = reply.get("outputs")
+    for out in given if isinstance(given, list) else []:
         clean = _clean_output(out, output_left)
         if clean:
             outputs.append(clean)
