@@ -626,3 +626,12 @@ def test_assign_refuses_an_assignment_with_submissions_unless_forced(graded):
                    check=False)
     assert proc.returncode == 2 and "already has" in proc.stderr and "--force" in proc.stderr
     assert "Traceback" not in proc.stderr
+
+
+def test_the_csv_never_hands_a_spreadsheet_a_formula():
+    """A student id or note taken from a submission may begin with "=" (the
+    exchange takes the id from the student's own environment)."""
+    from exercises.grader.gradetable import _cell_text
+    assert _cell_text('=HYPERLINK("http://x", "ok")') == '\'=HYPERLINK("http://x", "ok")'
+    assert [_cell_text(t) for t in ("+1", "-x", "@SUM(A1)")] == ["'+1", "'-x", "'@SUM(A1)"]
+    assert _cell_text("ann") == "ann" and _cell_text(-1.5) == -1.5 and _cell_text("") == ""

@@ -152,8 +152,17 @@ def export_csv(course_dir, assignment, path=None):
         writer = csv.DictWriter(fh, fieldnames=["student", *names, "score", "late_penalty",
                                                 "total", "max", "notes"])
         writer.writeheader()
-        writer.writerows(rows)
+        writer.writerows({k: _cell_text(v) for k, v in row.items()} for row in rows)
     return path, rows
+
+
+def _cell_text(value):
+    """A value as a spreadsheet reads it safely: text that a spreadsheet would take
+    for a formula (a student id or a note from a submission may begin with "=")
+    gets a leading apostrophe; numbers are written as they are."""
+    if isinstance(value, str) and value[:1] in ("=", "+", "-", "@", "\t", "\r"):
+        return "'" + value
+    return value
 
 
 def format_table(rows, names):
