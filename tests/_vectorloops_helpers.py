@@ -118,15 +118,17 @@ def start_on_crossed_once(system, monkeypatch, a, b, c, d, thetas):
     return bad
 
 
-def counting(monkeypatch, name):
+def counting(monkeypatch, name, owner=sweep_module.Sweep):
+    """Count the calls of ``owner.name`` (a method of Sweep, or a function of a
+    module such as solver.vectorloops.assembly)."""
     calls = {"n": 0}
-    method = getattr(sweep_module.Sweep, name)
+    method = getattr(owner, name)
 
-    def counted(self, *args):
+    def counted(*args):
         calls["n"] += 1
-        return method(self, *args)
+        return method(*args)
 
-    monkeypatch.setattr(sweep_module.Sweep, name, counted)
+    monkeypatch.setattr(owner, name, counted)
     return calls
 
 

@@ -73,7 +73,7 @@ def test_forced_fallbacks_and_restart_give_the_same_sweep(monkeypatch):
         original(self, intervals)
         if intervals and not calls["spoiled"]:   # spoil the end of the third interval
             a, b = intervals[2]
-            self.q[b] += 1e-6
+            self.record.q[b] += 1e-6
             calls["spoiled"] = True
         return intervals
 
@@ -111,7 +111,7 @@ def test_batched_guesses_that_land_on_the_other_assembly_are_caught(monkeypatch)
     system = system_of(fourbar_desc(a, b, c, d, *guesses_on("open", a, b, c, d, 0.0)))
     sw = sweep_module.Sweep(system, CYCLE, system.model.guess, 1e-13)
     sw.run()
-    inner = np.flatnonzero(~sw.sequential)[[5, 6, 150]]      # positions the batch solves
+    inner = np.flatnonzero(~sw.record.sequential)[[5, 6, 150]]  # positions the batch solves
     bad = start_on_crossed_once(system, monkeypatch, a, b, c, d, CYCLE[inner])
     walks = counting(monkeypatch, "walk_dense")
     m = solve(system, CYCLE, 1.0)
@@ -143,4 +143,4 @@ def test_short_sweeps_solve_most_positions_in_the_batch():
         t2 = np.radians(np.linspace(0.0, 360.0, n, endpoint=False))
         sw = sweep_module.Sweep(system, t2, system.model.guess, 1e-13)
         sw.run()
-        assert (sw.status == 0).all() and sw.sequential.sum() < n / 3
+        assert (sw.record.status == 0).all() and sw.record.sequential.sum() < n / 3

@@ -1,12 +1,12 @@
-"""solver.vectorloops.walks: ranges that cannot be assembled and guesses that land
-on the other assembly are walked, never answered across a jump."""
+"""solver.vectorloops.walks and .assembly: ranges that cannot be assembled and
+guesses that land on the other assembly are walked, never answered across a jump."""
 
 import numpy as np
 import pytest
 
 from solver.errors import NoConvergence
 from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import sweep as sweep_module
+from solver.vectorloops import assembly as assembly_module, sweep as sweep_module
 from solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import (CYCLE, LINKAGES, NON_GRASHOF, counting, start_on_crossed_once,
@@ -50,7 +50,7 @@ def test_unverifiable_reassembly_is_reported_not_returned():
     assert "did not close" in str(m.message)       # the first failure: the gap itself
     sw = sweep_module.Sweep(system_of(desc), t2, system_of(desc).model.guess, 1e-13)
     sw.run()
-    after = [str(e) for i, e in sw.errors.items() if np.degrees(t2[i]) >= 560]
+    after = [str(e) for i, e in sw.record.errors.items() if np.degrees(t2[i]) >= 560]
     honest = [e for e in after if "not on the assembly this sweep follows" in e]
     assert len(after) == 161 and len(honest) > 150
     assert all(e in honest or "did not close" in e for e in after)
@@ -60,7 +60,7 @@ def test_a_step_that_lands_on_the_other_assembly_is_caught(monkeypatch):
     a, b, c, d = LINKAGES["crank_rocker"]
     system = system_of(fourbar_desc(a, b, c, d, *guesses_on("open", a, b, c, d, 0.0)))
     bad = start_on_crossed_once(system, monkeypatch, a, b, c, d, CYCLE[[40, 41, 200]])
-    subdivided = counting(monkeypatch, "subdivide")
+    subdivided = counting(monkeypatch, "subdivide", assembly_module)
     m = solve(system, CYCLE, 1.0, batch=False)
     assert not bad and subdivided["n"] == 3
     assert (m.status == 0).all() and on_circuit(m, a, b, c, d, CYCLE, "open").all()

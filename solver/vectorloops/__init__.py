@@ -17,9 +17,11 @@ keeps that orientation and says so in ``notes`` (:mod:`.crossing`).
 Modules: :mod:`.description` (reading a description), :mod:`.newton` (the
 loop equations and Newton-Raphson), :mod:`.straightline` (one position's
 Newton step as generated Python), :mod:`.products` (BLAS products that stay
-single-threaded), :mod:`.sweep` and :mod:`.walks` (continuation),
-:mod:`.crossing` (change points), :mod:`.derivatives` (velocity to jerk),
-:mod:`.solve`, :mod:`.linkage` and :mod:`.batch` (the entry points).
+single-threaded), :mod:`.sweep` (the sweep's run), :mod:`.assembly` (one
+position on the followed assembly), :mod:`.walks` (continuation in small
+steps), :mod:`.record` (a sweep's results), :mod:`.crossing` (change points),
+:mod:`.derivatives` (velocity to jerk), :mod:`.solve`, :mod:`.linkage` and
+:mod:`.batch` (the entry points).
 """
 
 from .batch import solve_loops_case

@@ -1,114 +1,69 @@
-"""Continuation walks of a sweep (:mod:`.sweep`) in small steps: to check a
-position that Newton-Raphson reached off the prediction, through a singular
-position where two assemblies meet (:mod:`.crossing`), and back onto the
-followed assembly after a stretch that cannot be assembled.
+"""Continuation in small steps along one curve of solutions q(theta2).
 
-:class:`Walks` holds these methods of the sweep's state (``Sweep``); every
-walk keeps the followed orientation (the sign of det J, :mod:`.newton`).
+:class:`Continuation` knows only the loop equations (a :class:`.newton.LoopSystem`),
+Newton-Raphson's tolerance, the length scale and the threshold below which a
+solved position counts as singular. :meth:`Continuation.follow` walks from one
+solution to another input angle, halving its step where Newton-Raphson jumps
+or lands on the other orientation (the sign of det J, :mod:`.newton`), and
+stops at a change in orientation (a singular position, :mod:`.crossing`).
+It knows nothing of a sweep's results: :mod:`.assembly` decides with it which
+solution a sweep keeps, and :mod:`.sweep` drives the sweep.
 """
 
 import math
 
 import numpy as np
 
-from ..errors import NotAssemblable, Singular
-from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
-from .crossing import SWITCH_DISTANCE, ambiguity_message, crossing_note, other_branch
-from .newton import CONVERGED, ORIENTATION_FLOOR
+from .newton import CONVERGED, ORIENTATION_FLOOR, step_tolerance
 
 JUMP_TOLERANCE = 0.05   # [rad or length scale] beyond the predicted change
 WALK_STEP = 0.05        # [rad] largest continuation step of a walk
 MIN_WALK_STEP = 1e-6    # [rad] smallest step of a walk before it gives up
 WALK_ITERATIONS = 8     # Newton steps a walk step may take before it is halved
 MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
-
-
-class _BranchJump(Singular):
-    """Newton-Raphson reached closure only on another assembly."""
+SAMPLE_SINGULAR = 100.0  # a solved position whose |orientation| is below this many times
+                         # Newton's step tolerance (at most 1e-3) is treated as singular:
+                         # its orientation's sign and its slope are not trusted
 
 
 def sign_of(x):
+    """The sign of ``x`` as +1.0 or -1.0 (of -0.0: -1.0)."""
     return math.copysign(1.0, x)
 
 
-class Walks:
-    """The walking methods of a sweep's state (mixed into ``Sweep``)."""
+class Continuation:
+    """Path following on the loop equations of ``system`` (a LoopSystem) with
+    Newton-Raphson's convergence tolerance ``tol`` [-].
 
-    # --- off the prediction: a jump, or through a singular position -----------
-    def subdivide(self, i, t, it):
-        """Position i converged far from the prediction (a jump) or with the
-        other orientation than the followed assembly. Walk to it from the last
-        solved position in small steps on the followed orientation
-        (:meth:`follow`): if the walk arrives, Newton-Raphson had jumped and
-        the walk's solution stands; if the orientation changes even within a
-        step of MIN_WALK_STEP, a singular position where two assemblies meet
-        lies there (a change point), and the sweep finds its own assembly past
-        it (:meth:`switch`). Returns ``(q, iterations, slope, orient)`` or None
-        (position i failed)."""
-        t_a, q_a, s_a = self.state
-        if s_a is None:
-            self.fail(i, SINGULAR, _BranchJump(
-                f"at theta2 = {np.degrees(t):.6g} deg Newton-Raphson reaches the loops' closure "
-                f"only on another assembly, and the sweep cannot walk there from theta2 = "
-                f"{np.degrees(t_a):.6g} deg. Sweep in smaller steps."))
-            return None
-        kind, data = self.follow(np.array(q_a), np.array(s_a), t_a, t, self.sign,
-                                 float(self.orient[self.last]))
-        if kind == "arrived":
-            q_w, s_w, o_w = data
-            return q_w, it, s_w, o_w
-        if kind == "stuck":
-            self.fail(i, SINGULAR, _BranchJump(
-                f"near theta2 = {np.degrees(t_a + math.copysign(data, t - t_a)):.6g} deg "
-                f"Newton-Raphson reaches the loops' closure only on another assembly: the "
-                f"linkage passes a limit (toggle) position there. Sweep a range that avoids it."))
-            return None
-        t_p, q_p, o_p, s_p, t_n, q_n, o_n = data
-        # the orientation is about linear in theta2 there
-        w = o_p / (o_p - o_n) if o_p != o_n else 1.0
-        return self.switch(i, t_p + w * (t_n - t_p), q_p + w * (q_n - q_p), s_p, t)
+    ``scale`` (array) and ``scale_list`` (floats) are the unknowns' scales
+    [rad or length scale]; ``sample_singular`` is the |orientation| below
+    which a solution is singular (its orientation's sign and slope not
+    trusted).
+    """
 
-    def switch(self, i, t_c, q_c, v, t):
-        """At position i (theta2 = t), past the singular position q_c at t_c
-        that the continuation crossed along direction v (dq/dtheta2), find the
-        solution with the followed orientation. Within SWITCH_DISTANCE of the
-        crossing the two curves through q_c are told apart directly
-        (:func:`.crossing.other_branch`); farther, at SWITCH_DISTANCE, and the
-        sweep's own curve is followed from there to t. Returns ``(q,
-        iterations, slope, orient)``, with a note, or None with position i
-        failed and the positions past t_c blocked."""
-        d = t - t_c
-        t_w = t if abs(d) <= SWITCH_DISTANCE else t_c + math.copysign(SWITCH_DISTANCE, d)
-        q_k, it, _, reason, s_k, o_k = self.system.newton1(q_c + v * (t_w - t_c), t_w, self.tol)
-        near = found = None
-        if reason == CONVERGED and s_k is not None:
-            if abs(o_k) >= ORIENTATION_FLOOR and sign_of(o_k) == self.sign:
-                near = np.asarray(q_k), it, np.asarray(s_k), o_k
-            else:
-                near = other_branch(self.system, t_c, q_c, t_w, np.asarray(q_k), self.sign,
-                                    self.tol, JUMP_TOLERANCE)
-        if near is not None and t_w == t:
-            found = near
-        elif near is not None:
-            kind, data = self.follow(near[0], near[2], t_w, t, self.sign, near[3])
-            if kind == "arrived":
-                found = (data[0], near[1], data[1], data[2])
-        if found is None:
-            self.blocked = (t_c, math.copysign(1.0, d), i)
-            self.fail(i, SINGULAR, Singular(ambiguity_message(t_c, t)))
-            return None
-        self.notes[i] = crossing_note(t_c, t)
-        return found
+    def __init__(self, system, tol):
+        self.system, self.tol = system, tol
+        self.scale = system.scale
+        self.scale_list = [float(x) for x in system.scale]
+        self.sample_singular = min(1e-3, SAMPLE_SINGULAR * step_tolerance(tol))
+
+    def jumped(self, q, pred, change):
+        """Did Newton-Raphson land at ``q`` further from the prediction ``pred``
+        than the step explains? ``change`` is the step's largest scaled
+        first-order change [rad or length scale]. Returns a bool."""
+        limit = JUMP_TOLERANCE + 0.5 * change
+        return any(abs(a - b) > limit * sc for a, b, sc in zip(q, pred, self.scale_list))
 
     def follow(self, q, slope, t0, target, sign, orient=math.nan):
-        """Continuation from (t0, q, slope, orient) to theta2 = target in steps of
-        at most WALK_STEP, halved where a step jumps, does not close within
-        WALK_ITERATIONS, or (``sign`` not None) lands on the other orientation.
+        """Continuation from (t0, q, slope, orient) to theta2 = target [rad] in
+        steps of at most WALK_STEP, halved where a step jumps, does not close
+        within WALK_ITERATIONS, or (``sign`` not None) lands on the other
+        orientation.
 
         Returns ``(kind, data)``: ``("arrived", (q, slope, orient))``;
         ``("stuck", distance reached [rad])``; or, when the orientation changes
         within a step no longer than MIN_WALK_STEP, or a step lands on a
-        singular position (``|orient|`` below the sweep's threshold: the walk
+        singular position (``|orient|`` below ``sample_singular``: the walk
         is at the crossing itself), ``("flip", (t_p, q_p, orient_p, slope_p,
         t_n, q_n, orient_n))`` on either side of it.
         """
@@ -145,61 +100,3 @@ class Walks:
             if abs(h) < MIN_WALK_STEP and not other:
                 return "stuck", abs(t - t0)
         return "arrived", (q, slope, orient)
-
-    # --- after a stretch that cannot be assembled ------------------------------
-    def rejoin(self, i, q_try, slope_try, orient_try):
-        """Is the solution found at i, after a gap, on the followed assembly?
-
-        Walk by continuation to theta2[i] from the nearest solved position
-        below it and from the nearest above it (modulo the input's period, if
-        it has one), nearer first; a walk that arrives defines the assembly.
-        Returns ``(ok, q, slope, orient)``.
-        """
-        t = float(self.theta2[i])
-        anchors = np.flatnonzero(self.sequential[:i] & (self.status[:i] == OK)
-                                 & np.isfinite(self.slope[:i]).all(axis=1))
-        d = t - self.theta2[anchors]
-        period = self.system.period
-        walks = []
-        for forward in (True, False):
-            if period:
-                dist = np.remainder(d, period) if forward else np.remainder(d, period) - period
-            else:
-                dist = np.where(d >= 0 if forward else d <= 0, d, np.nan)
-            if np.isfinite(dist).any():
-                j = int(np.nanargmin(np.abs(dist)))
-                walks.append((abs(float(dist[j])), int(anchors[j]), float(dist[j])))
-        for _, a, dist in sorted(walks):
-            key = (a, dist > 0)
-            if key in self.walk_failed and abs(dist) > self.walk_failed[key]:
-                continue            # an earlier walk from a stopped short of this
-            reached = self.walk(a, dist)
-            if isinstance(reached, float):
-                self.walk_failed[key] = reached
-                continue
-            q_w, slope_w, orient_w = reached
-            if dist != t - self.theta2[a]:   # the same configuration, whole turns away
-                q_w, _, _, reason, slope_w, orient_w = self.system.newton1(q_w, t, self.tol)
-                if reason != CONVERGED or slope_w is None or self.flipped(orient_w):
-                    continue
-                q_w = np.asarray(q_w)
-            if np.max(np.abs(q_w - q_try) / self.scale) <= MATCH_TOLERANCE:
-                return True, q_try, slope_try, orient_try
-            return True, q_w, slope_w, orient_w
-        self.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
-            f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range where "
-            f"they cannot, but not on the assembly this sweep follows: no continuous path "
-            f"from the positions solved before reaches it. Solve this range on its own, with "
-            f"guesses for the assembly you want."))
-        return False, None, None, None
-
-    def walk(self, a, dist):
-        """Continuation from solved position a over ``dist`` [rad] of theta2 on
-        the followed orientation (:meth:`follow`). Returns (q, slope, orient) at
-        theta2[a] + dist, or the distance [rad] it reached before it had to
-        give up."""
-        kind, data = self.follow(self.q[a], self.slope[a], float(self.theta2[a]),
-                                 float(self.theta2[a]) + dist, self.sign, float(self.orient[a]))
-        if kind == "arrived":
-            return data
-        return data if kind == "stuck" else abs(data[0] - float(self.theta2[a]))
