@@ -569,9 +569,10 @@ stated(np.angle(A_B, deg=True), "-75.22");
 # The graded exercise family that practises this notebook is `rotation` (problem 7-1 style);
 # the instructor's guide lists every family with the notebooks that teach it.
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 2 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("rotation")
@@ -579,6 +580,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("A_A_x", Q_(-48500, "in/s^2"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 2: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("rotation", seed=2)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like.** The problem of seed 2, solved with the solver (`RotatingPoint`,

@@ -383,9 +383,10 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9);
 # The graded exercise family that practises this notebook is `fourbar` (with `coupler` for
 # step 8).
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 3 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("fourbar")
@@ -393,6 +394,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("alpha3", Q_(12.5, "rad/s^2"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 3: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("fourbar", seed=3)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 3, solved by the graphical construction:

@@ -445,9 +445,10 @@ assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
 #
 # The graded exercise family that practises this notebook is `slidercrank`.
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 5 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("slidercrank")
@@ -455,6 +456,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("A_slider", Q_(-1200, "in/s^2"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 5: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("slidercrank", seed=5)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `SliderCrank`:

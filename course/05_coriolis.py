@@ -637,9 +637,10 @@ stated(stops["omega4"][0], "82.8"), stated(stops["omega4"][1], "331.0");
 #
 # The graded exercise family that practises this notebook is `coriolis`.
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 5 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("coriolis")
@@ -647,6 +648,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("A_cor_mag", Q_(850, "in/s^2"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 5: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("coriolis", seed=5)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `InvertedSliderCrank`:

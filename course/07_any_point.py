@@ -414,9 +414,10 @@ assert np.all(np.diff(along) > 0)                              # grows from A to
 # The graded exercise family that practises this notebook is `coupler` (with `fourbar` for
 # the pins).
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 5 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("coupler")
@@ -424,6 +425,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("A_P_mag", Q_(730, "in/s^2"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 5: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("coupler", seed=5)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `FourBar`:

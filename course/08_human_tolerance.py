@@ -410,9 +410,10 @@ stated(floating, "15.7")
 #
 # The graded exercise family that practises this notebook is `tolerance`.
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 5 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("tolerance")
@@ -420,6 +421,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("A_g", Q_(1.2, "standard_gravity"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 5: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("tolerance", seed=5)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5: the passenger is a point on an arm

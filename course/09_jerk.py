@@ -457,9 +457,10 @@ stated(min(where, 360 - where), "59")
 #
 # The graded exercise family that practises this notebook is `jerk`.
 #
-# (The web page of this notebook leaves the drawn problem out, since there is nothing
-# to type into: download the notebook, or write the course with `accelab course --out DIR`,
-# and run it.)
+# (The web page of this notebook leaves the freshly drawn problem out, since there is
+# nothing to type into there: download the notebook, or write the course with
+# `accelab course --out DIR`, and run it. The problem of seed 5 below is the same on
+# every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
 p = practice("jerk")
@@ -467,6 +468,17 @@ p
 
 # %%
 # your answers, e.g.:  p.check("jerk4", Q_(-2.1e4, "rad/s^3"))
+
+# %% [markdown]
+# **A problem to try on this page**, seed 5: work it out on paper (or with the
+# solver), then unfold the answers.
+
+# %%
+p = practice("jerk", seed=5)
+p
+
+# %% tags=["hide-output"]
+p.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `FourBar` (the input's

@@ -57,6 +57,8 @@ nb_execution_timeout = notebooks.CELL_TIMEOUT
 nb_execution_raise_on_error = True
 nb_execution_show_tb = True
 nb_merge_streams = True
+# Markdown outputs (a practice problem, its answers) read as the pages do: tables, math
+nb_render_markdown_format = "myst"
 nb_ipywidgets_js = {}                # never load the widget manager from a CDN
 nb_output_stderr = "warn"
 

@@ -87,6 +87,11 @@ class Practice:
             return value
         return Q_(value, Q_(1.0, a.unit or "").to_base_units().units).to(a.unit or "")
 
+    def answers(self):
+        """Every answer, for after you tried: shown as a table in a notebook or on
+        the course's pages (where nothing can be typed, so a reader checks by eye)."""
+        return _Answers(self)
+
     def _figure_png(self):
         from .figure import statement_figure
         try:
@@ -124,3 +129,26 @@ def practice(family, seed=None, units="US"):
     if seed is None:
         seed = random.SystemRandom().randrange(1, 10**6)
     return Practice(family, seed, units)
+
+
+class _Answers:
+    """The answers of a :class:`Practice` problem as a table."""
+
+    def __init__(self, problem):
+        self._problem = problem
+
+    def _rows(self):
+        p = self._problem
+        for name, a in p.asked.items():
+            value = p.reveal(name)
+            shown = value if a.kind == "choice" else f"{value.magnitude:.4g} {a.unit}"
+            yield name, a.description, shown
+
+    def _repr_markdown_(self):
+        rows = "\n".join(f"| `{n}` | {d} | {v} |" for n, d, v in self._rows())
+        return (f"**Answers** (seed {self._problem.seed})\n\n| answer | quantity | value |\n"
+                f"|---|---|---|\n{rows}")
+
+    def __repr__(self):
+        return "\n".join(f"{n} = {v}" for n, _, v in self._rows())
+

@@ -13,6 +13,8 @@
   notebook teaches each family).
 """
 
+import base64
+import hashlib
 import importlib.util
 import posixpath
 import re
@@ -133,6 +135,23 @@ def caption_images(app, doctree):
         doctree.set_id(figure)
 
 
+def _embedded_to_file(app, uri):
+    """The file name in ``_images`` of an image embedded as a base64 ``data:``
+    URI (a notebook's Markdown output holds its figure so), written out once:
+    a browser opens a file at full size, but never navigates to a data URI."""
+    head, _, data = uri.partition(",")
+    kind = re.fullmatch(r"data:image/(png|jpeg|gif|svg\+xml);base64", head)
+    if not kind:
+        return None
+    raw = base64.b64decode(data)
+    name = f"embedded-{hashlib.sha1(raw).hexdigest()[:16]}.{kind.group(1).split('+')[0]}"
+    folder = Path(app.builder.outdir) / "_images"
+    folder.mkdir(parents=True, exist_ok=True)
+    if not (folder / name).exists():
+        (folder / name).write_bytes(raw)
+    return name
+
+
 def link_images(app, doctree, docname):
     """Wrap every image that is not already a link in a link to its file."""
     if app.builder.format != "html":
@@ -144,6 +163,10 @@ def link_images(app, doctree, docname):
         uri = image.get("candidates", {}).get("*", image["uri"])
         if uri in app.env.images:
             refuri = posixpath.join(imgdir, app.env.images[uri][1])
+        elif uri.startswith("data:") and _embedded_to_file(app, uri):
+            refuri = posixpath.join(imgdir, _embedded_to_file(app, uri))
+            image["uri"] = refuri
+            image["candidates"] = {"*": refuri}
         elif "://" in uri or uri.startswith("data:"):
             continue
         else:
