@@ -26,6 +26,7 @@ If Chromium is missing the set-up installs it with apt-get; the tests skip
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -118,6 +119,20 @@ def test_build_has_every_section(site):
     mathjax = site / "_static" / "mathjax" / "tex-chtml.js"
     assert mathjax.is_file(), "MathJax is not served with the site"
     assert list((site / "_static" / "mathjax" / "output" / "chtml" / "fonts").rglob("*.woff"))
+
+
+def test_course_pages_show_a_practice_problem_with_folded_answers(site):
+    """A reader of the site cannot type into a practice problem, so each topic
+    page shows one of fixed seed, its figure opening at full size, and its
+    answers folded; Markdown outputs render as tables and math, not as text."""
+    for page in sorted((site / "course").glob("0*.html")):
+        html = page.read_text()
+        body = html.split("A problem to try on this page", 1)[-1]
+        assert "Practice:" in body and "<details" in body, page.name
+        answers = body.split("<details", 1)[1]
+        assert "Answers</strong> (seed" in answers and "<table" in answers, page.name
+        assert re.search(r'href="\.\./_images/embedded-[0-9a-f]+\.png"', body), page.name
+    assert "<table" in (site / "course" / "11_speed_accuracy.html").read_text()
 
 
 # ---------------------------------------------------------------- the browser

@@ -49,3 +49,16 @@ def test_practice_values_are_never_a_graded_variants():
             for value in p.problem.given.values():
                 if str(value).endswith(" in"):
                     assert float(value.split()[0]) % 0.5 != 0.0
+
+
+@pytest.mark.parametrize("family", list(FAMILIES))
+def test_the_answers_table_shows_every_answer_as_revealed(family, capsys):
+    """What a course page folds under a practice problem: every answer, each one
+    that the problem's own check accepts."""
+    p = practice(family, seed=5)
+    table = p.answers()._repr_markdown_()
+    assert "(seed 5)" in table
+    for name, a in p.asked.items():
+        assert f"`{name}`" in table
+        assert p.check(name, p.reveal(name))
+    assert len(repr(p.answers()).splitlines()) == len(p.asked)
