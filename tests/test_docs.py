@@ -226,6 +226,9 @@ return {
               overflows: c ? c.scrollWidth > c.clientWidth + 1 : false,
               overflowX: c ? getComputedStyle(c).overflowX : null,
               cue: m.classList.contains('scrolls')}; }),
+  tables: [...document.querySelectorAll('.pst-scrollable-table-container')].map(t =>
+      ({overflows: t.scrollWidth > t.clientWidth + 1, overflowX: getComputedStyle(t).overflowX,
+        cue: t.classList.contains('scrolls')})),
   rawTex: /\\\\\\(|\\\\\\[/.test(article.innerText),
   images: [...document.images].map(i => ({src: i.src, complete: i.complete, width: i.naturalWidth,
       alt: i.getAttribute('alt') || '', inArticle: article.contains(i) && i.naturalWidth > 48,
@@ -368,6 +371,17 @@ def test_wide_equations_scroll_on_a_phone(crawl):
             if m["display"] and m["overflows"]]
     assert wide, "no equation wider than a phone: the scroll box is untested"
     assert all(m["cue"] and m["overflowX"] in ("auto", "scroll") for m in wide)
+
+
+def test_wide_tables_scroll_on_a_phone_with_a_cue(crawl):
+    """At 390 px a table wider than the page (notebook 11's methods) scrolls in its
+    own box and says so; at 1366 px none needs to."""
+    states, _ = crawl
+    wide = [t for st in states[390].values() for t in st["tables"] if t["overflows"]]
+    assert wide, "no table wider than a phone: the scroll box is untested"
+    assert all(t["cue"] and t["overflowX"] in ("auto", "scroll") for t in wide)
+    assert not any(t["cue"] for st in states[1366].values() for t in st["tables"]
+                   if not t["overflows"])
 
 
 def test_internal_links_resolve(crawl, server, site):
