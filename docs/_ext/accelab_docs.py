@@ -161,10 +161,11 @@ def link_images(app, doctree, docname):
         if isinstance(image.parent, nodes.reference):
             continue
         uri = image.get("candidates", {}).get("*", image["uri"])
+        embedded = _embedded_to_file(app, uri) if uri.startswith("data:") else None
         if uri in app.env.images:
             refuri = posixpath.join(imgdir, app.env.images[uri][1])
-        elif uri.startswith("data:") and _embedded_to_file(app, uri):
-            refuri = posixpath.join(imgdir, _embedded_to_file(app, uri))
+        elif embedded:
+            refuri = posixpath.join(imgdir, embedded)
             image["uri"] = refuri
             image["candidates"] = {"*": refuri}
         elif "://" in uri or uri.startswith("data:"):
