@@ -21,8 +21,13 @@ def _box(cons):
     return min(xs) - m, max(xs) + m, min(ys) - m, max(ys) + m
 
 
-def statement_figure(problem, dpi=90):
-    """PNG bytes of the problem's figure."""
+def statement_figure(problem, dpi=90, shared=True):
+    """PNG bytes of the problem's figure, drawn to scale from its values.
+
+    ``shared``: the figure stands in an assignment's notebook that every student
+    receives, drawn from one variant, so its title says the reader's values
+    differ; a practice problem's own figure (``shared=False``) says it is this
+    problem's."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -33,7 +38,8 @@ def statement_figure(problem, dpi=90):
     spec = problem.figure
     con = construct_case(spec["case"])
     fig, ax = plt.subplots(figsize=(5.0, 3.6), dpi=dpi, layout="constrained")
-    title = f"{problem.title} (schematic: your values differ)"
+    title = f"{problem.title} " + ("(schematic: your values differ)" if shared else
+                                   "(this problem, to scale)")
     if spec["mechanism"] == "rotation":
         # problem 7-1 style: the point at A and, later, at B on the same circle
         second = construct_case(spec["case_B"]) if "case_B" in spec else None

@@ -96,7 +96,7 @@ class Practice:
         from .figure import statement_figure
         try:
             with silenced():
-                return statement_figure(self.problem)
+                return statement_figure(self.problem, shared=False)
         except Exception:
             return None
 
