@@ -118,6 +118,18 @@ def length_unit(*lengths):
     return math.ldexp(1.0, math.frexp(m)[1])
 
 
+def scale_lengths(motion, names, unit):
+    """Multiply the outputs ``names`` of ``motion`` (a Motion; lengths and their
+    derivatives) by ``unit`` [m], the :func:`length_unit` the kernel divided by;
+    returns ``motion``."""
+    if unit != 1.0:
+        for name in names:
+            value = getattr(motion, name)
+            if value is not None:
+                setattr(motion, name, value * unit)
+    return motion
+
+
 def as_input(x):
     """A float for a scalar, else a float ndarray (the kernels keep a single
     position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""

@@ -22,7 +22,7 @@ import numpy as np
 
 from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
                      length_unit, masked,
-                     piecewise, without_float_warnings, where)
+                     piecewise, scale_lengths, without_float_warnings, where)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
@@ -58,12 +58,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     unit = length_unit(a, b, c)      # scale-free: lengths near 1, exactly
     out = _solve(a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit,
                  order)
-    if unit != 1.0:
-        for name in ('d', 'd_dot', 'd_ddot', 'd_dddot'):
-            value = getattr(out, name)
-            if value is not None:
-                setattr(out, name, value * unit)
-    return out
+    return scale_lengths(out, ('d', 'd_dot', 'd_ddot', 'd_dddot'), unit)
 
 
 def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
