@@ -45,7 +45,7 @@ bench: $(STAMP)
 
 # grading speed: 20 submissions of the demo assignment, sandbox, feedback and CSV
 bench-grading: $(STAMP)
-	$(BIN)/python -m benchmarks.grading --students 20 --jobs 2 --out build/bench
+	$(BIN)/python -m accelab.benchmarks.grading --students 20 --jobs 2 --out build/bench
 
 clean:
 	rm -rf build .pytest_cache

@@ -12,14 +12,14 @@ import importlib
 import os
 import sys
 
-import benchmarks.cli
-import exercises.cli
-import solver.cli
+import accelab.benchmarks.cli
+import accelab.exercises.cli
+import accelab.solver.cli
 
 #: the course layer's commands (``accelab course``) join when that module
 #: exists; it is imported by name so that its absence alone is tolerated
 #: (any other error while importing it is raised, never hidden)
-OPTIONAL_LAYERS = ("course.cli",)
+OPTIONAL_LAYERS = ("accelab.course.cli",)
 
 EPILOG = """examples:
   accelab solve fourbar a="2 in" b="6 in" c="9 in" d="7 in" theta2="30 deg" omega2="10 rad/s" alpha2="-5 rad/s^2"
@@ -30,7 +30,7 @@ run 'accelab COMMAND --help' for each command's options and an example."""
 
 def layers():
     """The modules whose ``register`` adds subcommands, in --help order."""
-    found = [solver.cli, benchmarks.cli, exercises.cli]
+    found = [accelab.solver.cli, accelab.benchmarks.cli, accelab.exercises.cli]
     for name in OPTIONAL_LAYERS:
         try:
             found.append(importlib.import_module(name))
@@ -41,7 +41,7 @@ def layers():
 
 
 def _parents(name):
-    """``"course.cli"`` -> ``{"course", "course.cli"}``."""
+    """``"accelab.course.cli"`` -> ``{"course", "accelab.course.cli"}``."""
     parts = name.split(".")
     return {".".join(parts[:k]) for k in range(1, len(parts) + 1)}
 

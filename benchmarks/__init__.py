@@ -1,6 +1,6 @@
 """The speed-against-accuracy benchmark (``accelab bench``, ``make bench``).
 
-It sits beside the library, not in it: it measures :mod:`solver` from the
+It sits beside the library, not in it: it measures :mod:`accelab.solver` from the
 outside and needs mpmath (``pip install -e ".[bench]"``), which a plain
 install of the library does not. Nothing imports mpmath until a run starts
 (:mod:`.cli` checks first and says what to install).

@@ -21,7 +21,7 @@ invertedslidercrank    a = 4 in, c = 3 in, d = 8 in, gamma = 90    full turn
 fivebar                geared fivebar a, b, c, d, f = 1, 4, 4, 1,  full turn
                        3 in, lam = -2, phi = 30 deg, open
 sixbar-watt2           the Watt II sixbar of                       full turn
-                       ``solver.vectorloops.examples`` (2 loops)
+                       ``accelab.solver.vectorloops.examples`` (2 loops)
 sixbar-slider          the sixbar driving a slider of the          full turn
                        examples (2 loops, one unknown length)
 eightbar               the Watt II sixbar with a third fourbar     full turn
@@ -113,7 +113,7 @@ class Case:
     def kernel(self, theta2, order=3, **motion):
         """Solve with the closed-form kernel (unit-free); returns a Motion."""
         import importlib
-        module = importlib.import_module(f"solver.kernels.{self.mechanism}")
+        module = importlib.import_module(f"accelab.solver.kernels.{self.mechanism}")
         m = dict(MOTION, **motion)
         return module.solve(**self.params, theta2=theta2, omega2=m["omega2"],
                             alpha2=m["alpha2"], jerk2=m["jerk2"], circuit=self.circuit,
@@ -162,12 +162,12 @@ def _fourbar(name, title, a, b, c, d, circuit):
 
 
 def _si(text, kind):
-    from solver.units import Q_
+    from accelab.solver.units import Q_
     return Q_(text).m_as("m" if kind == "length" else "rad")
 
 
 def from_example(name, title, desc):
-    """A loops case from a description of :mod:`solver.vectorloops.examples`
+    """A loops case from a description of :mod:`accelab.solver.vectorloops.examples`
     (quantity strings) converted to SI, its guesses included."""
     vectors, guess = {}, {}
     for vname, v in desc["vectors"].items():
@@ -204,7 +204,7 @@ def eightbar():
     6, 7, 8), ten pin joints, one degree of freedom, six unknown angles.
     Lengths in inches; the output rocker 8 swings about O8 = O6 + (8, -2) in.
     """
-    from solver.vectorloops.examples import watt2_sixbar
+    from accelab.solver.vectorloops.examples import watt2_sixbar
     desc = watt2_sixbar()
     vectors = dict(desc["vectors"])
     vectors.update({
@@ -224,7 +224,7 @@ def _closed_form_guess(case):
 
 def all_cases():
     """The documented set, in the order the tables list it (dict name -> Case)."""
-    from solver.vectorloops import examples
+    from accelab.solver.vectorloops import examples
     cases = [
         _fourbar("fourbar-open", "fourbar, Grashof crank-rocker, open", 2 * IN, 6 * IN, 9 * IN,
                  7 * IN, "open"),
@@ -271,7 +271,7 @@ def all_cases():
 
 def description(case, guess=None):
     """The case as a loops description (docs/conventions.md#vector-loop-format) (quantity strings), with
-    guesses (default: the case's) for :class:`solver.VectorLoopLinkage`."""
+    guesses (default: the case's) for :class:`accelab.solver.VectorLoopLinkage`."""
     guess = case.guess if guess is None else guess
     vectors = {}
     for name, v in case.vectors.items():

@@ -6,7 +6,7 @@ times one ``accelab grade`` run with feedback and CSV, then where the time goes:
 the sandboxed runs (and, per submission, the sandbox's start against the
 cells), judging with nbgrader's autograde, feedback, the CSV.
 
-    python -m benchmarks.grading --students 20 --jobs 2 --out build/bench
+    python -m accelab.benchmarks.grading --students 20 --jobs 2 --out build/bench
 
 Goal (issue 11): 20 submissions graded, with feedback and CSV, in at most 20 s
 on a 2-core machine.
@@ -25,9 +25,9 @@ GOAL_SECONDS = 20.0
 
 
 def build_course(folder, students):
-    from exercises.assign import assign
-    from exercises.notebook import read_spec
-    from exercises.simulate import key_code, submit
+    from accelab.exercises.assign import assign
+    from accelab.exercises.notebook import read_spec
+    from accelab.exercises.simulate import key_code, submit
 
     roster = [f"s{k:02d}" for k in range(students)]
     assign(folder, "A", roster=roster, course_id="bench", release=True, say=lambda *a: None)
@@ -47,8 +47,8 @@ def build_course(folder, students):
 
 def sandbox_start_seconds(repeats=5):
     """Seconds to start a sandboxed kernel and hand it a statement (median)."""
-    from exercises.grader.sandbox import sandbox
-    from exercises.grader.supervisor import Limits, run_plan
+    from accelab.exercises.grader.sandbox import sandbox
+    from accelab.exercises.grader.supervisor import Limits, run_plan
     statement = {"student": "x", "problems": []}
     times = []
     for _ in range(repeats):
@@ -59,12 +59,12 @@ def sandbox_start_seconds(repeats=5):
 
 
 def _noop():
-    from exercises.grader.plan import Step
+    from accelab.exercises.grader.plan import Step
     return Step(0, "code", "pass")
 
 
 def measure(students=20, jobs=2, keep=None):
-    from exercises.grader.grade import grade
+    from accelab.exercises.grader.grade import grade
     folder = keep or tempfile.mkdtemp(prefix="accelab-bench-grading-")
     course = os.path.join(folder, "course")
     try:

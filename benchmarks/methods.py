@@ -12,18 +12,18 @@ Methods:
 ``kernels``
     the closed forms through the unit-free layer, vectorised over the cycle;
 ``units``
-    the same through the unit-aware API (``solver.FourBar`` ...): Quantities
+    the same through the unit-aware API (``accelab.solver.FourBar`` ...): Quantities
     in, the outputs read as Quantities;
 ``scalar``
     a Python loop calling the closed forms at one crank angle at a time;
 ``loops``
-    the general vector-loop solver (``solver.VectorLoopLinkage``) on the
+    the general vector-loop solver (``accelab.solver.VectorLoopLinkage``) on the
     case's loops, at each convergence tolerance it offers;
 ``fd-h``
     the closed-form position (order 0) differentiated by central finite
     differences of step h in theta2 (chain rule for the time derivatives);
 ``graphical``
-    the step-by-step graphical construction (``solver.graphical``), one
+    the step-by-step graphical construction (``accelab.solver.graphical``), one
     position at a time, to acceleration;
 peers (:mod:`.peers`) when installed.
 """
@@ -109,7 +109,7 @@ def _kernels(case, theta2):
 def _scalar(case, theta2):
     _closed_form(case)
     names = _names(case, 3)
-    module = importlib.import_module(f"solver.kernels.{case.mechanism}")
+    module = importlib.import_module(f"accelab.solver.kernels.{case.mechanism}")
     p, m = case.params, MOTION
     solve = module.solve
     angles = [float(t) for t in theta2]
@@ -126,8 +126,8 @@ def _scalar(case, theta2):
 
 def unit_mechanism(case):
     """The unit-aware object of a closed-form case, geometry as Quantities."""
-    import solver
-    from solver.units import Q_
+    from accelab import solver
+    from accelab.solver.units import Q_
     _closed_form(case)
     cls = getattr(solver, _UNIT_CLASSES[case.mechanism])
     geometry = {}
@@ -143,7 +143,7 @@ def unit_mechanism(case):
 
 def unit_inputs(theta2):
     """The input motion as Quantities (built once, outside the timed work)."""
-    from solver.units import Q_
+    from accelab.solver.units import Q_
     t = theta2 if np.ndim(theta2) else float(theta2)
     return {"theta2": Q_(t, "rad"), "omega2": Q_(MOTION["omega2"], "rad/s"),
             "alpha2": Q_(MOTION["alpha2"], "rad/s^2"), "jerk2": Q_(MOTION["jerk2"], "rad/s^3")}
@@ -167,8 +167,8 @@ def _units(case, theta2):
 # --- the general solver ----------------------------------------------------------
 def loop_tolerance_parameter():
     """Name of the convergence-tolerance argument of
-    :meth:`solver.VectorLoopLinkage.solve`, or None if it has none."""
-    from solver import VectorLoopLinkage
+    :meth:`accelab.solver.VectorLoopLinkage.solve`, or None if it has none."""
+    from accelab.solver import VectorLoopLinkage
     params = inspect.signature(VectorLoopLinkage.solve).parameters
     for name in ("tol", "tolerance", "xtol", "rtol"):
         if name in params:
@@ -178,7 +178,7 @@ def loop_tolerance_parameter():
 
 def loop_default_tolerance():
     """The default of that argument (None if there is none)."""
-    from solver import VectorLoopLinkage
+    from accelab.solver import VectorLoopLinkage
     name = loop_tolerance_parameter()
     if name is None:
         return None
@@ -187,14 +187,14 @@ def loop_default_tolerance():
 
 
 def loop_linkage(case):
-    from solver import VectorLoopLinkage
+    from accelab.solver import VectorLoopLinkage
     from .cases import description
     return VectorLoopLinkage(**description(case))
 
 
 def _loops_with(tol):
     def prepare(case, theta2):
-        from solver.units import Q_
+        from accelab.solver.units import Q_
         linkage = loop_linkage(case)
         names = _names(case, 3)
         inputs = unit_inputs(theta2)
@@ -228,7 +228,7 @@ def fd_with(h):
         for k, (vec, kind, n) in case.outputs.items():
             groups.setdefault((vec, kind), {})[n] = k
         groups = {g: v for g, v in groups.items() if 0 in v}
-        module = importlib.import_module(f"solver.kernels.{case.mechanism}")
+        module = importlib.import_module(f"accelab.solver.kernels.{case.mechanism}")
         N = theta2.size
         stencil = (theta2[None, :] + h * np.arange(-2, 3)[:, None]).ravel()
         w, al, jk = MOTION["omega2"], MOTION["alpha2"], MOTION["jerk2"]
@@ -265,7 +265,7 @@ GRAPHICAL = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar")
 
 
 def _graphical(case, theta2):
-    from solver.graphical import construct
+    from accelab.solver.graphical import construct
     if case.mechanism not in GRAPHICAL:
         raise NotApplicable(f"{case.name} has no graphical construction")
     names = _names(case, 2)

@@ -1,7 +1,7 @@
 """The whole benchmark: every case by every method, the stability study, the
 scaling, the goals; written as ``bench.json`` with the charts beside it.
 
->>> from benchmarks.run import run_benchmark
+>>> from accelab.benchmarks.run import run_benchmark
 >>> data = run_benchmark("build/bench", mode="quick")   # doctest: +SKIP
 """
 
@@ -259,7 +259,7 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
                                              "scipy.optimize.fsolve at every position; no jerk; "
                                              "measured on the fourbars and the slider-crank"]}}
     if loop_tolerance_parameter() is None:
-        data["peers"]["notes"]["loops"] = ("solver.VectorLoopLinkage.solve has no convergence "
+        data["peers"]["notes"]["loops"] = ("accelab.solver.VectorLoopLinkage.solve has no convergence "
                                            "tolerance argument yet: measured at its default")
     log(f"accelab bench ({mode}): {len(cases)} cases x {len(method_list)} methods, "
         f"{cfg['positions']} positions per cycle")
@@ -308,8 +308,8 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
 def _thresholds(st):
     """Where the closed forms start refusing, and where their condition
     measure crosses the solver's SINGULAR_CONDITION, on the distance axis."""
-    from solver.kernels import common
-    from solver.vectorloops import SINGULAR_CONDITION
+    from accelab.solver.kernels import common
+    from accelab.solver.vectorloops import SINGULAR_CONDITION
     out = {}
     d = stability.threshold_distance(st, "kernels")
     if d:

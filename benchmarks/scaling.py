@@ -103,7 +103,7 @@ def units(sizes=(1, 360, 10 ** 5), repeats=7, case_name="fourbar-open"):
 
     The unit-aware work: ``FourBar.solve`` with Quantity inputs (built
     beforehand) and every output read as a Quantity; the unit-free work:
-    ``solver.kernels.fourbar.solve`` on floats. Also a single solve with
+    ``accelab.solver.kernels.fourbar.solve`` on floats. Also a single solve with
     string inputs (``theta2="30 deg"``), parsed by pint each time.
     """
     from .timing import measure_interleaved
@@ -132,9 +132,9 @@ def loops(n=360, repeats=5):
     """Time per position [us] of the general solver against the number of
     loops, position to jerk, over ``n`` positions of a full crank turn."""
     from .cases import description
-    from solver import VectorLoopLinkage
-    from solver.units import Q_
-    from solver.vectorloops.examples import fourbar as fourbar_example
+    from accelab.solver import VectorLoopLinkage
+    from accelab.solver.units import Q_
+    from accelab.solver.vectorloops.examples import fourbar as fourbar_example
     cases = all_cases()
     chain = [from_example("fourbar-loops", "fourbar (1 loop)", fourbar_example()),
              cases["sixbar-watt2"], cases["sixbar-slider"], cases["eightbar"]]

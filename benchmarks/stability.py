@@ -155,9 +155,9 @@ def newton_guesses(offsets=None, trials=24, seed=7, points=None):
         ``offsets`` [rad] and per point ``same``, ``other``, ``failed``,
         ``wrong`` (fractions per offset), with the point's description.
     """
-    from solver import VectorLoopLinkage
-    from solver.errors import AccelabError
-    from solver.units import Q_
+    from accelab.solver import VectorLoopLinkage
+    from accelab.solver.errors import AccelabError
+    from accelab.solver.units import Q_
     from .cases import description
     cases = all_cases()
     offsets = np.logspace(-3, math.log10(math.pi), 16) if offsets is None else offsets

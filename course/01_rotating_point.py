@@ -28,20 +28,20 @@
 #   formula sheet;
 # - tell an *acceleration difference* (two points of one rigid body) from a *relative
 #   acceleration* (two points of different bodies), and know what each lets you assume;
-# - work problem 7-1 by hand, in inches and in metres, and check it with `solver`.
+# - work problem 7-1 by hand, in inches and in metres, and check it with `accelab.solver`.
 
 # %%
 # %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.animation import animate
-from course.kit import (COLORS, cartesian, explore, in_g, point_label, polar, stated,
+from accelab.course.animation import animate
+from accelab.course.kit import (COLORS, cartesian, explore, in_g, point_label, polar, stated,
                         use_style, vector)
-from exercises.practice import practice
-from solver import Q_, RotatingPoint
-from solver.graphical import construct_case
-from solver.graphical.draw import draw_linkage
+from accelab.exercises.practice import practice
+from accelab.solver import Q_, RotatingPoint
+from accelab.solver.graphical import construct_case
+from accelab.solver.graphical.draw import draw_linkage
 
 use_style()
 
@@ -81,7 +81,7 @@ use_style()
 # Let us check eq. 7.3 against the solver for a point 4 in from its pivot at
 # $\theta = 30^\circ$, turning clockwise ($\omega = -20$ rad/s) while speeding up
 # counter-clockwise ($\alpha = 150$ rad/s$^2$). Writing the formula out here is for learning
-# only: the assertion makes sure it says what `solver` computes.
+# only: the assertion makes sure it says what `accelab.solver` computes.
 
 # %%
 p, theta, omega, alpha = 4.0 * 0.0254, np.radians(30), -20.0, 150.0   # SI: m, rad, rad/s, rad/s^2
@@ -119,7 +119,7 @@ draw_linkage(rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"), ax=ax,
 plt.show()
 
 # %% [markdown]
-# The drawing is the solver's (`solver.graphical`), as every linkage drawing of the course:
+# The drawing is the solver's (`accelab.solver.graphical`), as every linkage drawing of the course:
 # the link to scale, the acceleration components at the point they belong to, and a scale bar
 # for each (inches for the link, in/s$^2$ for the arrows). The normal part lies along the link,
 # so it is drawn just beside it.

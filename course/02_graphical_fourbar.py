@@ -19,7 +19,7 @@
 # still the quickest independent check on a program, and it shows *why* the analytic
 # equations look the way they do. Here we build Example 7-1 of the chapter (Robert L. Norton,
 # *Design of Machinery*, chapter 7, section 7.2 and its Figure 7-4) one step at a time with
-# `solver.graphical`, which performs the construction as geometry (it never asks the analytic
+# `accelab.solver.graphical`, which performs the construction as geometry (it never asks the analytic
 # solver for an answer).
 #
 # **You will be able to**
@@ -39,12 +39,12 @@ import textwrap
 
 import matplotlib.pyplot as plt
 
-from course.kit import cartesian, explore, polar, stated, use_style
-from exercises.practice import practice
-from solver import FourBar, Q_, NotAssemblable, Singular
-from solver.graphical import construct, construct_case
-from solver.graphical.draw import draw_linkage, draw_polygon
-from solver.graphical.gallery import EXAMPLE_7_1
+from accelab.course.kit import cartesian, explore, polar, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, Q_, NotAssemblable, Singular
+from accelab.solver.graphical import construct, construct_case
+from accelab.solver.graphical.draw import draw_linkage, draw_polygon
+from accelab.solver.graphical.gallery import EXAMPLE_7_1
 
 use_style()
 
@@ -226,7 +226,7 @@ print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"
 # all.
 
 # %%
-a, b, c, d = (x * 0.0254 for x in (5, 5, 5, 7))          # SI, as solver.graphical takes them
+a, b, c, d = (x * 0.0254 for x in (5, 5, 5, 7))          # SI, as accelab.solver.graphical takes them
 toggle = math.acos((a * a + d * d - (b + c) ** 2) / (2 * a * d))
 print(f"toggle at theta2 = {math.degrees(toggle):.4f} deg")
 for t2 in (toggle - 0.05, toggle, toggle + 0.05):

@@ -37,13 +37,13 @@ import math
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.animation import animate
-from course.kit import CIRCUIT_COLORS, cartesian, explore, polar, stated, use_style
-from exercises.practice import practice
-from solver import FourBar, NotAssemblable, Q_, Singular
-from solver.graphical import construct_case
-from solver.graphical.draw import draw_linkage
-from solver.graphical.gallery import EXAMPLE_7_1
+from accelab.course.animation import animate
+from accelab.course.kit import CIRCUIT_COLORS, cartesian, explore, polar, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, NotAssemblable, Q_, Singular
+from accelab.solver.graphical import construct_case
+from accelab.solver.graphical.draw import draw_linkage
+from accelab.solver.graphical.gallery import EXAMPLE_7_1
 
 use_style()
 

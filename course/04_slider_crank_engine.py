@@ -38,13 +38,13 @@ import math
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.animation import animate
-from course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style
-from exercises.practice import practice
-from solver import NotAssemblable, Q_, SliderCrank, Singular
-from solver.graphical import construct_case
-from solver.graphical.draw import draw_linkage, draw_polygon
-from solver.graphical.gallery import SLIDER_CRANK
+from accelab.course.animation import animate
+from accelab.course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import NotAssemblable, Q_, SliderCrank, Singular
+from accelab.solver.graphical import construct_case
+from accelab.solver.graphical.draw import draw_linkage, draw_polygon
+from accelab.solver.graphical.gallery import SLIDER_CRANK
 
 use_style()
 
@@ -97,7 +97,7 @@ use_style()
 #
 # The denominator $b\cos\theta_3$ vanishes when the rod stands perpendicular to the slide,
 # which only a rod no longer than crank plus offset can reach. Checked against the solver,
-# at the slider-crank `solver.graphical` also draws (40 mm crank, 120 mm rod, 10 mm offset):
+# at the slider-crank `accelab.solver.graphical` also draws (40 mm crank, 120 mm rod, 10 mm offset):
 
 # %%
 sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")

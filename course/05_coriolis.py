@@ -76,13 +76,13 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.animation import animate
-from course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
-from exercises.practice import practice
-from solver import InvertedSliderCrank, Q_, SlottedLink
-from solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
-from solver.graphical.draw import draw_linkage, draw_polygon
-from solver.graphical.geometry import intersect_lines
+from accelab.course.animation import animate
+from accelab.course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
+from accelab.exercises.practice import practice
+from accelab.solver import InvertedSliderCrank, Q_, SlottedLink
+from accelab.solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
+from accelab.solver.graphical.draw import draw_linkage, draw_polygon
+from accelab.solver.graphical.geometry import intersect_lines
 
 use_style()
 
@@ -95,7 +95,7 @@ def show(name, z):
 
 
 def legend_of(ax, kinds, lines=False):
-    """A legend naming the vector kinds drawn (colours and line styles of solver.graphical)."""
+    """A legend naming the vector kinds drawn (colours and line styles of accelab.solver.graphical)."""
     handles = [plt.Line2D([], [], color=COLORS[k], linestyle=LINESTYLES[k], linewidth=2,
                           label={"normal": "normal (centripetal)", "resultant": "resultant"}.get(k, k))
                for k in kinds]
@@ -145,7 +145,7 @@ turned = np.angle(r.A_coriolis.magnitude / r.V_slip.magnitude, deg=True)
 print(f"Coriolis is V_slip turned by {turned:+.0f} deg (omega2 < 0: clockwise)")
 
 # %% [markdown]
-# `solver.graphical` draws the same four parts at the block and adds them tip to tail; the
+# `accelab.solver.graphical` draws the same four parts at the block and adds them tip to tail; the
 # resultant closes the polygon (the chapter's Figure 7-7b and c). The block's motion is given
 # here, so no construction lines are needed: every part is known in size and direction.
 
@@ -353,7 +353,7 @@ A_BA_727b = (b * r.alpha3.magnitude * (s3 - 1j * c3) + b * w3**2 * (c3 + 1j * s3
 assert np.isclose(A_BA_727b, r.A_BA.to("in/s^2").magnitude, rtol=1e-12)
 
 # %% [markdown]
-# The graphical construction of `solver.graphical` does the same analysis by geometry alone (it
+# The graphical construction of `accelab.solver.graphical` does the same analysis by geometry alone (it
 # never calls the analytic solver). Its polygon has *two* unknown lengths: $\mathbf{A}_{slip}$ along
 # the slide (line rr) and the tangential acceleration of the point $A_4$ of link 4 under A,
 # perpendicular to $O_4A$ (line pp). The Coriolis vector is known in size and direction from the

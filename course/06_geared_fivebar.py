@@ -38,12 +38,12 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
-from course.animation import animate
-from course.kit import COLORS, explore, in_g, polar, stated, use_style
-from exercises.practice import practice
-from solver import FourBar, GearedFiveBar, Q_
-from solver.graphical import fivebar as fivebar_construction
-from solver.graphical.draw import draw_linkage
+from accelab.course.animation import animate
+from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, GearedFiveBar, Q_
+from accelab.solver.graphical import fivebar as fivebar_construction
+from accelab.solver.graphical.draw import draw_linkage
 
 use_style()
 

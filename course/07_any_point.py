@@ -36,10 +36,10 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
-from course.animation import animate
-from course.kit import COLORS, explore, in_g, polar, stated, use_style, vector
-from exercises.practice import practice
-from solver import FourBar, Q_
+from accelab.course.animation import animate
+from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style, vector
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, Q_
 
 use_style()
 

@@ -35,9 +35,9 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.kit import COLORS, G0, explore, in_g, stated, use_style
-from exercises.practice import practice
-from solver import FourBar, Q_
+from accelab.course.kit import COLORS, G0, explore, in_g, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, Q_
 
 use_style()
 
@@ -51,7 +51,7 @@ use_style()
 # $$ 1\,g \approx 386\ \text{in/s}^2 \approx 32.2\ \text{ft/s}^2 \approx 9.81\ \text{m/s}^2 , $$
 #
 # standardised as exactly 9.80665 m/s². (pint calls it `standard_gravity` or `g_0`; its `g` is the
-# gram. `course.kit.G0` is one standard gravity.)
+# gram. `accelab.course.kit.G0` is one standard gravity.)
 #
 # **What a rider feels.** A seat must push its rider with the force $m(\mathbf{A} - \mathbf{g})$:
 # $m\mathbf{A}$ to accelerate them and $-m\mathbf{g}$ to hold them up. Divided by $m$ this is the
@@ -438,7 +438,7 @@ p.answers()
 # turning about a fixed axis, as in notebook 1:
 
 # %%
-from solver import RotatingPoint
+from accelab.solver import RotatingPoint
 
 p = practice("tolerance", seed=5)
 g = p.given
@@ -449,7 +449,7 @@ assert not p.check("A_g", abs(A).to("m/s^2").magnitude) # m/s^2 handed in where 
 # %% [markdown]
 # ## Common mistakes
 #
-# - **Writing `Q_(3, "g")`.** That is three grams. Use `standard_gravity`, `g_0` or `course.kit.G0`.
+# - **Writing `Q_(3, "g")`.** That is three grams. Use `standard_gravity`, `g_0` or `accelab.course.kit.G0`.
 # - **Forgetting gravity.** The rider feels $\mathbf{A} - \mathbf{g}$, not $\mathbf{A}$; at rest
 #   $\mathbf{A} = 0$ and they still feel 1 g.
 # - **Quoting only the peak.** Tolerance depends on direction (along the spine is worst) and

@@ -33,9 +33,9 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.kit import COLORS, explore, polar, stated, use_style
-from exercises.practice import practice
-from solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
+from accelab.course.kit import COLORS, explore, polar, stated, use_style
+from accelab.exercises.practice import practice
+from accelab.solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
 
 use_style()
 

@@ -38,9 +38,9 @@ import copy
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course.kit import COLORS, explore, stated, use_style, vector
-from solver import AccelabError, FourBar, Q_, VectorLoopLinkage
-from solver.vectorloops.examples import sixbar_slider, watt2_sixbar
+from accelab.course.kit import COLORS, explore, stated, use_style, vector
+from accelab.solver import AccelabError, FourBar, Q_, VectorLoopLinkage
+from accelab.solver.vectorloops.examples import sixbar_slider, watt2_sixbar
 
 use_style()
 
@@ -232,7 +232,7 @@ except AccelabError as err:
 #
 # with four unknowns: $\theta_3$, $\theta_4$ (which also turns $\mathbf{R}_{4C}$, rigidly
 # attached at 180°), $\theta_5$ and the slider's length $S$. The description is the one shipped
-# in `solver.vectorloops.examples`:
+# in `accelab.solver.vectorloops.examples`:
 
 # %%
 slider_six = sixbar_slider()

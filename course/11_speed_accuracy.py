@@ -43,11 +43,11 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import Markdown, display
 
-from course.kit import explore, measure, stated, use_style
-from solver import FourBar, Q_, Singular, VectorLoopLinkage
-from solver.graphical import construct
-from solver.kernels import MAX_ROUNDOFF
-from solver.kernels import fourbar as closed_form
+from accelab.course.kit import explore, measure, stated, use_style
+from accelab.solver import FourBar, Q_, Singular, VectorLoopLinkage
+from accelab.solver.graphical import construct
+from accelab.solver.kernels import MAX_ROUNDOFF
+from accelab.solver.kernels import fourbar as closed_form
 
 try:  # the reference needs mpmath (installed with the test extra: pip install -e ".[test]")
     import mpmath
@@ -313,7 +313,7 @@ METHODS = {   # name: (run, read, family of the charts)
 
 # %% [markdown]
 # Now time each one and measure its worst error up to acceleration and up to jerk. The clock
-# (`course.kit.measure`) warms each method up, then times them in turn within each of five
+# (`accelab.course.kit.measure`) warms each method up, then times them in turn within each of five
 # repeats, so that a busy machine slows them all alike, and reports the median:
 
 # %%
@@ -692,7 +692,7 @@ fds = [row for row in table.values() if row["family"] == "fd"]
 graph = table["graphical construction"]
 fd_errors = ", ".join(f"{min(errors[n]):.0e}" for n in derivative)
 rows = [
-    ("closed forms, vectorised (`solver.kernels`, or a class with an array of `theta2`)",
+    ("closed forms, vectorised (`accelab.solver.kernels`, or a class with an array of `theta2`)",
      f"{kern['us']:.2f} µs", f"{kern['jerk']:.0e}, to jerk",
      "whole cycles, design sweeps, optimisation",
      "only the mechanisms that have one; refuses near a toggle (example 3)"),
@@ -711,7 +711,7 @@ rows = [
      f"at best {fd_errors} (velocity, acceleration, jerk)",
      "a check when only positions exist",
      "the step: too large truncates, too small amplifies round-off; silently wrong near toggles"),
-    ("graphical construction (`solver.graphical`)", f"{graph['us']:.0f} µs",
+    ("graphical construction (`accelab.solver.graphical`)", f"{graph['us']:.0f} µs",
      f"{graph['acc']:.0e}, to acceleration", "seeing the vectors; an independent check",
      "one position at a time; no jerk"),
 ]
@@ -823,7 +823,7 @@ assert all(v > 1e-3 for v in at[-1].values())                       # truncation
 #
 # <details><summary>Answer</summary>
 #
-# The closed-form kernel, `solver.kernels.fourbar.solve`, with one array of all the angles in SI
+# The closed-form kernel, `accelab.solver.kernels.fourbar.solve`, with one array of all the angles in SI
 # floats and `order=2` (compute only what is needed): the cheapest per position of all the
 # methods example 1 measured, so a million positions cost about a million times that. Units at
 # the edges only: convert the design variables once, not inside the loop.

@@ -2,13 +2,13 @@
 
 The notebooks are jupytext percent-format scripts (``course/NN_slug.py``, no
 outputs in git), shipped with the package: ``accelab course --out DIR``
-writes them as ``.ipynb`` notebooks (:mod:`course.cli`), :func:`notebooks`
+writes them as ``.ipynb`` notebooks (:mod:`accelab.course.cli`), :func:`notebooks`
 lists them, and ``make docs`` publishes them as the course section of the
 documentation site (``docs/``). They are clients of the installed packages:
-:mod:`solver` for every number, :mod:`course.kit` for what they share (the
-``explore`` control, number formatting, plot style, :func:`course.kit.stated`),
-:mod:`course.animation` for the mechanisms that move, and
-``exercises.practice`` for self-study problems with instant feedback.
+:mod:`accelab.solver` for every number, :mod:`accelab.course.kit` for what they share (the
+``explore`` control, number formatting, plot style, :func:`accelab.course.kit.stated`),
+:mod:`accelab.course.animation` for the mechanisms that move, and
+``accelab.exercises.practice`` for self-study problems with instant feedback.
 ``errata.md`` lists the misprints of the chapter the course found, and
 ``FAMILIES.md`` which notebook teaches each graded exercise family.
 """

@@ -1,10 +1,10 @@
 """Mechanisms that move: the linkage through its cycle with its acceleration
-vectors (drawn by the solver's linkage drawer, :func:`solver.graphical.draw.draw_linkage`),
+vectors (drawn by the solver's linkage drawer, :func:`accelab.solver.graphical.draw.draw_linkage`),
 and beside it a marker running along the curves of the angular accelerations
 and of the sizes of the accelerations.
 
->>> from course.animation import animate
->>> from solver.graphical.gallery import EXAMPLE_7_1
+>>> from accelab.course.animation import animate
+>>> from accelab.solver.graphical.gallery import EXAMPLE_7_1
 >>> animate(EXAMPLE_7_1)            # shown in a notebook as an animated PNG
 
 Made with :class:`matplotlib.animation.FuncAnimation` and written as an
@@ -27,8 +27,8 @@ import tempfile
 
 import numpy as np
 
-from solver.graphical import construct_case
-from solver.graphical import style as _style
+from accelab.solver.graphical import construct_case
+from accelab.solver.graphical import style as _style
 
 __all__ = ["animate", "Animation", "DEFAULTS"]
 
@@ -180,7 +180,7 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
     import matplotlib.pyplot as plt
     from matplotlib.animation import FuncAnimation
 
-    from solver.graphical.draw import draw_linkage, units_of
+    from accelab.solver.graphical.draw import draw_linkage, units_of
 
     start, stop = angles or (0.0, 360.0)
     fine = np.linspace(start, stop, int(round(abs(stop - start) / 2.0)) + 1)
@@ -200,7 +200,7 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         for con, mv in zip(cons, motion_values):
             v = _value(con, name, mv)
             if isinstance(v, str):
-                from solver.units import Q_
+                from accelab.solver.units import Q_
                 v = Q_(v).to_base_units().magnitude
             vals.append(v)
         return np.array(vals)

@@ -91,7 +91,7 @@ def run(args):
 
 
 def main(argv=None):
-    """``python -m course.cli --out DIR`` (the same as ``accelab course``)."""
+    """``python -m accelab.course.cli --out DIR`` (the same as ``accelab course``)."""
     parser = argparse.ArgumentParser(prog="accelab")
     sub = parser.add_subparsers(dest="command")
     register(sub)

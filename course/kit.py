@@ -8,7 +8,7 @@ Jupyter session. Executed headless (the tests and the site build set
 slider instead, side by side, so a printed or static page still shows what
 moving the slider teaches.
 
->>> from course.kit import explore
+>>> from accelab.course.kit import explore
 >>> def draw(theta2, omega2):
 ...     fig, ax = plt.subplots()
 ...     ...                       # one figure for these values
@@ -23,8 +23,8 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 
-from solver import Q_
-from solver.graphical import style as _style
+from accelab.solver import Q_
+from accelab.solver.graphical import style as _style
 
 #: colours of the vector kinds, as the graphical constructions draw them
 COLORS = {kind: spec["color"] for kind, spec in _style.COMPONENT.items()}
@@ -318,11 +318,11 @@ def measure(functions, repeats=5, min_time=0.01):
 def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, beside=0.0, **_):
     """Draw ``vec`` (complex) as an arrow from ``start`` (complex, drawing units)
     in the colour and line style of its kind, ``scale * vec`` long, as the
-    graphical constructions draw them (:func:`solver.graphical.draw.arrow`).
+    graphical constructions draw them (:func:`accelab.solver.graphical.draw.arrow`).
     ``label`` is placed when the figure is drawn, clear of the figure's lines,
     texts and other labels. ``beside`` [pt] shifts the arrow to its left
     (negative: right), e.g. off a link it lies along. Returns the tip."""
-    from solver.graphical.draw import arrow
+    from accelab.solver.graphical.draw import arrow
     return arrow(ax, start, vec, kind, label, scale, beside)
 
 
@@ -330,5 +330,5 @@ def point_label(ax, text, z, **kw):
     """Name the point ``z`` (complex, drawing units): the label is placed when the
     figure is drawn, beside the point and clear of the figure's lines, texts and
     other labels (as :func:`vector` places its labels)."""
-    from solver.graphical.labels import labels_of
+    from accelab.solver.graphical.labels import labels_of
     labels_of(ax).add_point(text, complex(z), fontsize=kw.pop("fontsize", 11), **kw)

@@ -18,12 +18,14 @@ sys.path[:0] = [str(ROOT), str(HERE / "_ext"), str(HERE)]
 
 import notebooks  # noqa: E402  (docs/notebooks.py: how the course is executed)
 
+import accelab  # noqa: E402
+
 notebooks.set_kernel_env()
 
 project = "accelab"
 author = "the accelab developers"
 copyright = "accelab developers"
-release = version = "0.1.0"
+release = version = accelab.__version__   # the one place the version is written
 
 extensions = [
     "myst_nb",

@@ -42,14 +42,12 @@ def sources(course=COURSE):
 
 
 def kernel_env(base=None):
-    """Environment of the kernel: headless figures, the inline backend, and the
-    repository and ``course/`` importable (``solver``, ``coursekit``)."""
+    """Environment of the kernel: headless figures and the inline backend. The notebooks
+    import the installed package (``accelab.solver``, ``accelab.course.kit``), never the
+    repository's folders."""
     env = dict(os.environ if base is None else base)
     env["ACCELAB_STATIC"] = "1"
     env["MPLBACKEND"] = "module://matplotlib_inline.backend_inline"
-    paths = [str(ROOT), str(COURSE)]
-    env["PYTHONPATH"] = os.pathsep.join(
-        paths + [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p and p not in paths])
     env.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
     return env
 

@@ -13,7 +13,7 @@ grading line, on plain data:
 
 Neither side holds an expected value: :class:`Asked` is what the statement asks
 for (name, unit, kind), nothing more. Judging the value is the grader's job
-(:mod:`exercises.grader.judge`).
+(:mod:`accelab.exercises.grader.judge`).
 """
 
 import math

@@ -38,8 +38,8 @@ ROSTER = [{"id": "ada", "first_name": "Ada", "last_name": "Lovelace"},
 
 def worked_case(out):
     """Print Example 7-1 (Norton): fourbar a=2, b=6, c=9, d=7 in, theta2=30 deg,
-    omega2=10 rad/s, alpha2=-5 rad/s^2, open circuit, solved by solver.FourBar."""
-    from solver import FourBar
+    omega2=10 rad/s, alpha2=-5 rad/s^2, open circuit, solved by accelab.solver.FourBar."""
+    from accelab.solver import FourBar
     r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
         theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit="open")
     out("Worked case (Example 7-1): fourbar a=2 in, b=6 in, c=9 in, d=7 in, open circuit,")

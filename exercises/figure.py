@@ -1,11 +1,11 @@
 """A schematic figure of a problem's linkage (PNG bytes), drawn by the solver's
-linkage drawer (:func:`solver.graphical.draw.draw_linkage`) from the positions
+linkage drawer (:func:`accelab.solver.graphical.draw.draw_linkage`) from the positions
 of the instructor's preview variant. Every student's geometry differs, so the
 figure is titled as a schematic and shows the chapter's symbols, not numbers."""
 
 import io
 
-from solver.batch import read_case
+from accelab.solver.batch import read_case
 
 #: the input's symbols, written beside the driven pivot
 INPUT = r"$\theta_2, \omega_2, \alpha_2$"
@@ -13,7 +13,7 @@ INPUT = r"$\theta_2, \omega_2, \alpha_2$"
 
 def _box(cons):
     """A frame [display length unit] that holds every construction's points."""
-    from solver.graphical.draw import units_of
+    from accelab.solver.graphical.draw import units_of
     pts = [z * units_of(c)["length"][1] for c in cons for z in c.linkage.points.values()]
     xs, ys = [z.real for z in pts], [z.imag for z in pts]
     size = max(max(xs) - min(xs), max(ys) - min(ys)) or 1.0
@@ -32,8 +32,8 @@ def statement_figure(problem, dpi=90, shared=True):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from solver.graphical import construct_case
-    from solver.graphical.draw import draw_linkage, units_of
+    from accelab.solver.graphical import construct_case
+    from accelab.solver.graphical.draw import draw_linkage, units_of
 
     spec = problem.figure
     con = construct_case(spec["case"])

@@ -1,5 +1,5 @@
 """What runs inside the grading sandbox: a submission's cells, one at a time, as
-the grader's supervisor (:mod:`exercises.grader.supervisor`) sends them, and
+the grader's supervisor (:mod:`accelab.exercises.grader.supervisor`) sends them, and
 reports of what the answer variables hold.
 
 This is trusted code in an untrusted process: the student's cells run in this
@@ -11,14 +11,14 @@ Protocol: length-prefixed JSON frames (4-byte big-endian length, then UTF-8
 JSON) on two inherited file descriptors, commands in and replies out:
 
 * ``{"op": "statement", "statement": {...}}`` -> ``{"ok": true}``: the
-  submitter's statement (:func:`exercises.runtime.set_grading_statement`);
+  submitter's statement (:func:`accelab.exercises.runtime.set_grading_statement`);
 * ``{"op": "run", "source": "..."}`` -> ``{"status": "ok" | "error",
   "outputs": [...]}``: one cell, its outputs as nbformat output dicts (plain
   text and PNG images only, each capped);
 * ``{"op": "report", "names": [...]}`` -> ``{"values": {name: report},
-  "loaded": ..., "refused": [...]}`` (:func:`exercises.answers.describe`).
+  "loaded": ..., "refused": [...]}`` (:func:`accelab.exercises.answers.describe`).
 
-Run as ``python -I -m exercises.kernel CMD_FD REPLY_FD LIMITS_JSON``.
+Run as ``python -I -m accelab.exercises.kernel CMD_FD REPLY_FD LIMITS_JSON``.
 """
 
 import base64
@@ -171,7 +171,7 @@ def _displays(items, limits):
 
 
 def report(shell, names):
-    """What each named variable holds (:func:`exercises.answers.describe`)."""
+    """What each named variable holds (:func:`accelab.exercises.answers.describe`)."""
     from .answers import MISSING, describe
     values = {}
     for name in names:
@@ -184,8 +184,27 @@ def report(shell, names):
     return {"values": values, "loaded": loaded, "refused": refused[:20]}
 
 
+def alias_old_names():
+    """The student-side modules under the names accelab 0.1 gave them.
+
+    A notebook released by accelab 0.1 imports ``exercises.runtime`` in its
+    locked cells, and nbgrader restores locked cells from the gradebook, so a
+    course made then keeps grading (CHANGELOG, 0.2.0). Only here, inside the
+    sandbox: nothing of the package installs the old names.
+    """
+    import types
+    from . import answers, runtime
+    old = types.ModuleType("exercises", "accelab 0.1's name of accelab.exercises")
+    old.__path__ = []
+    old.runtime, old.answers = runtime, answers
+    for name, module in (("exercises", old), ("exercises.runtime", runtime),
+                         ("exercises.answers", answers)):
+        sys.modules.setdefault(name, module)
+
+
 def serve(cmd_fd, reply_fd, limits):
     shell = make_shell()
+    alias_old_names()
     while True:
         message = read_frame(cmd_fd)
         if message is None or message.get("op") == "exit":

@@ -3,7 +3,7 @@
 ``create_course(root, course_id, roster)`` writes ``nbgrader_config.py``, the
 embedded sqlite gradebook (``gradebook.db``) with the roster's students, and the
 roster itself (``.accelab/roster.json``: the CSV covers every student on it).
-The config puts :class:`exercises.grader.nbgrader_step.JudgeSubmission` in place
+The config puts :class:`accelab.exercises.grader.nbgrader_step.JudgeSubmission` in place
 of nbgrader's execution step, so that however autograde is started (``accelab
 grade``, ``nbgrader autograde``, formgrader) a submission runs in the sandbox and
 is judged outside it.
@@ -23,7 +23,7 @@ from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPrep
 from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
                                     LimitOutput, SaveAutoGrades)
 
-from exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission, sanitize_steps
+from accelab.exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission, sanitize_steps
 
 c = get_config()  # noqa: F821
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -7,7 +7,7 @@ and on the half-steps of the families' grids, so that a practice problem is
 never a graded one (with the default ranges), and the check works only on the
 problem it drew. Inside the grading sandbox this module is not there at all.
 
->>> from exercises.practice import practice
+>>> from accelab.exercises.practice import practice
 >>> p = practice("fourbar", seed=7)        # the same problem every time with seed 7
 >>> p.check("alpha3", Q_(-120, "rad/s^2"))  # prints right, or why not
 """
@@ -15,7 +15,7 @@ problem it drew. Inside the grading sandbox this module is not there at all.
 import base64
 import random
 
-from solver.units import Q_, ureg
+from accelab.solver.units import Q_, ureg
 
 from .answers import describe
 from .families import FAMILIES, generate

@@ -3,7 +3,7 @@
 An :class:`Answer` is what one answer cell grades: the variable ``name`` the
 student assigns, the ``unit`` the statement asks for, the batch ``cases`` it
 depends on (label -> case dict in the batch format of the conventions page), and
-an ``expr`` over those cases' outputs (see :mod:`exercises.expr`), evaluated in SI.
+an ``expr`` over those cases' outputs (see :mod:`accelab.exercises.expr`), evaluated in SI.
 ``kind`` is "number", "angle" (compared modulo 360 deg) or "choice" (a word
 picked from ``choices``; no expr is published).
 
@@ -11,14 +11,14 @@ Two views leave this module: :meth:`Problem.statement` is what a student's
 kernel may hold (given values and what is asked, no cases, no exprs);
 :meth:`Problem.public` adds the machine-readable cases and exprs for an outside
 solver (``accelab variant``, instructor side). The key itself (numbers) is
-computed only by :mod:`exercises.grader.key`.
+computed only by :mod:`accelab.exercises.grader.key`.
 """
 
 import json
 from dataclasses import dataclass, field, asdict
 from functools import lru_cache
 
-from solver.batch import solve_case
+from accelab.solver.batch import solve_case
 
 from .answers import Asked
 

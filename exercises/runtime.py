@@ -4,7 +4,7 @@ statement (given values and what is asked) and the visible checks.
 The kernel only reports. Nothing here holds, computes or judges an expected
 value: a student's values are checked for form and dimension (the visible test
 cells), and the grader judges them later, in its own process, against the key
-it computes for the submitter (:mod:`exercises.grader`).
+it computes for the submitter (:mod:`accelab.exercises.grader`).
 
 The student id comes from, in order: ``ACCELAB_STUDENT_ID``, ``JUPYTERHUB_USER``
 (the student's own server), and else the self-study default ``"self-study"``.
@@ -14,7 +14,7 @@ statement before any cell runs, and only that one can be loaded.
 
 import os
 
-from solver.units import Q_, ureg
+from accelab.solver.units import Q_, ureg
 
 from .answers import MISSING, Asked, describe, read
 
@@ -136,7 +136,7 @@ def check_format(name, namespace):
 
 
 def set_grading_statement(statement):
-    """Called by the sandbox's kernel (:mod:`exercises.kernel`) before any cell
+    """Called by the sandbox's kernel (:mod:`accelab.exercises.kernel`) before any cell
     runs: the submitter's statement, the only one a graded notebook can load."""
     _state["grading"] = statement
     _state["refused"] = []

@@ -42,7 +42,7 @@ def key_code(spec, student, transform=None):
     answer, another unit, ...) or None to keep the right one. (Simulations and
     tests only: the key never enters a student's notebook.)
     """
-    from solver.units import Q_
+    from accelab.solver.units import Q_
     from .grader.key import key_for
     key = key_for(spec, student)
     code = {}

@@ -2,19 +2,19 @@
 
 Two layers (see the README, "How the code is laid out"):
 
-* :mod:`solver.kernels` -- unit-free closed forms on numpy arrays of SI floats;
+* :mod:`accelab.solver.kernels` -- unit-free closed forms on numpy arrays of SI floats;
 * the unit-aware classes below, which take and return pint Quantities built on
   the package's single registry ``ureg``.
 
->>> from solver import FourBar
+>>> from accelab.solver import FourBar
 >>> r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
 ...     theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
 >>> r.alpha3.to("rad/s^2")
 
-The general vector-loop solver (:mod:`solver.vectorloops`, section 7.8) and
-the graphical constructions (:mod:`solver.graphical`, section 7.2) sit beside
-them; :mod:`solver.parameters` declares every mechanism's parameters once and
-:mod:`solver.cases` reads a case of the batch format into SI floats once.
+The general vector-loop solver (:mod:`accelab.solver.vectorloops`, section 7.8) and
+the graphical constructions (:mod:`accelab.solver.graphical`, section 7.2) sit beside
+them; :mod:`accelab.solver.parameters` declares every mechanism's parameters once and
+:mod:`accelab.solver.cases` reads a case of the batch format into SI floats once.
 
 References
 ----------

@@ -1,12 +1,12 @@
 """Solving cases of the batch format: the one path from a case to its answer.
 
 ``accelab solve --cases FILE`` and ``accelab solve MECHANISM name=value ...``
-both come here: :func:`read_case` (:mod:`solver.cases`) checks the case and
+both come here: :func:`read_case` (:mod:`accelab.solver.cases`) checks the case and
 converts it to SI floats once; :func:`solve` builds the unit-aware mechanism
 from those floats and solves it; :func:`result_object` writes the batch
 contract's answer. :func:`solve_case` does all three and never raises, so
 one bad case never stops the others. A ``"loops"`` case goes to the
-vector-loop solver (:func:`solver.vectorloops.solve_loops_case`).
+vector-loop solver (:func:`accelab.solver.vectorloops.solve_loops_case`).
 """
 
 from .cases import Case, check_mechanism, read_case
@@ -20,9 +20,9 @@ __all__ = ["read_case", "solve", "solve_case", "solve_cases", "result_object", "
 
 
 def solve(case):
-    """The :class:`~solver.mechanisms.Result` of a case read by :func:`read_case`.
+    """The :class:`~accelab.solver.mechanisms.Result` of a case read by :func:`read_case`.
 
-    Raises the :class:`~solver.errors.AccelabError` family (not assemblable,
+    Raises the :class:`~accelab.solver.errors.AccelabError` family (not assemblable,
     singular ...).
     """
     mech = MECHANISMS[case.mechanism].from_si(case.geometry(), given=case.given,

@@ -4,7 +4,7 @@ A case is a dict like ``{"mechanism": "fourbar", "a": "2 in", ..., "theta2":
 "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}``: the mechanism, its
 quantities as text with units (or Quantities), and optionally ``circuit``.
 :func:`read_case` checks it against the mechanism's declared parameters
-(:mod:`solver.parameters`) and converts every quantity to an SI float, the
+(:mod:`accelab.solver.parameters`) and converts every quantity to an SI float, the
 only conversion on its way to the kernels; the command line reads its
 ``name=value`` arguments into the same dict.
 """
@@ -19,7 +19,7 @@ __all__ = ["Case", "read_case", "MECHANISM_NAMES"]
 
 MECHANISM_NAMES = list(BATCH_MECHANISMS) + ["loops"]
 #: the key under which a reader of JSON lists the keys a case gave twice
-#: (solver.cli.io), so that such a case is refused instead of the last value
+#: (accelab.solver.cli.io), so that such a case is refused instead of the last value
 #: silently winning
 DUPLICATES = "__duplicate_keys__"
 
@@ -87,7 +87,7 @@ def read_case(case):
     mech = check_mechanism(case)
     if mech == "loops":
         raise InvalidInput("a 'loops' case is a description of vectors, read by "
-                           "solver.vectorloops (solver.batch.solve_case takes both)", "mechanism")
+                           "accelab.solver.vectorloops (accelab.solver.batch.solve_case takes both)", "mechanism")
     spec = PARAMETERS[mech]
     allowed = set(spec.names()) | {"mechanism"} | ({"circuit"} if spec.circuits else set())
     unknown = sorted(k for k in case if k not in allowed)

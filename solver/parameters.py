@@ -1,10 +1,10 @@
 """What each mechanism takes, declared once.
 
 Every parameter is declared here with its kind of quantity (a key of
-:data:`solver.units.KINDS`), whether it must be given, whether it must be
+:data:`accelab.solver.units.KINDS`), whether it must be given, whether it must be
 positive, its default and what it means. The unit-aware classes
-(:mod:`solver.mechanisms`), the batch format and the command line
-(:mod:`solver.cases`) read these declarations, and so can the exercise
+(:mod:`accelab.solver.mechanisms`), the batch format and the command line
+(:mod:`accelab.solver.cases`) read these declarations, and so can the exercise
 generators: a parameter added here is taken, checked and listed everywhere.
 
 Defaults, one policy for the Python API, the batch and the command line: a

@@ -1,7 +1,7 @@
 """What every result of the package offers: one protocol, two result types.
 
-:class:`~solver.mechanisms.Result` (the closed-form mechanisms) and
-:class:`~solver.vectorloops.LoopResult` (any linkage as vector loops) share
+:class:`~accelab.solver.mechanisms.Result` (the closed-form mechanisms) and
+:class:`~accelab.solver.vectorloops.LoopResult` (any linkage as vector loops) share
 this protocol (:class:`Kinematics`):
 
 * ``result[name]`` -- an output as a pint Quantity (SI units of the
@@ -42,7 +42,7 @@ class Kinematics:
         raise NotImplementedError
 
     def kind(self, name):
-        """The kind of quantity (a key of :data:`solver.units.KINDS`) of an output."""
+        """The kind of quantity (a key of :data:`accelab.solver.units.KINDS`) of an output."""
         raise NotImplementedError
 
     def outputs(self):

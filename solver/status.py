@@ -5,7 +5,7 @@ cannot close the loops there) or ``SINGULAR`` (the position exists but its
 velocity and acceleration equations are singular, or too ill-conditioned to
 vouch for the numbers). :data:`STATUS_NAMES` gives each the name of the
 batch contract's error kind (docs/conventions.md#error-kinds), the ``kind`` of the matching
-exception in :mod:`solver.errors`.
+exception in :mod:`accelab.solver.errors`.
 """
 
 OK, NOT_ASSEMBLABLE, SINGULAR = 0, 1, 2

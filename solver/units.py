@@ -183,7 +183,7 @@ def parse_quantity(value, kind, name):
             except Exception as exc:
                 raise InvalidInput(f"{name} = {show(value)} comes from another pint "
                                    f"registry whose units this one cannot read "
-                                   f"({_reason(exc)}); build it with solver.Q_", name) from None
+                                   f"({_reason(exc)}); build it with accelab.solver.Q_", name) from None
     elif isinstance(value, (bool, np.bool_)):
         raise InvalidInput(f"{name} must be {KINDS[kind][3]}, not a truth value ({value!r}). "
                            f"Example: {name}={example}", name)

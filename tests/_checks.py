@@ -1,4 +1,4 @@
-"""How the tests compare an answer with the reference (benchmarks.reference).
+"""How the tests compare an answer with the reference (accelab.benchmarks.reference).
 
 :func:`errors` is the error measure of the kernels' accuracy tests;
 :func:`compare_to_branches` the rule of the project's reference check

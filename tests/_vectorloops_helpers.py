@@ -1,17 +1,17 @@
-"""What the tests of solver.vectorloops share: example linkages, comparisons,
+"""What the tests of accelab.solver.vectorloops share: example linkages, comparisons,
 the closed-form fourbar's assemblies, and the loops closed in mpmath by the
-project's one high-precision reference (benchmarks.reference)."""
+project's one high-precision reference (accelab.benchmarks.reference)."""
 
 import numpy as np
 
-from benchmarks.cases import from_example
-from benchmarks.reference import LoopReference
-from solver import Q_
-from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
-from solver.vectorloops.description import read_description
-from solver.vectorloops.examples import EXAMPLES, fourbar
-from solver.vectorloops.solve import system_from_case
+from accelab.benchmarks.cases import from_example
+from accelab.benchmarks.reference import LoopReference
+from accelab.solver import Q_
+from accelab.solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
+from accelab.solver.vectorloops.description import read_description
+from accelab.solver.vectorloops.examples import EXAMPLES, fourbar
+from accelab.solver.vectorloops.solve import system_from_case
 
 
 MOTION = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
@@ -120,7 +120,7 @@ def start_on_crossed_once(system, monkeypatch, a, b, c, d, thetas):
 
 def counting(monkeypatch, name, owner=sweep_module.Sweep):
     """Count the calls of ``owner.name`` (a method of Sweep, or a function of a
-    module such as solver.vectorloops.assembly)."""
+    module such as accelab.solver.vectorloops.assembly)."""
     calls = {"n": 0}
     method = getattr(owner, name)
 
@@ -133,7 +133,7 @@ def counting(monkeypatch, name, owner=sweep_module.Sweep):
 
 
 def mp_solver(desc):
-    """The project's reference (benchmarks.reference: Newton-Raphson in mpmath on
+    """The project's reference (accelab.benchmarks.reference: Newton-Raphson in mpmath on
     the loop equations alone) for a description: ``(model, q_at, points_at)``
     with ``q_at(theta2, start)`` the unknowns in the order of
     ``model.unknown_names`` and ``points_at(theta2, q)`` every named point."""

@@ -9,11 +9,11 @@ import math
 import numpy as np
 import pytest
 
-from solver import FourBar, NoConvergence, NotAssemblable, Q_, Singular, VectorLoopLinkage
-from benchmarks.cases import all_cases, description
-from benchmarks.reference import at_points, toggle_angle
-from benchmarks.run import run_benchmark
-from benchmarks.stability import STUDY_CASE, near_toggle, newton_guesses
+from accelab.solver import FourBar, NoConvergence, NotAssemblable, Q_, Singular, VectorLoopLinkage
+from accelab.benchmarks.cases import all_cases, description
+from accelab.benchmarks.reference import at_points, toggle_angle
+from accelab.benchmarks.run import run_benchmark
+from accelab.benchmarks.stability import STUDY_CASE, near_toggle, newton_guesses
 
 #: an answer near a toggle must be this close to the reference, or refused
 NEAR_TOGGLE_TOLERANCE = 1e-6

@@ -1,4 +1,4 @@
-"""benchmarks.reference, the one high-precision reference of the tests and
+"""accelab.benchmarks.reference, the one high-precision reference of the tests and
 the benchmark, checked by an independent route: mpmath's numerical
 differentiation (at high precision, along the input's motion law) of
 positions found without the reference's derivative solves -- the geometric
@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 from mpmath import mpf
 
-import benchmarks.reference as ref
-from benchmarks import accuracy
-from benchmarks.cases import MOTION, all_cases
-from benchmarks.reference import LoopReference, cached
-from benchmarks.reference.mechanisms import ANGLE_NAMES, POSITIONS, SLIDER_SUFFIX, expj
+import accelab.benchmarks.reference as ref
+from accelab.benchmarks import accuracy
+from accelab.benchmarks.cases import MOTION, all_cases
+from accelab.benchmarks.reference import LoopReference, cached
+from accelab.benchmarks.reference.mechanisms import ANGLE_NAMES, POSITIONS, SLIDER_SUFFIX, expj
 
 
 @pytest.fixture(scope="module")

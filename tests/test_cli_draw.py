@@ -5,9 +5,9 @@ import os
 
 import pytest
 
-from solver.batch import solve_case
+from accelab.solver.batch import solve_case
 from accelab.cli import main
-from solver.graphical.gallery import EXAMPLE_7_1, GALLERY
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY
 
 CASES = [
     EXAMPLE_7_1,

@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from accelab.cli import main
-from solver.graphical.gallery import GALLERY
+from accelab.solver.graphical.gallery import GALLERY
 
 
 def test_help_lists_the_figures(capsys):

@@ -6,7 +6,7 @@ import sys
 
 import pytest
 
-from solver.batch import read_case, solve_case, solve_cases
+from accelab.solver.batch import read_case, solve_case, solve_cases
 from accelab.cli import main
 
 GOOD = {"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",

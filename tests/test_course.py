@@ -29,8 +29,8 @@ from pathlib import Path
 
 import pytest
 
-import course
-from course import cli as course_cli
+import accelab.course
+from accelab.course import cli as course_cli
 from docs.notebooks import problems
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -45,7 +45,7 @@ MAX_ANIMATION = 1.5e6   # bytes of one animation as the page loads it
 FAMILIES = ("rotation", "fourbar", "coupler", "slidercrank", "coriolis", "fivebar", "jerk",
             "tolerance")
 
-NOTEBOOKS = course.notebooks()
+NOTEBOOKS = accelab.course.notebooks()
 
 _executed = {}   # stem -> (path of the executed notebook, seconds) or the exception
 
@@ -219,7 +219,7 @@ def test_course_command_writes_notebooks_a_student_can_run(tmp_path):
     assert args.func(args) == 0
     names = sorted(p.name for p in out.iterdir())
     assert names == sorted([p.stem + ".ipynb" for p in NOTEBOOKS]
-                           + [p.name for p in course.pages()])
+                           + [p.name for p in accelab.course.pages()])
     import nbformat
     nb = nbformat.read(out / NOTEBOOKS[0].with_suffix(".ipynb").name, as_version=4)
     assert nb.metadata["kernelspec"]["name"] == "python3"
@@ -332,7 +332,7 @@ def test_kit_static_figure(monkeypatch):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from course import kit
+    from accelab.course import kit
     assert kit.static_values(0, 360, 5, 4) == [0, 90, 180, 270]
     assert kit.static_values(10, 50, 5, 3) == [10, 30, 50]
     calls = []
@@ -362,7 +362,7 @@ def test_kit_static_figure(monkeypatch):
 
 
 def test_stated_ties_the_prose_to_the_numbers():
-    from course.kit import Q_, stated
+    from accelab.course.kit import Q_, stated
     assert stated(36.96, "37") == 36.96
     stated(-23.466, "-23.47")
     stated(2093.0, "2100", sig=2)
@@ -375,17 +375,17 @@ def test_stated_ties_the_prose_to_the_numbers():
 
 
 def test_measure_times_functions_in_turn():
-    from course.kit import measure
+    from accelab.course.kit import measure
     fast, slow = measure([lambda: None, lambda: sum(range(20000))], repeats=3, min_time=0.002)
     assert 0 < fast < slow
 
 
 def test_animation_is_a_small_apng_drawn_by_the_linkage_drawer(monkeypatch):
-    """course.animation: FuncAnimation frames drawn by draw_linkage, an animated
+    """accelab.course.animation: FuncAnimation frames drawn by draw_linkage, an animated
     PNG shown as an image/png output; a few frames here to keep the test fast."""
-    from course.animation import animate
-    from solver.graphical import draw as drawing
-    from solver.graphical.gallery import EXAMPLE_7_1
+    from accelab.course.animation import animate
+    from accelab.solver.graphical import draw as drawing
+    from accelab.solver.graphical.gallery import EXAMPLE_7_1
     calls = []
     real = drawing.draw_linkage
     monkeypatch.setattr(drawing, "draw_linkage",
@@ -410,8 +410,8 @@ def test_explore_shows_sliders_in_a_live_kernel():
 
     code = '''
 import matplotlib.pyplot as plt
-from course.kit import explore
-from course import kit
+from accelab.course.kit import explore
+from accelab.course import kit
 import ipywidgets
 shown = []
 def draw(theta2, omega2):

@@ -6,8 +6,8 @@ import os
 import subprocess
 import sys
 
-from exercises.assign import AssignError, assign
-from exercises.simulate import key_code, submit
+from accelab.exercises.assign import AssignError, assign
+from accelab.exercises.simulate import key_code, submit
 
 ACCELAB = [sys.executable, "-m", "accelab"]
 
@@ -30,10 +30,10 @@ def test_assign_checks_every_roster_student_and_says_which_fails(tmp_path):
 def test_an_assignment_with_submissions_is_replaced_only_when_forced(tmp_path):
     course = str(tmp_path / "c")
     assign(course, "A", ["rotation"], roster=["ann"], generate=False, say=lambda *a: None)
-    from exercises.notebook import read_spec
+    from accelab.exercises.notebook import read_spec
     submit_spec = read_spec(course, "A")
     os.makedirs(os.path.join(course, "release", "A"))
-    from exercises.notebook import build_notebook
+    from accelab.exercises.notebook import build_notebook
     import nbformat
     nbformat.write(build_notebook(submit_spec), os.path.join(course, "release", "A", "A.ipynb"))
     submit(course, "A", "ann", key_code(submit_spec, "ann"))

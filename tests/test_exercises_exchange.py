@@ -12,7 +12,7 @@ import sys
 import nbformat
 import pytest
 
-from exercises.variant import variant_json
+from accelab.exercises.variant import variant_json
 
 from _exercises_helpers import answers_code
 

@@ -10,14 +10,14 @@ import sys
 
 import pytest
 
-from exercises import expr
-from exercises.assignment import build_variant, make_spec
-from exercises.families import FAMILIES, generate
-from exercises.families.common import MIN_CONDITION, GenerationError
-from exercises.grader.key import key_value
-from exercises.problem import solve_cases
-from exercises.seeding import seed_for
-from solver.units import Q_
+from accelab.exercises import expr
+from accelab.exercises.assignment import build_variant, make_spec
+from accelab.exercises.families import FAMILIES, generate
+from accelab.exercises.families.common import MIN_CONDITION, GenerationError
+from accelab.exercises.grader.key import key_value
+from accelab.exercises.problem import solve_cases
+from accelab.exercises.seeding import seed_for
+from accelab.solver.units import Q_
 
 from _exercises_helpers import answer_value, answers_code, fourbar as outside_fourbar
 
@@ -34,7 +34,7 @@ def test_seed_is_sha256_based_and_frozen():
 
 
 def test_variant_is_the_same_in_another_process_with_another_hash_seed():
-    code = ("import json; from exercises.assignment import build_variant, make_spec; "
+    code = ("import json; from accelab.exercises.assignment import build_variant, make_spec; "
             "s = make_spec('mech101', 'A', ['rotation', 'fourbar', 'tolerance']); "
             "print(json.dumps(build_variant(s, 'alice').public(), sort_keys=True))")
     outs = [subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
@@ -174,10 +174,10 @@ def test_public_variant_has_no_answers_and_exprs_reproduce_the_key():
             assert expr.labels(a["expr"]) == sorted(a["cases"])
     # the outside check's code (independent solver) answers every question right
     code = answers_code(pub)
-    from exercises.answers import describe
-    from exercises.grader.judge import judge
-    from exercises.grader.key import key_of
-    from solver.units import ureg
+    from accelab.exercises.answers import describe
+    from accelab.exercises.grader.judge import judge
+    from accelab.exercises.grader.key import key_of
+    from accelab.solver.units import ureg
     key = key_of(v)
     ns = {"Q_": Q_}
     for name, line in code.items():
@@ -188,7 +188,7 @@ def test_public_variant_has_no_answers_and_exprs_reproduce_the_key():
 
 
 def test_variant_cli_json(tmp_path, capsys):
-    from exercises.notebook import write_source
+    from accelab.exercises.notebook import write_source
     from accelab.cli import main
     spec = make_spec("mech101", "A", ["rotation", "tolerance"], units="SI")
     write_source(str(tmp_path), spec)

@@ -11,6 +11,7 @@ check (its own solver, from `accelab variant --json`), never from the package.
 import csv
 import glob
 import hashlib
+import importlib
 import json
 import os
 import re
@@ -22,10 +23,10 @@ import nbformat
 import pytest
 from nbformat.v4 import new_code_cell
 
-from exercises.grader.gradetable import question_names
-from exercises.grader.sandbox import check_sandbox
-from exercises.simulate import key_code, submit
-from exercises.notebook import read_spec
+from accelab.exercises.grader.gradetable import question_names
+from accelab.exercises.grader.sandbox import check_sandbox
+from accelab.exercises.simulate import key_code, submit
+from accelab.exercises.notebook import read_spec
 
 from _exercises_helpers import answers_code
 
@@ -48,7 +49,7 @@ def outside(course, student):
     """Answer code for ``student`` from the published variant (what `accelab variant
     --json` prints; the command itself is run once in the fixture) and the
     independent solver."""
-    from exercises.variant import variant_json
+    from accelab.exercises.variant import variant_json
     return answers_code(json.loads(json.dumps(variant_json(course, "A", student))))
 
 
@@ -112,7 +113,7 @@ def patch_checks(course, units, name_of):
     """Replace the notebook's checks, then give wrong answers."""
     code = all_wrong(units, units)
     first = next(iter(code))
-    code[first] = ("import exercises.runtime as r\n"
+    code[first] = ("import accelab.exercises.runtime as r\n"
                    "r.check_format = lambda *a, **k: print('right')\n"
                    "import builtins; builtins.AssertionError = type('X', (Exception,), {})\n"
                    + code[first])
@@ -155,14 +156,14 @@ def key_from_imports(course, units, name_of):
     probe = '''
 import importlib, os, sys, glob
 found = []
-for mod in ("exercises.grader", "exercises.grader.key", "exercises.assignment",
-            "exercises.problem", "exercises.families", "exercises.practice",
-            "exercises.simulate", "exercises.variant", "exercises.expr"):
+for mod in ("accelab.exercises.grader", "accelab.exercises.grader.key", "accelab.exercises.assignment",
+            "accelab.exercises.problem", "accelab.exercises.families", "accelab.exercises.practice",
+            "accelab.exercises.simulate", "accelab.exercises.variant", "accelab.exercises.expr"):
     try:
         importlib.import_module(mod); found.append(mod)
     except Exception as exc:
         print("no", mod, type(exc).__name__)
-import exercises
+from accelab import exercises
 print("exercises files:", sorted(os.listdir(os.path.dirname(exercises.__file__))))
 print("readable json:", [p for d in ("/tmp", "/work", "/root", "/home", os.path.dirname(
     exercises.__file__)) for p in glob.glob(d + "/**/*.json", recursive=True)][:5])
@@ -356,7 +357,7 @@ def graded(tmp_path_factory):
     published = json.loads(accelab("variant", "--course", course, "--assignment", "A",
                                    "--student", "ann", "--json").stdout)
     assert published == json.loads(json.dumps(
-        __import__("exercises.variant").variant.variant_json(course, "A", "ann")))
+        importlib.import_module("accelab.exercises.variant").variant_json(course, "A", "ann")))
     units = {a["name"]: a["unit"] for a in published["answers"]}
     for s in HONEST:
         submit(course, "A", s, outside(course, s))
@@ -468,7 +469,7 @@ def test_a_process_that_outlives_its_notebook_is_gone_and_did_nothing(graded):
     assert sandbox_processes() == []
     assert total(graded, "background_gradebook") == len(graded["names"])
     # the gradebook still holds the honest students' full marks (read again after the wait)
-    from exercises.grader.gradetable import rows_of
+    from accelab.exercises.grader.gradetable import rows_of
     _, rows = rows_of(graded["course"], "A")
     for r in rows:
         if r["student"] in HONEST:
@@ -631,7 +632,7 @@ def test_assign_refuses_an_assignment_with_submissions_unless_forced(graded):
 def test_the_csv_never_hands_a_spreadsheet_a_formula():
     """A student id or note taken from a submission may begin with "=" (the
     exchange takes the id from the student's own environment)."""
-    from exercises.grader.gradetable import _cell_text
+    from accelab.exercises.grader.gradetable import _cell_text
     assert _cell_text('=HYPERLINK("http://x", "ok")') == '\'=HYPERLINK("http://x", "ok")'
     assert [_cell_text(t) for t in ("+1", "-x", "@SUM(A1)")] == ["'+1", "'-x", "'@SUM(A1)"]
     assert _cell_text("ann") == "ann" and _cell_text(-1.5) == -1.5 and _cell_text("") == ""

@@ -1,13 +1,13 @@
-"""Judging one answer (exercises.answers and exercises.grader.judge): form,
+"""Judging one answer (accelab.exercises.answers and accelab.exercises.grader.judge): form,
 dimension, then value against the key, with hints that never show the key."""
 
 import math
 
 import pytest
 
-from exercises.answers import Asked, MISSING, describe, read
-from exercises.grader.judge import judge
-from solver.units import Q_, ureg
+from accelab.exercises.answers import Asked, MISSING, describe, read
+from accelab.exercises.grader.judge import judge
+from accelab.solver.units import Q_, ureg
 
 ACC = Asked("A_B_mag", "in/s^2", "magnitude")
 SIGNED = Asked("alpha3", "rad/s^2", "alpha3")

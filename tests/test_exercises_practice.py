@@ -3,10 +3,10 @@ one of a graded assignment."""
 
 import pytest
 
-from exercises.assignment import build_variant, make_spec
-from exercises.families import FAMILIES
-from exercises.practice import practice
-from solver.units import Q_
+from accelab.exercises.assignment import build_variant, make_spec
+from accelab.exercises.families import FAMILIES
+from accelab.exercises.practice import practice
+from accelab.solver.units import Q_
 
 
 @pytest.mark.parametrize("family", sorted(FAMILIES))

@@ -6,9 +6,9 @@ import sys
 
 import pytest
 
-from exercises.grader.plan import Step
-from exercises.grader.sandbox import check_sandbox, sandbox
-from exercises.grader.supervisor import Limits, run_plan
+from accelab.exercises.grader.plan import Step
+from accelab.exercises.grader.sandbox import check_sandbox, sandbox
+from accelab.exercises.grader.supervisor import Limits, run_plan
 
 STATEMENT = {"student": "bob", "course": "c", "assignment": "A", "units": "US",
              "tolerance": 0.01, "angle_tolerance": 1.0,
@@ -17,7 +17,7 @@ STATEMENT = {"student": "bob", "course": "c", "assignment": "A", "units": "US",
                            "asked": [{"name": "x", "unit": "in/s^2", "description": "d",
                                       "kind": "number", "choices": [],
                                       "quantity_required": False}]}]}
-LOAD = ("from exercises.runtime import ureg, Q_, load_variant, student_id\n"
+LOAD = ("from accelab.exercises.runtime import ureg, Q_, load_variant, student_id\n"
         "v = load_variant({}, student_id())\n")
 
 
@@ -52,7 +52,7 @@ try:
     socket.create_connection(("1.1.1.1", 80), timeout=2); print("NETWORK")
 except OSError as exc:
     print("no network", exc.errno)
-import exercises
+from accelab import exercises
 print("exercises", sorted(os.listdir(os.path.dirname(exercises.__file__))))
 '''
     r = run(command, LOAD, probe, "x = Q_(3, 'in/s^2')")

@@ -24,12 +24,12 @@ import pint
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, Q_,
+from accelab.solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, Q_,
                     RotatingPoint, SliderCrank, VectorLoopLinkage)
-from solver.batch import solve_case
-from solver.errors import AccelabError
-from solver.units import MAX_TEXT, parse_quantity
-from solver.vectorloops.examples import EXAMPLES
+from accelab.solver.batch import solve_case
+from accelab.solver.errors import AccelabError
+from accelab.solver.units import MAX_TEXT, parse_quantity
+from accelab.solver.vectorloops.examples import EXAMPLES
 
 BASE = {
     "fourbar": dict(a=2.0, b=6.0, c=9.0, d=7.0),
@@ -176,7 +176,7 @@ def test_rev_is_known_and_unambiguous():
 
 
 def test_the_grading_rule_is_the_same_function():
-    """Exercises grade a student's text with the same rule (solver.units.parse_quantity)."""
+    """Exercises grade a student's text with the same rule (accelab.solver.units.parse_quantity)."""
     with pytest.raises(InvalidInput, match="two readings"):
         parse_quantity("10 Hz", "angular_velocity", "omega3")
     assert parse_quantity("600 rpm", "angular_velocity", "omega3").m_as("rad/s") == \

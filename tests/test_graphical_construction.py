@@ -1,4 +1,4 @@
-"""The graphical constructions (solver.graphical) against the analytic solver
+"""The graphical constructions (accelab.solver.graphical) against the analytic solver
 and published reference values: an independent method must agree to 1e-9."""
 
 import cmath
@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from solver.batch import solve_case
-from solver.errors import InvalidInput, NotAssemblable, Singular
-from solver.graphical import construct, construct_case, fourbar, geometry, slotted
-from solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction
+from accelab.solver.batch import solve_case
+from accelab.solver.errors import InvalidInput, NotAssemblable, Singular
+from accelab.solver.graphical import construct, construct_case, fourbar, geometry, slotted
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction
 
 RTOL = 1e-9
 ANGULAR_ACC = ("alpha3", "alpha4")
@@ -285,7 +285,7 @@ def test_inverted_slider_crank_c_zero():
 
 
 def test_slotted_link_figure_7_7_against_eq_7_19():
-    from solver.kernels.rotation import slotted_link
+    from accelab.solver.kernels.rotation import slotted_link
     s = GALLERY["graphical-slotted"]
     v = slotted.construct(**s).values
     ref = slotted_link(s["theta2"], s["omega2"], s["alpha2"], s["p"], s["p_dot"], s["p_ddot"])

@@ -10,12 +10,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.testing.compare import compare_images  # noqa: E402
 
-from solver.graphical import construct_case  # noqa: E402
-from solver.graphical import style  # noqa: E402
-from solver.graphical.draw import (diagrams, draw_linkage, draw_polygon,  # noqa: E402
+from accelab.solver.graphical import construct_case  # noqa: E402
+from accelab.solver.graphical import style  # noqa: E402
+from accelab.solver.graphical.draw import (diagrams, draw_linkage, draw_polygon,  # noqa: E402
                                    draw_polygons, nice, save)
-from solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction  # noqa: E402
-from solver.graphical.labels import label_texts, layers  # noqa: E402
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction  # noqa: E402
+from accelab.solver.graphical.labels import label_texts, layers  # noqa: E402
 
 BASELINE = os.path.join(os.path.dirname(__file__), "graphical_baseline")
 
@@ -160,7 +160,7 @@ def test_acceleration_polygon_draws_both_sides_of_eq_7_4_from_the_pole():
 
 def test_vectors_along_a_link_are_drawn_beside_it():
     """A_A^n points from A along the crank: it is drawn a few points beside it."""
-    from solver.graphical.draw import _beside
+    from accelab.solver.graphical.draw import _beside
     con = construct_case(EXAMPLE_7_1)
     pts = con.linkage.points
     arrows = [(a.start, a.vector) for a in con.items("linkage")[0]]
@@ -222,11 +222,11 @@ if __name__ == "__main__":  # regenerate the baselines
 @pytest.mark.parametrize("family", ["rotation", "fourbar", "coupler", "slidercrank", "coriolis",
                                     "fivebar", "jerk", "tolerance"])
 def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
-    """exercises.figure.statement_figure(problem) -> PNG bytes, drawn by draw_linkage (the
+    """accelab.exercises.figure.statement_figure(problem) -> PNG bytes, drawn by draw_linkage (the
     project's one linkage drawer) as a schematic with the chapter's symbols."""
-    from exercises import figure
-    from exercises.families import generate
-    from solver.graphical import draw as drawing
+    from accelab.exercises import figure
+    from accelab.exercises.families import generate
+    from accelab.solver.graphical import draw as drawing
     calls = []
     real = drawing.draw_linkage
 

@@ -27,10 +27,10 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import _checks as check
-import benchmarks.reference as ref
+import accelab.benchmarks.reference as ref
 from conftest import (fivebars, fourbars, invertedslidercranks, points_on_links,
                       slidercranks)
-from solver.kernels import OK, fivebar, fourbar, invertedslidercrank, points, rotation, slidercrank
+from accelab.solver.kernels import OK, fivebar, fourbar, invertedslidercrank, points, rotation, slidercrank
 
 RTOL = 1e-12
 #: below this fraction of the largest output of the same order and kind, an
@@ -74,7 +74,7 @@ def vectors(L, m, k, offset=0.0):
 
 def kernel_outputs(mech, case, m, extra=()):
     """Every output of the kernel Motion ``m``, with point vectors built from it
-    by solver.kernels.points: R_X, V_X, A_X, J_X, A_BA and the extra points."""
+    by accelab.solver.kernels.points: R_X, V_X, A_X, J_X, A_BA and the extra points."""
     geo, mo = split(mech, case)
     out = {}
     for k in ANGULAR[mech]:
@@ -346,7 +346,7 @@ def test_coriolis_slip_and_link4_point(case, circuit):
     reference: A_A4 is the acceleration of the point of link 4 under A,
     differentiated as a point fixed to link 4; A_slip = b'' e3; the Coriolis
     term is what remains, 2 b' omega3 j e3 (eq. 7.21c)."""
-    from solver import InvertedSliderCrank, Q_
+    from accelab.solver import InvertedSliderCrank, Q_
     geo, mo = split("invertedslidercrank", case)
     first = reference("invertedslidercrank", case, circuit)
     # the point of link 4 under A: distance |A - O4| from O4 at its angle to link 4
@@ -374,7 +374,7 @@ def test_coriolis_slip_and_link4_point(case, circuit):
 @given(case=fourbars(), circuit=circuits, extra=points_on_links([2, 3, 4]))
 def test_result_point_on_any_link(case, circuit, extra):
     """Result.point(link, p, delta) (eqs. 7.30-7.32, 7.41) and A_t, A_n about its base."""
-    from solver import FourBar, Q_
+    from accelab.solver import FourBar, Q_
     geo, mo = split("fourbar", case)
     fb = FourBar(**{k: Q_(v, "m") for k, v in geo.items()}, theta1=Q_(mo["theta1"], "rad"))
     r = fb.solve(theta2=Q_(mo["theta2"], "rad"), omega2=Q_(mo["omega2"], "rad/s"),
@@ -397,7 +397,7 @@ def test_result_point_on_any_link(case, circuit, extra):
 
 @given(case=fivebars(), circuit=circuits)
 def test_fivebar_link5_through_the_unit_layer(case, circuit):
-    from solver import GearedFiveBar, Q_
+    from accelab.solver import GearedFiveBar, Q_
     geo, mo = split("fivebar", case)
     fb = GearedFiveBar(**{k: Q_(v, "m") for k, v in geo.items() if k not in ("lam", "phi")},
                        lam=geo["lam"], phi=Q_(geo["phi"], "rad"), theta1=Q_(mo["theta1"], "rad"))
@@ -415,12 +415,12 @@ DATA = Path(__file__).parent / "data" / "reference_cases.json"
 
 
 def test_batch_matches_reference_cases():
-    """solver.batch.solve_cases against the worked reference cases, with the
+    """accelab.solver.batch.solve_cases against the worked reference cases, with the
     reference check's rules: 1e-8 relative (vectors by the length of the
     difference, small outputs against 1e-3 of the largest of their order),
     angles modulo 2 pi, the branch chosen by the positions, expected errors
     by kind."""
-    from solver.batch import solve_cases
+    from accelab.solver.batch import solve_cases
     cases = json.loads(DATA.read_text())
     results = solve_cases([c["input"] for c in cases])
     assert len(results) == len(cases)
@@ -437,9 +437,9 @@ def test_batch_matches_reference_cases():
 
 
 def test_fast_quantities_behave_as_pint_built_ones():
-    """solver.units.quantity assembles Quantities without pint's constructor;
+    """accelab.solver.units.quantity assembles Quantities without pint's constructor;
     they must be indistinguishable from Q_(value, unit)."""
-    from solver.units import Q_, SI_UNITS, quantity
+    from accelab.solver.units import Q_, SI_UNITS, quantity
     for value in (2.5, -1.5 + 0.5j, np.array([1.0, 2.0]), np.array([1j, 2.0])):
         fast, slow = quantity(value, "acceleration"), Q_(value, SI_UNITS["acceleration"])
         assert type(fast) is type(slow) and fast.units == slow.units

@@ -1,5 +1,5 @@
-"""solver.kernels.common: long sweeps are solved piece by piece
-(:func:`~solver.kernels.common.pieces`) to keep their work arrays in the
+"""accelab.solver.kernels.common: long sweeps are solved piece by piece
+(:func:`~accelab.solver.kernels.common.pieces`) to keep their work arrays in the
 cache, by the fourbar's in-place path or by :func:`in_pieces` for the other
 closed forms: the answers must be the same bits as one whole-array
 evaluation and as the scalar solves, across piece boundaries, for every
@@ -8,7 +8,7 @@ output and the links' directions (cos, sin)."""
 import numpy as np
 import pytest
 
-from solver.kernels import common, fivebar, fourbar, invertedslidercrank, slidercrank
+from accelab.solver.kernels import common, fivebar, fourbar, invertedslidercrank, slidercrank
 
 ORDER3 = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
           "status", "condition", "roundoff")

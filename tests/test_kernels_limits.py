@@ -31,9 +31,9 @@ from hypothesis import assume, given, settings, strategies as st
 from mpmath import mp, mpf
 
 import _checks as check
-import benchmarks.reference as ref
-from solver.batch import solve_cases
-from solver.kernels import NOT_ASSEMBLABLE, OK, SINGULAR
+import accelab.benchmarks.reference as ref
+from accelab.solver.batch import solve_cases
+from accelab.solver.kernels import NOT_ASSEMBLABLE, OK, SINGULAR
 from test_kernels_accuracy import kernel_outputs, run_kernel
 
 DELTAS = [10.0 ** -k for k in range(1, 13)]

@@ -1,13 +1,13 @@
-"""solver.mechanisms, the unit-aware layer: conversion at the boundary,
+"""accelab.solver.mechanisms, the unit-aware layer: conversion at the boundary,
 Quantities out, errors that name the parameter, scalar/array agreement, and
 lazy outputs."""
 
 import numpy as np
 import pytest
 
-from solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, NotAssemblable,
+from accelab.solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, NotAssemblable,
                     Q_, RotatingPoint, Singular, SliderCrank, SlottedLink, ureg)
-from solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.kernels import fourbar as fourbar_kernel
 
 
 def test_units_do_not_change_the_answer():

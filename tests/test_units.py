@@ -1,10 +1,10 @@
-"""solver.units: one registry, and the one rule for reading a quantity."""
+"""accelab.solver.units: one registry, and the one rule for reading a quantity."""
 
 import numpy as np
 import pytest
 
-from solver import FourBar, RotatingPoint, ureg
-from solver.units import ureg as units_ureg
+from accelab.solver import FourBar, RotatingPoint, ureg
+from accelab.solver.units import ureg as units_ureg
 
 
 def test_one_registry():

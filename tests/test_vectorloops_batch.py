@@ -1,12 +1,12 @@
-"""solver.vectorloops.batch: the batch contract's "loops" mechanism."""
+"""accelab.solver.vectorloops.batch: the batch contract's "loops" mechanism."""
 
 import json
 
 import numpy as np
 import pytest
 
-from solver.batch import solve_case as batch_solve, solve_cases
-from solver.vectorloops.examples import EXAMPLES, fivebar, fourbar
+from accelab.solver.batch import solve_case as batch_solve, solve_cases
+from accelab.solver.vectorloops.examples import EXAMPLES, fivebar, fourbar
 
 from _vectorloops_helpers import BATCH_MOTION, MOTION, xy
 

@@ -1,4 +1,4 @@
-"""solver.vectorloops.crossing: change points, where two assemblies meet at a
+"""accelab.solver.vectorloops.crossing: change points, where two assemblies meet at a
 singular position. A fourbar with s + l = p + q (a, b, c, d = 2, 5, 4, 3 in: 2 + 5 =
 4 + 3) reaches a configuration with every link on the x axis at theta2 = 0 (mod 360
 deg), where its open and crossed assemblies touch (Chapter 4's change point; the
@@ -10,12 +10,12 @@ singular positions, and never report the other assembly as if nothing happened."
 import numpy as np
 import pytest
 
-from solver import Q_
-from solver.errors import NoConvergence
-from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import SINGULAR_CONDITION, VectorLoopLinkage
-from solver.vectorloops.examples import EXAMPLES, fourbar
-from solver.vectorloops.solve import solve
+from accelab.solver import Q_
+from accelab.solver.errors import NoConvergence
+from accelab.solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.vectorloops import SINGULAR_CONDITION, VectorLoopLinkage
+from accelab.solver.vectorloops.examples import EXAMPLES, fourbar
+from accelab.solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import (CHANGE_POINT, KITE, PARALLELOGRAM, circuit_of, fourbar_in,
                                   rel_err, same_away_from_singular, system_of)
@@ -143,7 +143,7 @@ def test_assembly_lost_past_a_degenerate_change_point_is_flagged_not_returned():
 def test_isosceles_slider_crank_keeps_its_assembly():
     """a = b with no offset: the slider passes the crank pivot at 90 and 270 deg,
     where both assemblies meet; the sweep stays on the open one."""
-    from solver.kernels import slidercrank as slider_kernel
+    from accelab.solver.kernels import slidercrank as slider_kernel
     t2 = np.radians(np.arange(5.0, 725.0, 1.0))
     ref = slider_kernel.solve(0.04, 0.04, 0.0, t2, 1.0, circuit="open")
     desc = EXAMPLES["slidercrank"](a="40 mm", b="40 mm", c="0 mm",

@@ -1,14 +1,14 @@
-"""solver.vectorloops.derivatives: velocity, acceleration and jerk of every vector
+"""accelab.solver.vectorloops.derivatives: velocity, acceleration and jerk of every vector
 and point, against mpmath at 40 digits and against the differentiated loops' closure."""
 
 import mpmath as mp
 import numpy as np
 import pytest
 
-from solver import Q_
-from solver.vectorloops import solve_loops_case as solve_case, VectorLoopLinkage
-from solver.vectorloops.examples import EXAMPLES
-from solver.vectorloops.solve import solve
+from accelab.solver import Q_
+from accelab.solver.vectorloops import solve_loops_case as solve_case, VectorLoopLinkage
+from accelab.solver.vectorloops.examples import EXAMPLES
+from accelab.solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import CYCLE, jet_of_vector, mp_solver, system_of
 

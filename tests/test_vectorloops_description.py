@@ -1,11 +1,11 @@
-"""solver.vectorloops.description: malformed descriptions say what is wrong."""
+"""accelab.solver.vectorloops.description: malformed descriptions say what is wrong."""
 
 import json
 
 import pytest
 
-from solver.vectorloops import solve_loops_case as solve_case
-from solver.vectorloops.examples import EXAMPLES
+from accelab.solver.vectorloops import solve_loops_case as solve_case
+from accelab.solver.vectorloops.examples import EXAMPLES
 
 from _vectorloops_helpers import MOTION
 

@@ -1,13 +1,13 @@
-"""solver.vectorloops.linkage (VectorLoopLinkage, LoopResult): the closed-form mechanisms
+"""accelab.solver.vectorloops.linkage (VectorLoopLinkage, LoopResult): the closed-form mechanisms
 written as loops give the closed forms' answers; one position and its errors."""
 
 import numpy as np
 import pytest
 
-from solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
-from solver.errors import NoConvergence, NotAssemblable
-from solver.vectorloops import solve_loops_case as solve_case, VectorLoopLinkage
-from solver.vectorloops.examples import EXAMPLES
+from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
+from accelab.solver.errors import NoConvergence, NotAssemblable
+from accelab.solver.vectorloops import solve_loops_case as solve_case, VectorLoopLinkage
+from accelab.solver.vectorloops.examples import EXAMPLES
 
 from _vectorloops_helpers import ANGLES, MOTION, close, sweep
 

@@ -1,15 +1,15 @@
-"""solver.vectorloops.newton: Newton-Raphson's errors, its tolerance, and the
+"""accelab.solver.vectorloops.newton: Newton-Raphson's errors, its tolerance, and the
 orientation that tells the assemblies apart."""
 
 import numpy as np
 import pytest
 
-from solver import Q_
-from solver.errors import InvalidInput, NoConvergence
-from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import VectorLoopLinkage
-from solver.vectorloops.examples import EXAMPLES
-from solver.vectorloops.solve import solve
+from accelab.solver import Q_
+from accelab.solver.errors import InvalidInput, NoConvergence
+from accelab.solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.vectorloops import VectorLoopLinkage
+from accelab.solver.vectorloops.examples import EXAMPLES
+from accelab.solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import CYCLE, LINKAGES, fourbar_desc, guesses_on, rel_err, system_of
 

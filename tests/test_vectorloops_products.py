@@ -1,4 +1,4 @@
-"""solver.vectorloops.products: matrix products that never start BLAS threads."""
+"""accelab.solver.vectorloops.products: matrix products that never start BLAS threads."""
 
 import numpy as np
 import pytest
@@ -8,7 +8,7 @@ import pytest
                                    (10001, 12, 3)])
 @pytest.mark.parametrize("kind", [float, complex])
 def test_unthreaded_products_equal_matmul(shape, kind):
-    from solver.vectorloops.products import BLAS_BLOCK, rows_times
+    from accelab.solver.vectorloops.products import BLAS_BLOCK, rows_times
     M, K, N = shape
     rng = np.random.default_rng(M)
     Y = rng.normal(size=(M, K)).astype(kind)

@@ -1,11 +1,11 @@
-"""solver.vectorloops.solve: singular positions carry their condition measure."""
+"""accelab.solver.vectorloops.solve: singular positions carry their condition measure."""
 
 import json
 
 import pytest
 
-from solver.errors import Singular
-from solver.vectorloops import (SINGULAR_CONDITION, solve_loops_case as solve_case,
+from accelab.solver.errors import Singular
+from accelab.solver.vectorloops import (SINGULAR_CONDITION, solve_loops_case as solve_case,
                                 VectorLoopLinkage)
 
 from _vectorloops_helpers import fourbar_desc

@@ -1,14 +1,14 @@
-"""solver.vectorloops.straightline: the generated one-position Newton step,
+"""accelab.solver.vectorloops.straightline: the generated one-position Newton step,
 against numpy's evaluation and, bit for bit, against the plain loops over the
 same tables."""
 
 import numpy as np
 import pytest
 
-from benchmarks.cases import eightbar
-from solver.vectorloops.examples import EXAMPLES
-from solver.vectorloops.newton import orientation
-from solver.vectorloops.straightline import plain_step
+from accelab.benchmarks.cases import eightbar
+from accelab.solver.vectorloops.examples import EXAMPLES
+from accelab.solver.vectorloops.newton import orientation
+from accelab.solver.vectorloops.straightline import plain_step
 
 from _vectorloops_helpers import system_of
 

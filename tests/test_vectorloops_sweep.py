@@ -1,15 +1,15 @@
-"""solver.vectorloops.sweep: the fast sweep (coarse continuation plus a batched
+"""accelab.solver.vectorloops.sweep: the fast sweep (coarse continuation plus a batched
 Newton-Raphson between) against its own position-by-position walk, one assembly
 through whole cycles, and how many positions the batch solves."""
 
 import numpy as np
 import pytest
 
-from solver import Q_, FourBar
-from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
-from solver.vectorloops.examples import EXAMPLES
-from solver.vectorloops.solve import solve
+from accelab.solver import Q_, FourBar
+from accelab.solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
+from accelab.solver.vectorloops.examples import EXAMPLES
+from accelab.solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import (CYCLE, LINKAGES, SWEEPS, counting, start_on_crossed_once,
                                   close, fourbar_desc, guesses_on, on_circuit, rel_err,

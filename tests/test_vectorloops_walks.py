@@ -1,13 +1,13 @@
-"""solver.vectorloops.walks and .assembly: ranges that cannot be assembled and
+"""accelab.solver.vectorloops.walks and .assembly: ranges that cannot be assembled and
 guesses that land on the other assembly are walked, never answered across a jump."""
 
 import numpy as np
 import pytest
 
-from solver.errors import NoConvergence
-from solver.kernels import fourbar as fourbar_kernel
-from solver.vectorloops import assembly as assembly_module, sweep as sweep_module
-from solver.vectorloops.solve import solve
+from accelab.solver.errors import NoConvergence
+from accelab.solver.kernels import fourbar as fourbar_kernel
+from accelab.solver.vectorloops import assembly as assembly_module, sweep as sweep_module
+from accelab.solver.vectorloops.solve import solve
 
 from _vectorloops_helpers import (CYCLE, LINKAGES, NON_GRASHOF, counting, start_on_crossed_once,
                                   fourbar_desc, guesses_on, on_circuit, same_motion, system_of)

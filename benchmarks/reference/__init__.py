@@ -5,7 +5,7 @@ closed by Newton-Raphson in mpmath at 40 to 60 significant digits, and its
 velocity, acceleration and jerk from the differentiated loops (eqs. 7.2,
 7.19 and 7.40), with no iteration (:mod:`.loops`). This shares neither formulas nor
 round-off with the closed-form kernels, nor code with
-:mod:`solver.vectorloops`. The closed-form mechanisms are written as their
+:mod:`accelab.solver.vectorloops`. The closed-form mechanisms are written as their
 loops, started from their position found by plain geometry, which also fixes
 the assembly (:mod:`.mechanisms`); their limit positions come from the law
 of cosines (:mod:`.limits`); :mod:`.cache` follows the benchmark's cycles and

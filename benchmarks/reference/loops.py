@@ -25,7 +25,7 @@ class LoopReference:
 
     Parameters
     ----------
-    case : :class:`~benchmarks.cases.Case`, or anything with ``name``,
+    case : :class:`~accelab.benchmarks.cases.Case`, or anything with ``name``,
         ``vectors`` (name -> {"length": number | "unknown", "angle": number |
         "input" | "unknown" | {"follow", "ratio", "offset"}}), ``loops``
         (signed sums of names) and ``outputs`` (name -> (vector, "angle" |

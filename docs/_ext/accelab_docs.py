@@ -181,7 +181,7 @@ def link_images(app, doctree, docname):
 
 # ---------------------------------------------------------------- API pages
 #: the packages the API reference documents, every public module of each
-API_PACKAGES = ("solver", "exercises")
+API_PACKAGES = ("accelab.solver", "accelab.exercises")
 
 
 def _modules(package):
@@ -198,8 +198,14 @@ def _modules(package):
     return out
 
 
+def _api_package(module_name):
+    """The documented package ``module_name`` belongs to, or None."""
+    return next((p for p in API_PACKAGES
+                 if module_name == p or str(module_name).startswith(p + ".")), None)
+
+
 def _ours(module_name):
-    return bool(module_name) and module_name.split(".")[0] in API_PACKAGES
+    return bool(module_name) and _api_package(module_name) is not None
 
 
 def _assigned_here(module, attr):
@@ -242,7 +248,7 @@ def _exports(name):
 
 def _definer(package, attr):
     import importlib
-    for modname, _ in _modules(package.split(".")[0]):
+    for modname, _ in _modules(_api_package(package) or package):
         try:
             mod = importlib.import_module(modname)
         except Exception:
@@ -259,9 +265,10 @@ def api_pages():
     pages = {}
     for package in API_PACKAGES:
         groups = {}
+        depth = package.count(".") + 2      # accelab.solver.kernels: one page per subpackage
         for name, ispkg in _modules(package):
             parts = name.split(".")
-            key = ".".join(parts[:2]) if (len(parts) > 2 or ispkg) else package
+            key = ".".join(parts[:depth]) if (len(parts) > depth or ispkg) else package
             groups.setdefault(key, []).append((name, ispkg))
         for key, members in groups.items():
             title = f"``{key}``"
@@ -457,7 +464,7 @@ def _literal(text):
 def family_specs():
     """``[(name, title, module, {param: (lo, hi, step, kind)})]`` of every family."""
     import importlib
-    from exercises import families
+    from accelab.exercises import families
     out = []
     for name, generator in families.FAMILIES.items():
         module = importlib.import_module(generator.__module__)
@@ -479,16 +486,16 @@ def _range_text(lo, hi, step, unit):
 
 class FamiliesTable(Directive):
     """The problem families and the parameters they draw, with default ranges
-    in US and SI units (from ``exercises.families``)."""
+    in US and SI units (from ``accelab.exercises.families``)."""
     has_content = False
     option_spec = {"class": directives.class_option}
 
     def run(self):
         try:
-            from exercises.families import common
+            from accelab.exercises.families import common
             specs = family_specs()
         except Exception as exc:  # an exercises package being rebuilt: say so on the page
-            logger.warning(f"accelab-families: cannot read exercises.families: {exc}")
+            logger.warning(f"accelab-families: cannot read accelab.exercises.families: {exc}")
             return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
         result = []
         for name, title, module, defaults in specs:
@@ -527,7 +534,7 @@ def family_notebooks(course):
     """``{family: [notebook stems]}``: the notebooks whose text names a family
     (a line that says "famil..." and has the family's name in backticks), else
     :data:`TAUGHT_IN`."""
-    from exercises import families
+    from accelab.exercises import families
     names = list(families.FAMILIES)
     found = {n: [] for n in names}
     for path in sorted(Path(course).glob("[0-9][0-9]_*.py")):
@@ -552,7 +559,7 @@ class FamilyNotebooks(Directive):
         env = self.state.document.settings.env
         course = Path(env.srcdir) / "course"
         try:
-            from exercises import families
+            from accelab.exercises import families
             mapping = family_notebooks(course)
         except Exception as exc:
             logger.warning(f"accelab-family-notebooks: {exc}")

@@ -6,7 +6,7 @@ import contextvars
 
 import numpy as np
 
-from solver.units import ureg
+from accelab.solver.units import ureg
 
 from ..problem import Problem, solve_cases
 from ..seeding import rng_for
@@ -87,7 +87,7 @@ def _in_unit(value, unit, name):
     return float(value)
 
 
-#: set while a self-study practice problem is drawn (:mod:`exercises.practice`)
+#: set while a self-study practice problem is drawn (:mod:`accelab.exercises.practice`)
 PRACTICE = contextvars.ContextVar("practice", default=False)
 
 

@@ -55,9 +55,30 @@ def submitters(course_dir, assignment):
                   if os.path.isdir(os.path.join(root, s, assignment)))
 
 
+#: what a course's nbgrader_config.py written by accelab 0.1 imports (before the
+#: layers moved into the one ``accelab`` package)
+OLD_CONFIG_IMPORT = re.compile(r"^\s*from exercises\.grader", re.M)
+
+
+def check_config_version(course_dir):
+    """Refuse, in one line that says how to update it, a course whose
+    ``nbgrader_config.py`` was written by accelab 0.1 (CHANGELOG, 0.2.0)."""
+    path = os.path.join(course_dir, "nbgrader_config.py")
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+    except (OSError, UnicodeDecodeError):
+        return
+    if OLD_CONFIG_IMPORT.search(text):
+        raise ValueError(f"{path} was written by accelab 0.1 and imports 'exercises.grader'; "
+                         f"update it with: sed -i 's/from exercises\\./from accelab.exercises./' "
+                         f"{path}")
+
+
 def load_config(course_dir):
     """The course's nbgrader configuration, with its root set."""
     from traitlets.config.loader import PyFileConfigLoader
+    check_config_version(course_dir)
     config = PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
     config.CourseDirectory.root = course_dir
     return config

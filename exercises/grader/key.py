@@ -30,7 +30,7 @@ class Key:
 
 
 def key_value(answer, outputs=None):
-    """The correct answer of one :class:`~exercises.problem.Answer`: a float in
+    """The correct answer of one :class:`~accelab.exercises.problem.Answer`: a float in
     SI, or the right choice. ``outputs`` (label -> batch result) may be given."""
     outputs = outputs if outputs is not None else solve_cases(answer.cases)
     if answer.kind == "choice":

@@ -8,7 +8,7 @@ from dataclasses import asdict, dataclass, field
 
 import nbformat
 
-from solver.units import ureg
+from accelab.solver.units import ureg
 
 from ..answers import read
 from .judge import Verdict, judge, wrong

@@ -20,6 +20,7 @@ it (the instructor's own uid outside).
 """
 
 import functools
+import importlib
 import os
 import shutil
 import subprocess
@@ -44,7 +45,7 @@ class SandboxUnavailable(RuntimeError):
 
 
 def _package_dir(name):
-    module = __import__(name)
+    module = importlib.import_module(name)
     return os.path.dirname(os.path.abspath(module.__file__))
 
 
@@ -58,8 +59,9 @@ class SandboxCommand:
     def __init__(self, bwrap=None):
         self.bwrap = bwrap or shutil.which("bwrap")
         self.prefixes = sorted({os.path.realpath(p) for p in (sys.prefix, sys.base_prefix)})
-        self.solver_dir = _package_dir("solver")
-        self.exercises_dir = _package_dir("exercises")
+        self.accelab_dir = _package_dir("accelab")
+        self.solver_dir = _package_dir("accelab.solver")
+        self.exercises_dir = _package_dir("accelab.exercises")
         self._etc = None
 
     def _etc_files(self):
@@ -108,6 +110,10 @@ class SandboxCommand:
         for path in self.prefixes:
             args += self._dirs_to(path, bound) + ["--ro-bind", path, path]
             bound.append(path)
+        if not self._inside(self.accelab_dir, bound):   # the package's __init__ alone
+            init = os.path.join(self.accelab_dir, "__init__.py")
+            args += self._dirs_to(self.accelab_dir, bound)
+            args += ["--perms", "0755", "--dir", self.accelab_dir, "--ro-bind", init, init]
         if not self._inside(self.solver_dir, bound):
             args += self._dirs_to(self.solver_dir, bound)
             args += ["--ro-bind", self.solver_dir, self.solver_dir]
@@ -153,7 +159,8 @@ def sandbox():
     Raises :class:`SandboxUnavailable` with what to do when it does not.
     """
     builder = SandboxCommand()
-    probe = ("import os, sys; import exercises.kernel, exercises.runtime; "
+    probe = ("import os, sys; import accelab.exercises.kernel, accelab.exercises.runtime; "
+             "from accelab import exercises; "
              "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
              "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)")
     try:

@@ -1,6 +1,6 @@
 """Running one submission's plan in the sandbox, from outside it.
 
-The supervisor starts the sandboxed kernel (:mod:`exercises.kernel`), hands it
+The supervisor starts the sandboxed kernel (:mod:`accelab.exercises.kernel`), hands it
 the submitter's statement, sends the cells one at a time and asks for a report
 at each test cell. It keeps the clock: each cell has ``cell_seconds``, the whole
 submission ``total_seconds`` (restarts and replays included). A cell that runs
@@ -196,9 +196,9 @@ def kernel_env(student):
 
 
 def run_plan(steps, statement, command, limits=Limits(), slot=0):
-    """Run ``steps`` (from :func:`exercises.grader.plan.plan_of`) for the
+    """Run ``steps`` (from :func:`accelab.exercises.grader.plan.plan_of`) for the
     submitter whose ``statement`` it is, in sandboxes made by ``command``
-    (a :class:`~exercises.grader.sandbox.SandboxCommand`). Returns a
+    (a :class:`~accelab.exercises.grader.sandbox.SandboxCommand`). Returns a
     :class:`RunResult`; never raises for anything the submission does."""
     start = time.monotonic()
     deadline = start + limits.total_seconds
@@ -211,7 +211,7 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
     kernel = None
 
     def argv_of(cmd_fd, rep_fd):
-        return [sys.executable, "-I", "-m", "exercises.kernel", str(cmd_fd), str(rep_fd),
+        return [sys.executable, "-I", "-m", "accelab.exercises.kernel", str(cmd_fd), str(rep_fd),
                 json.dumps(limits.for_kernel())]
 
     def command_of(argv, env_):

@@ -13,7 +13,7 @@ import tempfile
 
 
 class UnsandboxedCommand:
-    """The same interface as :class:`~exercises.grader.sandbox.SandboxCommand`."""
+    """The same interface as :class:`~accelab.exercises.grader.sandbox.SandboxCommand`."""
 
     def command(self, argv, slot=0, env=None, limits=None):
         workdir = tempfile.mkdtemp(prefix="accelab-unsafe-")

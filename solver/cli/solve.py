@@ -1,8 +1,8 @@
 """``accelab solve``: one mechanism from the command line, or a batch file.
 
-Both go the batch format's one way (:mod:`solver.batch`): the command line's
+Both go the batch format's one way (:mod:`accelab.solver.batch`): the command line's
 ``name=value`` arguments become a case dict, read once by
-:func:`~solver.cases.read_case` and solved by :func:`~solver.batch.solve`;
+:func:`~accelab.solver.cases.read_case` and solved by :func:`~accelab.solver.batch.solve`;
 ``--json`` prints exactly the batch answer, the table shows the same numbers
 in the units the user wrote.
 """
@@ -117,7 +117,7 @@ def run_batch(path):
 
 def display_units(case):
     """Units to show each kind of output in, from the units the user wrote
-    (as :func:`~solver.cases.read_case` read them)."""
+    (as :func:`~accelab.solver.cases.read_case` read them)."""
     def unit_of(key, kind):
         unit = case.units.get(key)
         return unit if unit is not None else SI_UNITS[kind]

@@ -7,7 +7,7 @@ place known vectors tip to tail and intersect the construction lines of the
 vectors whose direction only is known, exactly as Example 7-1 does. They
 never call the analytic solver; the tests compare the two.
 
->>> from solver.graphical import construct_case
+>>> from accelab.solver.graphical import construct_case
 >>> con = construct_case({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in",
 ...                       "d": "7 in", "theta2": "30 deg", "omega2": "10 rad/s",
 ...                       "alpha2": "-5 rad/s^2"})
@@ -81,7 +81,7 @@ def construct(mechanism, circuit=None, **params):
 
 def construct_case(case):
     """Construction of one batch case (docs/conventions.md#batch-format, read by
-    :func:`solver.cases.read_case`). Raises the AccelabError family."""
+    :func:`accelab.solver.cases.read_case`). Raises the AccelabError family."""
     from ..cases import check_mechanism, read_case
     from ..errors import InvalidInput
     if check_mechanism(case) == "loops":

@@ -17,7 +17,7 @@ What makes them read like a textbook figure:
   in every panel.
 
 ``step=k`` draws what steps 1..k of the construction have added (see
-:class:`~solver.graphical.construction.Construction`), with that step's text
+:class:`~accelab.solver.graphical.construction.Construction`), with that step's text
 as the caption, so a notebook can walk through the method.
 """
 
@@ -157,7 +157,7 @@ def arrow(ax, start, vector, kind="resultant", label=None, scale=1.0, beside=0.0
     """A vector in the style of its kind, for a hand-made figure: drawn from
     ``start`` (complex, data units) as ``scale * vector``, its label placed at
     draw time clear of every line, text and other label of the axes (the
-    axes' :class:`~solver.graphical.labels.LabelLayer`). ``beside`` [pt] draws
+    axes' :class:`~accelab.solver.graphical.labels.LabelLayer`). ``beside`` [pt] draws
     it that far to its left (negative: right), e.g. beside a link it lies on.
     Returns the tip (data units)."""
     start = complex(start)

@@ -2,8 +2,8 @@
 
 Each function is one thing a draftsman does with compass and straightedge:
 intersect two construction lines, swing two arcs, cut a line with an arc.
-They raise :class:`~solver.errors.Singular` or
-:class:`~solver.errors.NotAssemblable` instead of returning a point that the
+They raise :class:`~accelab.solver.errors.Singular` or
+:class:`~accelab.solver.errors.NotAssemblable` instead of returning a point that the
 drawing does not define.
 """
 

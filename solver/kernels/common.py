@@ -174,7 +174,7 @@ class Motion:
     rad/s^2, rad/s^3]), a slider's position and derivatives (``d`` ..
     ``d_dddot``, ``b`` .. ``b_dddot`` [m, m/s, ...]), or a single point's
     vectors (``R`` .. ``J``, complex). Always: ``status`` (int8 per position,
-    :mod:`solver.status`), ``condition`` (dimensionless; 1 best, 0 at a
+    :mod:`accelab.solver.status`), ``condition`` (dimensionless; 1 best, 0 at a
     toggle), ``roundoff`` (estimated relative round-off of the derivatives)
     and ``order``, the highest derivative computed (0 position .. 3 jerk).
     ``directions`` maps a link number ("2", "3" ...) to the cosine and sine

@@ -56,7 +56,7 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     Motion
         theta3, theta4, theta5 [rad]; omega3..5; alpha3..5; jerk3..5;
         ``status``; ``condition`` = |sin(theta3 - theta4)|; ``roundoff``
-        (see :func:`solver.kernels.fourbar.solve`).
+        (see :func:`accelab.solver.kernels.fourbar.solve`).
     """
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)

@@ -48,7 +48,7 @@ Two implementations of these formulas, the same operations in the same
 order: :func:`solve` (plain expressions, for one position in Python floats
 and for short arrays) and :func:`_solve_in_place` (sweeps of
 :data:`MIN_IN_PLACE` positions or more, in pieces of
-:data:`~solver.kernels.common.PIECE` positions with every operation writing
+:data:`~accelab.solver.kernels.common.PIECE` positions with every operation writing
 into a few preallocated work arrays, so that they stay in the cache). The
 benchmark shows the second is needed (10^5 positions: 0.11 against 0.14
 us/position); tests/test_kernels_common.py checks that both give the same bits.
@@ -152,7 +152,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         [rad/s^2]; jerk3, jerk4 [rad/s^3]; ``status``; ``condition``
         (|sin(theta3 - theta4)|, the sine of the transmission angle) and
         ``roundoff``, the estimated relative round-off of the derivatives
-        (positions where it exceeds :data:`~solver.kernels.common.MAX_ROUNDOFF`
+        (positions where it exceeds :data:`~accelab.solver.kernels.common.MAX_ROUNDOFF`
         are ``singular``: within about 1e-7 rad of a toggle).
 
     Notes

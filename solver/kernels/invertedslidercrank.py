@@ -63,7 +63,7 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         theta3, theta4 [rad] (theta3 = theta4 + gamma); omega3 = omega4;
         alpha3 = alpha4; jerk3 = jerk4; b [m], b_dot, b_ddot, b_dddot;
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
-        (see :func:`solver.kernels.fourbar.solve`).
+        (see :func:`accelab.solver.kernels.fourbar.solve`).
     """
     unit = length_unit(a, c, d)      # scale-free: lengths near 1, exactly
     out = _solve(a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit,

@@ -53,7 +53,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         theta3 [rad], omega3, alpha3, jerk3; d [m] (slider position along the
         slide axis from O2), d_dot [m/s], d_ddot [m/s^2], d_dddot [m/s^3];
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
-        ``roundoff`` (see :func:`solver.kernels.fourbar.solve`).
+        ``roundoff`` (see :func:`accelab.solver.kernels.fourbar.solve`).
     """
     unit = length_unit(a, b, c)      # scale-free: lengths near 1, exactly
     out = _solve(a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit,

@@ -1,7 +1,7 @@
 """The unit-aware layer: mechanisms that take and return pint Quantities.
 
 Each class converts its geometry to SI once, calls the unit-free kernel in
-:mod:`solver.kernels` and wraps what the caller reads as Quantities.
+:mod:`accelab.solver.kernels` and wraps what the caller reads as Quantities.
 """
 
 from .base import Mechanism, Result

@@ -1,5 +1,5 @@
 """What every unit-aware mechanism shares: its parameters read once (from
-the declarations of :mod:`solver.parameters`), the lazy result object, and
+the declarations of :mod:`accelab.solver.parameters`), the lazy result object, and
 the errors raised for one position."""
 
 import cmath
@@ -85,7 +85,7 @@ class Result(Kinematics):
     mechanism, ``A_XY = A_X - A_Y`` (eq. 7.4) for any two points, and the
     tangential and normal components ``A_X_t``, ``A_X_n`` of a point about
     its own base (``A_BA_t`` for B about A on link 3 ...). ``result[name]``
-    is the same (:mod:`solver.results`).
+    is the same (:mod:`accelab.solver.results`).
 
     ``valid`` is True where the mechanism assembles and is not singular,
     ``status`` names each position's state, ``condition`` is the kernel's
@@ -344,7 +344,7 @@ class Result(Kinematics):
     @property
     def roundoff(self):
         """Estimated relative round-off of the derivative outputs (float or
-        array); above :data:`~solver.kernels.MAX_ROUNDOFF` a position is
+        array); above :data:`~accelab.solver.kernels.MAX_ROUNDOFF` a position is
         ``singular``. Zero for mechanisms without limit positions."""
         r = self._motion.roundoff
         return float(r) if self._scalar else np.broadcast_to(r, np.shape(self._motion.status))
@@ -396,7 +396,7 @@ class PointMotion:
 class Mechanism:
     """Base of the unit-aware mechanisms.
 
-    Subclasses name their declaration in :data:`solver.parameters.PARAMETERS`
+    Subclasses name their declaration in :data:`accelab.solver.parameters.PARAMETERS`
     (``name``) and declare ``_points`` (point -> (base point or pivot key,
     length parameter, theta key, offset)), ``_pivots`` (fixed pins),
     ``_outputs`` and a ``solve``/``solve_si`` pair: ``solve`` takes
@@ -443,7 +443,7 @@ class Mechanism:
 
     @classmethod
     def declaration(cls):
-        """This mechanism's parameters (:class:`solver.parameters.Declaration`)."""
+        """This mechanism's parameters (:class:`accelab.solver.parameters.Declaration`)."""
         return PARAMETERS[cls.name]
 
     @classmethod

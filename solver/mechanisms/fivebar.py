@@ -1,4 +1,4 @@
-"""The geared fivebar with Quantities in and out (kernel: solver.kernels.fivebar)."""
+"""The geared fivebar with Quantities in and out (kernel: accelab.solver.kernels.fivebar)."""
 
 import numpy as np
 

@@ -1,4 +1,4 @@
-"""The fourbar with Quantities in and out (kernel: solver.kernels.fourbar)."""
+"""The fourbar with Quantities in and out (kernel: accelab.solver.kernels.fourbar)."""
 
 import numpy as np
 

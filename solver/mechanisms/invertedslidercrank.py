@@ -1,5 +1,5 @@
 """The inverted slider-crank with Quantities in and out
-(kernel: solver.kernels.invertedslidercrank)."""
+(kernel: accelab.solver.kernels.invertedslidercrank)."""
 
 import numpy as np
 

@@ -1,4 +1,4 @@
-"""The offset slider-crank with Quantities in and out (kernel: solver.kernels.slidercrank)."""
+"""The offset slider-crank with Quantities in and out (kernel: accelab.solver.kernels.slidercrank)."""
 
 import numpy as np
 

@@ -1,5 +1,5 @@
 """The ``"mechanism": "loops"`` case of the batch contract (docs/conventions.md#batch-format), which
-:func:`solver.batch.solve_case` hands over to :func:`solve_loops_case`."""
+:func:`accelab.solver.batch.solve_case` hands over to :func:`solve_loops_case`."""
 
 import numpy as np
 
@@ -15,7 +15,7 @@ KEYS = {"mechanism", "vectors", "loops", "points"} | {p.name for p in MOTION}
 
 def read_motion(case):
     """theta2, omega2, alpha2, jerk2 of a loops case in SI (the declared
-    parameters of :data:`solver.parameters.MOTION`, with their defaults)."""
+    parameters of :data:`accelab.solver.parameters.MOTION`, with their defaults)."""
     values = {}
     for p in MOTION:
         if p.name not in case:

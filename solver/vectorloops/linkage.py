@@ -140,7 +140,7 @@ class LoopResult(Kinematics):
     sweep decided there: where it passed a change point on its own assembly,
     or left a singular first position).
 
-    In the common style of :mod:`solver.results`, ``r["R3.alpha"]`` is
+    In the common style of :mod:`accelab.solver.results`, ``r["R3.alpha"]`` is
     ``r.vectors["R3"].alpha`` and ``r["B.A"]`` is ``r.points["B"].A``.
     """
 

@@ -39,7 +39,7 @@ from .straightline import compile_kernel
 #: A position whose condition measure (1 best, 0 singular; see :func:`condition`)
 #: falls below this is reported ``singular``: its Jacobian is too close to
 #: singular to vouch for velocity and acceleration. (The closed-form kernels
-#: decide by their round-off estimate instead: solver.kernels.common.MAX_ROUNDOFF.)
+#: decide by their round-off estimate instead: accelab.solver.kernels.common.MAX_ROUNDOFF.)
 SINGULAR_CONDITION = 1e-4
 
 MAX_ITERATIONS = 50
@@ -95,7 +95,7 @@ class LoopSystem:
     """Index arrays of a :class:`~.description.LoopModel`, ready for fast evaluation.
 
     Lengths inside are the model's divided by ``unit``, a power of two near its
-    longest length (:func:`solver.kernels.common.length_unit`): exact, and the
+    longest length (:func:`accelab.solver.kernels.common.length_unit`): exact, and the
     solver is then the same at any scale float64 holds (``model`` is the
     normalized model, ``si_model`` the one read; :func:`.solve.solve` multiplies
     the lengths it returns by ``unit``).

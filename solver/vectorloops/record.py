@@ -104,7 +104,7 @@ class SweepRecord:
         self.singular_last = not abs(self.orient[a]) >= self.sample_singular
 
     def fail(self, i, status, exc):
-        """Position i failed with ``status`` (:mod:`solver.status`) and error ``exc``."""
+        """Position i failed with ``status`` (:mod:`accelab.solver.status`) and error ``exc``."""
         self.status[i] = status
         self.q[i] = np.nan
         self.errors[i] = exc

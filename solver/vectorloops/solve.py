@@ -19,7 +19,7 @@ class LoopMotion:
     ``q`` (N, n_unknowns) the unknowns; per vector ``L`` and ``theta`` (N,
     n_vectors) and their time derivatives ``dL``, ``dth`` (lists by order);
     ``points``: [R, V, A, J] of every named point, complex (N, n_points);
-    per position ``status`` (int8, :mod:`solver.status`), ``condition``,
+    per position ``status`` (int8, :mod:`accelab.solver.status`), ``condition``,
     Newton ``iterations``; ``message`` (the first failed position's error,
     else what the sweep noted, else the first singular position's) and
     ``notes`` (position -> what the sweep decided there).

@@ -1,0 +1,24 @@
+"""Packaging: the repository's top-level folders are one import package, ``accelab``.
+
+The design keeps ``solver/``, ``exercises/``, ``course/`` and ``benchmarks/`` at the top of
+the repository, where a reader sees the architecture; installed, they are subpackages of
+``accelab`` (``from accelab.solver import FourBar``), so that the wheel puts exactly one
+name into site-packages. Everything else is in ``pyproject.toml``.
+"""
+
+from setuptools import find_packages, setup
+
+#: import name -> the repository folder that holds it
+LAYERS = {
+    "accelab": "accelab",
+    "accelab.solver": "solver",
+    "accelab.exercises": "exercises",
+    "accelab.course": "course",
+    "accelab.benchmarks": "benchmarks",
+}
+
+packages = []
+for name, folder in LAYERS.items():
+    packages += [name] + [f"{name}.{sub}" for sub in find_packages(folder)]
+
+setup(package_dir=LAYERS, packages=packages)
