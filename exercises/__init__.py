@@ -1,13 +1,10 @@
 """Randomized exercises on acceleration analysis, graded with nbgrader: the
 student's kernel only reports, the grader judges outside it.
 
-The student's side (the only modules a graded notebook can import inside the
-grading sandbox):
-
-* :mod:`accelab.exercises.runtime` -- what a notebook imports: the student's values, the
-  visible checks of form and dimension;
-* :mod:`accelab.exercises.answers` -- reading an answer (one place, both sides);
-* :mod:`accelab.exercises.kernel` -- runs a submission's cells inside the sandbox.
+The student's side, :mod:`accelab.exercises.student` (``exercises/student/``), is the only
+code of this package a graded notebook can import inside the grading sandbox: the
+boundary is a folder. It holds the runtime a notebook imports, the one reader of an
+answer, and the kernel that runs a submission's cells and only reports.
 
 The instructor's side:
 

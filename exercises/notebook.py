@@ -74,7 +74,7 @@ graded, outside this notebook, against the exact value for your own values:
 
 ANSWER_TEMPLATE = ("# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
                    "for each student (accelab variant shows the problem)\n### END SOLUTION\n")
-TEST_TEMPLATE = ("from accelab.exercises.runtime import check_format\n"
+TEST_TEMPLATE = ("from accelab.exercises.student.runtime import check_format\n"
                  "check_format({name!r}, globals())\n")
 
 
@@ -88,7 +88,7 @@ def build_notebook(spec, title=None):
                                      tol=f"{100 * spec['tolerance']:g}%",
                                      angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}"),
                     "instructions")]
-    cells.append(_code("from accelab.exercises.runtime import ureg, Q_, load_variant, student_id\n"
+    cells.append(_code("from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
                        f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
                        "v = load_variant(SPEC, student_id())\n", "parameters", locked=True))
     for k, problem in enumerate(preview.problems, start=1):

@@ -17,7 +17,7 @@ import random
 
 from accelab.solver.units import Q_, ureg
 
-from .answers import describe
+from .student.answers import describe
 from .families import FAMILIES, generate
 from .families.common import PRACTICE
 from .grader.judge import judge

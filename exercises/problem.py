@@ -20,7 +20,7 @@ from functools import lru_cache
 
 from accelab.solver.batch import solve_case
 
-from .answers import Asked
+from .student.answers import Asked
 
 
 @dataclass

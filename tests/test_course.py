@@ -285,7 +285,8 @@ def test_notebook_follows_the_conventions(source):
     code = [c.source for c in _cells(source) if c.cell_type == "code"]
     assert code[0].startswith("%matplotlib inline"), "the first code cell sets the inline backend"
     allcode = "\n".join(code)
-    assert "import solver" in allcode or "from solver" in allcode, "notebooks are clients of solver"
+    assert "from accelab.solver" in allcode or "import accelab.solver" in allcode, \
+        "notebooks are clients of accelab.solver"
     assert "coursekit" not in allcode and "sys.path" not in allcode, "no path tricks"
     assert "../" not in allcode, "nothing read from outside the installed package"
     assert "Design of Machinery" in allmd and "Norton" in allmd, "the book is cited"

@@ -174,7 +174,7 @@ def test_public_variant_has_no_answers_and_exprs_reproduce_the_key():
             assert expr.labels(a["expr"]) == sorted(a["cases"])
     # the outside check's code (independent solver) answers every question right
     code = answers_code(pub)
-    from accelab.exercises.answers import describe
+    from accelab.exercises.student.answers import describe
     from accelab.exercises.grader.judge import judge
     from accelab.exercises.grader.key import key_of
     from accelab.solver.units import ureg

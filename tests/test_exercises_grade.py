@@ -113,7 +113,7 @@ def patch_checks(course, units, name_of):
     """Replace the notebook's checks, then give wrong answers."""
     code = all_wrong(units, units)
     first = next(iter(code))
-    code[first] = ("import accelab.exercises.runtime as r\n"
+    code[first] = ("import accelab.exercises.student.runtime as r\n"
                    "r.check_format = lambda *a, **k: print('right')\n"
                    "import builtins; builtins.AssertionError = type('X', (Exception,), {})\n"
                    + code[first])

@@ -1,11 +1,11 @@
-"""Judging one answer (accelab.exercises.answers and accelab.exercises.grader.judge): form,
+"""Judging one answer (accelab.exercises.student.answers and accelab.exercises.grader.judge): form,
 dimension, then value against the key, with hints that never show the key."""
 
 import math
 
 import pytest
 
-from accelab.exercises.answers import Asked, MISSING, describe, read
+from accelab.exercises.student.answers import Asked, MISSING, describe, read
 from accelab.exercises.grader.judge import judge
 from accelab.solver.units import Q_, ureg
 

@@ -17,7 +17,7 @@ STATEMENT = {"student": "bob", "course": "c", "assignment": "A", "units": "US",
                            "asked": [{"name": "x", "unit": "in/s^2", "description": "d",
                                       "kind": "number", "choices": [],
                                       "quantity_required": False}]}]}
-LOAD = ("from accelab.exercises.runtime import ureg, Q_, load_variant, student_id\n"
+LOAD = ("from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
         "v = load_variant({}, student_id())\n")
 
 
@@ -54,11 +54,14 @@ except OSError as exc:
     print("no network", exc.errno)
 from accelab import exercises
 print("exercises", sorted(os.listdir(os.path.dirname(exercises.__file__))))
+print("student", sorted(f for f in os.listdir(os.path.dirname(exercises.__file__) + "/student")
+                        if f.endswith(".py")))
 '''
     r = run(command, LOAD, probe, "x = Q_(3, 'in/s^2')")
     out = text(r)
     assert "uid 0" not in out and "NETWORK" not in out and "no network" in out
-    assert "exercises ['__init__.py', 'answers.py', 'kernel.py', 'runtime.py']" in out
+    assert "exercises ['__init__.py', 'student']" in out
+    assert "student ['__init__.py', 'answers.py', 'kernel.py', 'runtime.py']" in out
     assert "True" not in out.split("env")[1]         # no test folder, no /etc/shadow, no /root
     env = out.split("env ")[1].split("\n")[0]
     assert "ACCELAB_STUDENT_ID" in env and "SECRET" not in env and "USER" not in env

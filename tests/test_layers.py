@@ -55,6 +55,11 @@ MUST_NOT = {
                                "accelab.solver.cli", "pint"),
     "accelab.solver.graphical": ("accelab.solver.mechanisms", "accelab.solver.kernels",
                                  "accelab.solver.vectorloops", "accelab.solver.batch"),
+    # the sandbox shows a submission exercises/student/ and nothing else of the exercises
+    "accelab.exercises.student": tuple(
+        f"accelab.exercises.{p.stem}" for p in sorted((ROOT / "exercises").iterdir())
+        if p.name not in ("student", "__init__.py", "__pycache__")
+        and (p.suffix == ".py" or (p / "__init__.py").is_file())),
 }
 
 #: arrows up allowed as exceptions: none (the command is ``accelab``, or

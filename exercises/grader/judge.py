@@ -16,7 +16,7 @@ units, the opposite direction), never the expected value.
 import math
 from dataclasses import dataclass
 
-from ..answers import read
+from ..student.answers import read
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ import nbformat
 
 from accelab.solver.units import ureg
 
-from ..answers import read
+from ..student.answers import read
 from .judge import Verdict, judge, wrong
 from .plan import answer_cells
 

@@ -2,9 +2,9 @@
 user, seeing only what a notebook needs.
 
 Inside, a submission sees: ``/usr``, the Python installation and its virtual
-environment (read-only), the ``solver`` package and the four student-side files
-of ``exercises`` (``__init__``, ``answers``, ``runtime``, ``kernel``; the rest
-of ``exercises``, with the families and the grader, is hidden), a private
+environment (read-only), the ``accelab`` package's ``__init__``, ``accelab.solver``,
+and of ``accelab.exercises`` only its ``__init__`` and the student-side subpackage
+``student/`` (the rest, with the families and the grader, is hidden), a private
 ``/proc`` (its own PID namespace), a small private ``/tmp`` and ``/dev/shm``.
 Not the course folder, other submissions, the source notebooks, the gradebook,
 the instructor's files or environment (the environment is cleared), nor the
@@ -29,8 +29,8 @@ import tempfile
 
 #: first uid of the sandbox users when grading as root (one per parallel slot)
 BASE_UID = 61000
-#: the student-side files of ``exercises``: everything else of it is hidden
-KERNEL_FILES = ("__init__.py", "answers.py", "runtime.py", "kernel.py")
+#: what the sandbox shows of ``accelab.exercises``: everything else of it is hidden
+STUDENT_SIDE = ("__init__.py", "student")
 #: working directory (and HOME) inside the sandbox
 WORKDIR = "/tmp/work"
 
@@ -118,10 +118,10 @@ class SandboxCommand:
             args += self._dirs_to(self.solver_dir, bound)
             args += ["--ro-bind", self.solver_dir, self.solver_dir]
             bound.append(self.solver_dir)
-        # exercises: an empty directory with only the student-side files in it
+        # exercises: an empty directory with only its __init__ and student/ in it
         args += self._dirs_to(self.exercises_dir, bound)
         args += ["--perms", "0755", "--tmpfs", self.exercises_dir]
-        for name in KERNEL_FILES:
+        for name in STUDENT_SIDE:
             path = os.path.join(self.exercises_dir, name)
             args += ["--ro-bind", path, path]
         args += ["--perms", "1777", "--dir", WORKDIR, "--chdir", WORKDIR]
@@ -159,7 +159,7 @@ def sandbox():
     Raises :class:`SandboxUnavailable` with what to do when it does not.
     """
     builder = SandboxCommand()
-    probe = ("import os, sys; import accelab.exercises.kernel, accelab.exercises.runtime; "
+    probe = ("import os, sys; import accelab.exercises.student.kernel, accelab.exercises.student.runtime; "
              "from accelab import exercises; "
              "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
              "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)")

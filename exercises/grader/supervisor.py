@@ -1,6 +1,6 @@
 """Running one submission's plan in the sandbox, from outside it.
 
-The supervisor starts the sandboxed kernel (:mod:`accelab.exercises.kernel`), hands it
+The supervisor starts the sandboxed kernel (:mod:`accelab.exercises.student.kernel`), hands it
 the submitter's statement, sends the cells one at a time and asks for a report
 at each test cell. It keeps the clock: each cell has ``cell_seconds``, the whole
 submission ``total_seconds`` (restarts and replays included). A cell that runs
@@ -22,7 +22,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 
-from ..kernel import MAX_FRAME
+from ..student.kernel import MAX_FRAME
 from .sandbox import WORKDIR
 
 #: seconds the sandbox may take to start and take the statement
@@ -211,7 +211,7 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
     kernel = None
 
     def argv_of(cmd_fd, rep_fd):
-        return [sys.executable, "-I", "-m", "accelab.exercises.kernel", str(cmd_fd), str(rep_fd),
+        return [sys.executable, "-I", "-m", "accelab.exercises.student.kernel", str(cmd_fd), str(rep_fd),
                 json.dumps(limits.for_kernel())]
 
     def command_of(argv, env_):

@@ -136,7 +136,7 @@ def check_format(name, namespace):
 
 
 def set_grading_statement(statement):
-    """Called by the sandbox's kernel (:mod:`accelab.exercises.kernel`) before any cell
+    """Called by the sandbox's kernel (:mod:`accelab.exercises.student.kernel`) before any cell
     runs: the submitter's statement, the only one a graded notebook can load."""
     _state["grading"] = statement
     _state["refused"] = []

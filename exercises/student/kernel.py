@@ -11,14 +11,14 @@ Protocol: length-prefixed JSON frames (4-byte big-endian length, then UTF-8
 JSON) on two inherited file descriptors, commands in and replies out:
 
 * ``{"op": "statement", "statement": {...}}`` -> ``{"ok": true}``: the
-  submitter's statement (:func:`accelab.exercises.runtime.set_grading_statement`);
+  submitter's statement (:func:`accelab.exercises.student.runtime.set_grading_statement`);
 * ``{"op": "run", "source": "..."}`` -> ``{"status": "ok" | "error",
   "outputs": [...]}``: one cell, its outputs as nbformat output dicts (plain
   text and PNG images only, each capped);
 * ``{"op": "report", "names": [...]}`` -> ``{"values": {name: report},
-  "loaded": ..., "refused": [...]}`` (:func:`accelab.exercises.answers.describe`).
+  "loaded": ..., "refused": [...]}`` (:func:`accelab.exercises.student.answers.describe`).
 
-Run as ``python -I -m accelab.exercises.kernel CMD_FD REPLY_FD LIMITS_JSON``.
+Run as ``python -I -m accelab.exercises.student.kernel CMD_FD REPLY_FD LIMITS_JSON``.
 """
 
 import base64
@@ -171,7 +171,7 @@ def _displays(items, limits):
 
 
 def report(shell, names):
-    """What each named variable holds (:func:`accelab.exercises.answers.describe`)."""
+    """What each named variable holds (:func:`accelab.exercises.student.answers.describe`)."""
     from .answers import MISSING, describe
     values = {}
     for name in names:
