@@ -35,7 +35,7 @@ def layers():
         try:
             found.append(importlib.import_module(name))
         except ModuleNotFoundError as exc:
-            if exc.name not in _parents(name):   # a missing module *inside* it is a bug
+            if exc.name not in _parents(name):  # a missing module *inside* it is a bug
                 raise
     return found
 
@@ -50,8 +50,10 @@ def build_parser():
     parser = argparse.ArgumentParser(
         prog="accelab",
         description="Acceleration analysis of planar linkages: solve, draw, benchmark, "
-                    "and generate and grade exercises.",
-        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+        "and generate and grade exercises.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for layer in layers():
         layer.register(sub)
@@ -68,9 +70,10 @@ def main(argv=None):
     """
     parser = build_parser()
     args, extra = parser.parse_known_args(argv)
-    if extra:   # name=value after an option (accelab solve fourbar --json a="2 in" ...)
-        if getattr(args, "intermixed", False) and all("=" in e and not e.startswith("-")
-                                                      for e in extra):
+    if extra:  # name=value after an option (accelab solve fourbar --json a="2 in" ...)
+        if getattr(args, "intermixed", False) and all(
+            "=" in e and not e.startswith("-") for e in extra
+        ):
             args.values = list(args.values) + extra
         else:
             parser.error(f"unrecognized arguments: {' '.join(e[:60] for e in extra)}")
@@ -97,8 +100,11 @@ def main(argv=None):
 
 
 def _internal(exc):
-    print(f"accelab: internal error, please report it with the command you ran: "
-          f"{type(exc).__name__}: {str(exc)[:300]}", file=sys.stderr)
+    print(
+        f"accelab: internal error, please report it with the command you ran: "
+        f"{type(exc).__name__}: {str(exc)[:300]}",
+        file=sys.stderr,
+    )
     return 1
 
 

@@ -58,9 +58,14 @@ def worst(errors):
 def summary(errors):
     """Worst error over positions and outputs, per output and overall, and
     the number of positions the method refused (NaN)."""
-    per_output = {k: (float(np.nanmax(e)) if np.any(~np.isnan(e)) else None)
-                  for k, e in errors.items()}
+    per_output = {
+        k: (float(np.nanmax(e)) if np.any(~np.isnan(e)) else None) for k, e in errors.items()
+    }
     w = worst(errors)
     flagged = int(np.sum(np.isnan(w)))
-    return {"worst": float(np.nanmax(w)) if flagged < w.size else None,
-            "per_output": per_output, "flagged": flagged, "positions": int(w.size)}
+    return {
+        "worst": float(np.nanmax(w)) if flagged < w.size else None,
+        "per_output": per_output,
+        "flagged": flagged,
+        "positions": int(w.size),
+    }

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-IN = 0.0254            # [m] per inch
+IN = 0.0254  # [m] per inch
 DEG = math.pi / 180.0  # [rad] per degree
 MOTION = {"omega2": 10.0, "alpha2": -5.0, "jerk2": 20.0}  # [rad/s, rad/s^2, rad/s^3]
 CYCLE_MARGIN = 1.0 * DEG  # [rad] kept from a toggle position by the benchmark cycle
@@ -46,18 +46,28 @@ CYCLE_MARGIN = 1.0 * DEG  # [rad] kept from a toggle position by the benchmark c
 #: the kernel outputs of each mechanism, and where the loop description holds
 #: them: name -> (vector, "angle" | "length", derivative order)
 KERNEL_OUTPUTS = {
-    "fourbar": {f"{q}{k}": (f"R{k}", "angle", n) for k in (3, 4)
-                for n, q in enumerate(("theta", "omega", "alpha", "jerk"))},
-    "fivebar": {f"{q}{k}": (f"R{k}", "angle", n) for k in (3, 4)
-                for n, q in enumerate(("theta", "omega", "alpha", "jerk"))},
-    "slidercrank": dict([(f"{q}3", ("R3", "angle", n))
-                         for n, q in enumerate(("theta", "omega", "alpha", "jerk"))]
-                        + [(f"d{s}", ("R1", "length", n))
-                           for n, s in enumerate(("", "_dot", "_ddot", "_dddot"))]),
-    "invertedslidercrank": dict([(f"{q}{k}", (f"R{k}", "angle", n)) for k in (3, 4)
-                                 for n, q in enumerate(("theta", "omega", "alpha", "jerk"))]
-                                + [(f"b{s}", ("R3", "length", n))
-                                   for n, s in enumerate(("", "_dot", "_ddot", "_dddot"))]),
+    "fourbar": {
+        f"{q}{k}": (f"R{k}", "angle", n)
+        for k in (3, 4)
+        for n, q in enumerate(("theta", "omega", "alpha", "jerk"))
+    },
+    "fivebar": {
+        f"{q}{k}": (f"R{k}", "angle", n)
+        for k in (3, 4)
+        for n, q in enumerate(("theta", "omega", "alpha", "jerk"))
+    },
+    "slidercrank": dict(
+        [(f"{q}3", ("R3", "angle", n)) for n, q in enumerate(("theta", "omega", "alpha", "jerk"))]
+        + [(f"d{s}", ("R1", "length", n)) for n, s in enumerate(("", "_dot", "_ddot", "_dddot"))]
+    ),
+    "invertedslidercrank": dict(
+        [
+            (f"{q}{k}", (f"R{k}", "angle", n))
+            for k in (3, 4)
+            for n, q in enumerate(("theta", "omega", "alpha", "jerk"))
+        ]
+        + [(f"b{s}", ("R3", "length", n)) for n, s in enumerate(("", "_dot", "_ddot", "_dddot"))]
+    ),
 }
 ORDER_WORDS = ("position", "velocity", "acceleration", "jerk")
 
@@ -113,11 +123,18 @@ class Case:
     def kernel(self, theta2, order=3, **motion):
         """Solve with the closed-form kernel (unit-free); returns a Motion."""
         import importlib
+
         module = importlib.import_module(f"accelab.solver.kernels.{self.mechanism}")
         m = dict(MOTION, **motion)
-        return module.solve(**self.params, theta2=theta2, omega2=m["omega2"],
-                            alpha2=m["alpha2"], jerk2=m["jerk2"], circuit=self.circuit,
-                            order=order)
+        return module.solve(
+            **self.params,
+            theta2=theta2,
+            omega2=m["omega2"],
+            alpha2=m["alpha2"],
+            jerk2=m["jerk2"],
+            circuit=self.circuit,
+            order=order,
+        )
 
     def kernel_guess(self, theta2):
         """Unknowns [rad or m] of the loop description at one crank angle,
@@ -139,15 +156,29 @@ class Case:
 
 
 def _fourbar_vectors(a, b, c, d):
-    return ({"R1": {"length": d, "angle": 0.0}, "R2": {"length": a, "angle": "input"},
-             "R3": {"length": b, "angle": "unknown"}, "R4": {"length": c, "angle": "unknown"}},
-            ["R2 + R3 - R4 - R1"])
+    return (
+        {
+            "R1": {"length": d, "angle": 0.0},
+            "R2": {"length": a, "angle": "input"},
+            "R3": {"length": b, "angle": "unknown"},
+            "R4": {"length": c, "angle": "unknown"},
+        },
+        ["R2 + R3 - R4 - R1"],
+    )
 
 
 def _fourbar(name, title, a, b, c, d, circuit):
     vectors, loops = _fourbar_vectors(a, b, c, d)
-    case = Case(name, title, "fourbar", dict(a=a, b=b, c=c, d=d), circuit, vectors, loops,
-                KERNEL_OUTPUTS["fourbar"])
+    case = Case(
+        name,
+        title,
+        "fourbar",
+        dict(a=a, b=b, c=c, d=d),
+        circuit,
+        vectors,
+        loops,
+        KERNEL_OUTPUTS["fourbar"],
+    )
     # toggle positions: |O4 - A| = |b - c| or b + c (law of cosines in theta2)
     for s in (abs(b - c), b + c):
         cos_t = (a * a + d * d - s * s) / (2.0 * a * d)
@@ -163,6 +194,7 @@ def _fourbar(name, title, a, b, c, d, circuit):
 
 def _si(text, kind):
     from accelab.solver.units import Q_
+
     return Q_(text).m_as("m" if kind == "length" else "rad")
 
 
@@ -175,8 +207,11 @@ def from_example(name, title, desc):
         length, angle = v["length"], v["angle"]
         out["length"] = "unknown" if length == "unknown" else _si(length, "length")
         if isinstance(angle, dict):
-            out["angle"] = {"follow": angle["follow"], "ratio": float(angle.get("ratio", 1)),
-                            "offset": _si(angle.get("offset", "0 deg"), "angle")}
+            out["angle"] = {
+                "follow": angle["follow"],
+                "ratio": float(angle.get("ratio", 1)),
+                "offset": _si(angle.get("offset", "0 deg"), "angle"),
+            }
         elif angle in ("input", "unknown"):
             out["angle"] = angle
         else:
@@ -188,8 +223,11 @@ def from_example(name, title, desc):
     for vname, v in vectors.items():
         for kind in ("angle", "length"):
             if v[kind] == "unknown":
-                words = (("theta", "omega", "alpha", "jerk") if kind == "angle" else
-                         ("length", "length_dot", "length_ddot", "length_dddot"))
+                words = (
+                    ("theta", "omega", "alpha", "jerk")
+                    if kind == "angle"
+                    else ("length", "length_dot", "length_ddot", "length_dddot")
+                )
                 for n, w in enumerate(words):
                     outputs[f"{vname}.{w}"] = (vname, kind, n)
     return Case(name, title, "loops", {}, "open", vectors, desc["loops"], outputs, guess)
@@ -205,16 +243,22 @@ def eightbar():
     Lengths in inches; the output rocker 8 swings about O8 = O6 + (8, -2) in.
     """
     from accelab.solver.vectorloops.examples import watt2_sixbar
+
     desc = watt2_sixbar()
     vectors = dict(desc["vectors"])
-    vectors.update({
-        "R6E": {"length": "5 in", "angle": {"follow": "R6", "offset": "120 deg"}},
-        "R8": {"length": "7 in", "angle": "unknown", "guess": "-10 deg"},
-        "R9": {"length": "6 in", "angle": "unknown", "guess": "80 deg"},
-        "R10": {"length": "8.246211251235321 in", "angle": "-14.036243467926479 deg"}})
-    return {"vectors": vectors,
-            "loops": desc["loops"] + ["R6E + R8 - R9 - R10"],
-            "points": dict(desc["points"], E="R1 + R7 + R6E")}
+    vectors.update(
+        {
+            "R6E": {"length": "5 in", "angle": {"follow": "R6", "offset": "120 deg"}},
+            "R8": {"length": "7 in", "angle": "unknown", "guess": "-10 deg"},
+            "R9": {"length": "6 in", "angle": "unknown", "guess": "80 deg"},
+            "R10": {"length": "8.246211251235321 in", "angle": "-14.036243467926479 deg"},
+        }
+    )
+    return {
+        "vectors": vectors,
+        "loops": desc["loops"] + ["R6E + R8 - R9 - R10"],
+        "points": dict(desc["points"], E="R1 + R7 + R6E"),
+    }
 
 
 def _closed_form_guess(case):
@@ -225,46 +269,112 @@ def _closed_form_guess(case):
 def all_cases():
     """The documented set, in the order the tables list it (dict name -> Case)."""
     from accelab.solver.vectorloops import examples
+
     cases = [
-        _fourbar("fourbar-open", "fourbar, Grashof crank-rocker, open", 2 * IN, 6 * IN, 9 * IN,
-                 7 * IN, "open"),
-        _fourbar("fourbar-crossed", "fourbar, Grashof crank-rocker, crossed", 2 * IN, 6 * IN,
-                 9 * IN, 7 * IN, "crossed"),
-        _fourbar("fourbar-nongrashof-open", "fourbar, non-Grashof triple rocker, open", 5 * IN,
-                 4 * IN, 6 * IN, 3.5 * IN, "open"),
-        _fourbar("fourbar-nongrashof-crossed", "fourbar, non-Grashof triple rocker, crossed",
-                 5 * IN, 4 * IN, 6 * IN, 3.5 * IN, "crossed"),
+        _fourbar(
+            "fourbar-open",
+            "fourbar, Grashof crank-rocker, open",
+            2 * IN,
+            6 * IN,
+            9 * IN,
+            7 * IN,
+            "open",
+        ),
+        _fourbar(
+            "fourbar-crossed",
+            "fourbar, Grashof crank-rocker, crossed",
+            2 * IN,
+            6 * IN,
+            9 * IN,
+            7 * IN,
+            "crossed",
+        ),
+        _fourbar(
+            "fourbar-nongrashof-open",
+            "fourbar, non-Grashof triple rocker, open",
+            5 * IN,
+            4 * IN,
+            6 * IN,
+            3.5 * IN,
+            "open",
+        ),
+        _fourbar(
+            "fourbar-nongrashof-crossed",
+            "fourbar, non-Grashof triple rocker, crossed",
+            5 * IN,
+            4 * IN,
+            6 * IN,
+            3.5 * IN,
+            "crossed",
+        ),
     ]
     a, b, c = 0.040, 0.120, 0.010
-    cases.append(Case(
-        "slidercrank", "offset slider-crank", "slidercrank", dict(a=a, b=b, c=c), "open",
-        {"R2": {"length": a, "angle": "input"}, "R3": {"length": b, "angle": "unknown"},
-         "R4": {"length": c, "angle": 0.5 * math.pi},
-         "R1": {"length": "unknown", "angle": 0.0}},
-        ["R2 - R3 - R4 - R1"], KERNEL_OUTPUTS["slidercrank"]))
+    cases.append(
+        Case(
+            "slidercrank",
+            "offset slider-crank",
+            "slidercrank",
+            dict(a=a, b=b, c=c),
+            "open",
+            {
+                "R2": {"length": a, "angle": "input"},
+                "R3": {"length": b, "angle": "unknown"},
+                "R4": {"length": c, "angle": 0.5 * math.pi},
+                "R1": {"length": "unknown", "angle": 0.0},
+            },
+            ["R2 - R3 - R4 - R1"],
+            KERNEL_OUTPUTS["slidercrank"],
+        )
+    )
     a, c, d, gamma = 4 * IN, 3 * IN, 8 * IN, 90 * DEG
-    cases.append(Case(
-        "invertedslidercrank", "inverted slider-crank", "invertedslidercrank",
-        dict(a=a, c=c, d=d, gamma=gamma), "open",
-        {"R1": {"length": d, "angle": 0.0}, "R2": {"length": a, "angle": "input"},
-         "R4": {"length": c, "angle": "unknown"},
-         "R3": {"length": "unknown", "angle": {"follow": "R4", "ratio": 1.0, "offset": gamma}}},
-        ["R2 - R3 - R4 - R1"], KERNEL_OUTPUTS["invertedslidercrank"]))
+    cases.append(
+        Case(
+            "invertedslidercrank",
+            "inverted slider-crank",
+            "invertedslidercrank",
+            dict(a=a, c=c, d=d, gamma=gamma),
+            "open",
+            {
+                "R1": {"length": d, "angle": 0.0},
+                "R2": {"length": a, "angle": "input"},
+                "R4": {"length": c, "angle": "unknown"},
+                "R3": {
+                    "length": "unknown",
+                    "angle": {"follow": "R4", "ratio": 1.0, "offset": gamma},
+                },
+            },
+            ["R2 - R3 - R4 - R1"],
+            KERNEL_OUTPUTS["invertedslidercrank"],
+        )
+    )
     p = dict(a=1 * IN, b=4 * IN, c=4 * IN, d=1 * IN, f=3 * IN, lam=-2.0, phi=30 * DEG)
-    cases.append(Case(
-        "fivebar", "geared fivebar", "fivebar", p, "open",
-        {"R1": {"length": p["f"], "angle": 0.0}, "R2": {"length": p["a"], "angle": "input"},
-         "R3": {"length": p["b"], "angle": "unknown"},
-         "R4": {"length": p["c"], "angle": "unknown"},
-         "R5": {"length": p["d"], "angle": {"follow": "R2", "ratio": p["lam"],
-                                            "offset": p["phi"]}}},
-        ["R2 + R3 - R4 - R5 - R1"], KERNEL_OUTPUTS["fivebar"]))
+    cases.append(
+        Case(
+            "fivebar",
+            "geared fivebar",
+            "fivebar",
+            p,
+            "open",
+            {
+                "R1": {"length": p["f"], "angle": 0.0},
+                "R2": {"length": p["a"], "angle": "input"},
+                "R3": {"length": p["b"], "angle": "unknown"},
+                "R4": {"length": p["c"], "angle": "unknown"},
+                "R5": {
+                    "length": p["d"],
+                    "angle": {"follow": "R2", "ratio": p["lam"], "offset": p["phi"]},
+                },
+            },
+            ["R2 + R3 - R4 - R5 - R1"],
+            KERNEL_OUTPUTS["fivebar"],
+        )
+    )
     for case in cases:
         _closed_form_guess(case)
-    cases.append(from_example("sixbar-watt2", "Watt II sixbar (2 loops)",
-                              examples.watt2_sixbar()))
-    cases.append(from_example("sixbar-slider", "sixbar driving a slider (2 loops)",
-                              examples.sixbar_slider()))
+    cases.append(from_example("sixbar-watt2", "Watt II sixbar (2 loops)", examples.watt2_sixbar()))
+    cases.append(
+        from_example("sixbar-slider", "sixbar driving a slider (2 loops)", examples.sixbar_slider())
+    )
     cases.append(from_example("eightbar", "eightbar (3 loops)", eightbar()))
     return {c.name: c for c in cases}
 
@@ -279,8 +389,11 @@ def description(case, guess=None):
         out["length"] = "unknown" if v["length"] == "unknown" else f"{float(v['length'])!r} m"
         angle = v["angle"]
         if isinstance(angle, dict):
-            out["angle"] = {"follow": angle["follow"], "ratio": angle.get("ratio", 1.0),
-                            "offset": f"{float(angle.get('offset', 0.0))!r} rad"}
+            out["angle"] = {
+                "follow": angle["follow"],
+                "ratio": angle.get("ratio", 1.0),
+                "offset": f"{float(angle.get('offset', 0.0))!r} rad",
+            }
         elif angle in ("input", "unknown"):
             out["angle"] = angle
         else:

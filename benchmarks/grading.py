@@ -49,6 +49,7 @@ def sandbox_start_seconds(repeats=5):
     """Seconds to start a sandboxed kernel and hand it a statement (median)."""
     from accelab.exercises.grader.sandbox import sandbox
     from accelab.exercises.grader.supervisor import Limits, run_plan
+
     statement = {"student": "x", "problems": []}
     times = []
     for _ in range(repeats):
@@ -60,11 +61,13 @@ def sandbox_start_seconds(repeats=5):
 
 def _noop():
     from accelab.exercises.grader.plan import Step
+
     return Step(0, "code", "pass")
 
 
 def measure(students=20, jobs=2, keep=None):
     from accelab.exercises.grader.grade import grade
+
     folder = keep or tempfile.mkdtemp(prefix="accelab-bench-grading-")
     course = os.path.join(folder, "course")
     try:
@@ -76,14 +79,20 @@ def measure(students=20, jobs=2, keep=None):
         runs = [s.seconds for s in subs if s.prepared]
         start = sandbox_start_seconds()
         return {
-            "students": students, "jobs": jobs, "seconds": seconds,
-            "per_submission": seconds / students, "goal_seconds": GOAL_SECONDS,
-            "met": seconds <= GOAL_SECONDS, "stages": timings,
+            "students": students,
+            "jobs": jobs,
+            "seconds": seconds,
+            "per_submission": seconds / students,
+            "goal_seconds": GOAL_SECONDS,
+            "met": seconds <= GOAL_SECONDS,
+            "stages": timings,
             "sandbox_run_median": statistics.median(runs) if runs else None,
             "sandbox_start_median": start,
             "graded": sum(s.graded for s in subs),
             "full_marks": sum(1 for r in rows if r["total"] == r["max"]),
-            "setup_seconds": setup, "load_average": load, "cpus": os.cpu_count(),
+            "setup_seconds": setup,
+            "load_average": load,
+            "cpus": os.cpu_count(),
             "machine": platform.processor() or platform.machine(),
             "python": platform.python_version(),
         }
@@ -93,14 +102,18 @@ def measure(students=20, jobs=2, keep=None):
 
 
 def report(result):
-    lines = [f"{result['students']} submissions graded with {result['jobs']} jobs, feedback and "
-             f"CSV: {result['seconds']:.1f} s ({result['per_submission']:.2f} s per submission; "
-             f"goal <= {result['goal_seconds']:g} s: {'met' if result['met'] else 'missed'}; "
-             f"load average {result['load_average']:.1f} on {result['cpus']} cores)"]
+    lines = [
+        f"{result['students']} submissions graded with {result['jobs']} jobs, feedback and "
+        f"CSV: {result['seconds']:.1f} s ({result['per_submission']:.2f} s per submission; "
+        f"goal <= {result['goal_seconds']:g} s: {'met' if result['met'] else 'missed'}; "
+        f"load average {result['load_average']:.1f} on {result['cpus']} cores)"
+    ]
     for stage, seconds in result["stages"].items():
         lines.append(f"  {stage:<45} {seconds:6.1f} s")
-    lines.append(f"  one sandboxed run (median, wall, in parallel) {result['sandbox_run_median']:.2f} s,"
-                 f" of which starting the sandbox and its kernel {result['sandbox_start_median']:.2f} s")
+    lines.append(
+        f"  one sandboxed run (median, wall, in parallel) {result['sandbox_run_median']:.2f} s,"
+        f" of which starting the sandbox and its kernel {result['sandbox_start_median']:.2f} s"
+    )
     return "\n".join(lines)
 
 

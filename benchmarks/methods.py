@@ -41,11 +41,22 @@ FD_STEPS = (1e-2, 1e-3, 1e-4, 1e-5, 1e-6)
 #: tolerances tried on the general solver, when it takes one
 LOOP_TOLERANCES = (1e-4, 1e-6, 1e-8, 1e-10)
 
-_UNIT_CLASSES = {"fourbar": "FourBar", "slidercrank": "SliderCrank",
-                 "invertedslidercrank": "InvertedSliderCrank", "fivebar": "GearedFiveBar"}
-_LOOP_ATTRS = {("angle", 0): "angle", ("angle", 1): "omega", ("angle", 2): "alpha",
-               ("angle", 3): "jerk", ("length", 0): "length", ("length", 1): "length_dot",
-               ("length", 2): "length_ddot", ("length", 3): "length_dddot"}
+_UNIT_CLASSES = {
+    "fourbar": "FourBar",
+    "slidercrank": "SliderCrank",
+    "invertedslidercrank": "InvertedSliderCrank",
+    "fivebar": "GearedFiveBar",
+}
+_LOOP_ATTRS = {
+    ("angle", 0): "angle",
+    ("angle", 1): "omega",
+    ("angle", 2): "alpha",
+    ("angle", 3): "jerk",
+    ("length", 0): "length",
+    ("length", 1): "length_dot",
+    ("length", 2): "length_ddot",
+    ("length", 3): "length_dddot",
+}
 
 
 class NotApplicable(Exception):
@@ -80,8 +91,14 @@ class Method:
         return self._prepare(case, np.asarray(theta2, dtype=float))
 
     def describe(self):
-        return {"key": self.key, "label": self.label, "family": self.family,
-                "order": self.order, "setting": self.setting, "vectorised": self.vectorised}
+        return {
+            "key": self.key,
+            "label": self.label,
+            "family": self.family,
+            "order": self.order,
+            "setting": self.setting,
+            "vectorised": self.vectorised,
+        }
 
 
 def _closed_form(case):
@@ -103,6 +120,7 @@ def _kernels(case, theta2):
 
     def extract(m):
         return {k: np.asarray(getattr(m, k), dtype=float) for k in names}
+
     return run, extract
 
 
@@ -116,11 +134,13 @@ def _scalar(case, theta2):
     w, al, jk, circuit = m["omega2"], m["alpha2"], m["jerk2"], case.circuit
 
     def run():
-        return [solve(**p, theta2=t, omega2=w, alpha2=al, jerk2=jk, circuit=circuit)
-                for t in angles]
+        return [
+            solve(**p, theta2=t, omega2=w, alpha2=al, jerk2=jk, circuit=circuit) for t in angles
+        ]
 
     def extract(results):
         return {k: np.array([float(getattr(r, k)) for r in results]) for k in names}
+
     return run, extract
 
 
@@ -128,6 +148,7 @@ def unit_mechanism(case):
     """The unit-aware object of a closed-form case, geometry as Quantities."""
     from accelab import solver
     from accelab.solver.units import Q_
+
     _closed_form(case)
     cls = getattr(solver, _UNIT_CLASSES[case.mechanism])
     geometry = {}
@@ -144,9 +165,14 @@ def unit_mechanism(case):
 def unit_inputs(theta2):
     """The input motion as Quantities (built once, outside the timed work)."""
     from accelab.solver.units import Q_
+
     t = theta2 if np.ndim(theta2) else float(theta2)
-    return {"theta2": Q_(t, "rad"), "omega2": Q_(MOTION["omega2"], "rad/s"),
-            "alpha2": Q_(MOTION["alpha2"], "rad/s^2"), "jerk2": Q_(MOTION["jerk2"], "rad/s^3")}
+    return {
+        "theta2": Q_(t, "rad"),
+        "omega2": Q_(MOTION["omega2"], "rad/s"),
+        "alpha2": Q_(MOTION["alpha2"], "rad/s^2"),
+        "jerk2": Q_(MOTION["jerk2"], "rad/s^3"),
+    }
 
 
 def _units(case, theta2):
@@ -161,6 +187,7 @@ def _units(case, theta2):
 
     def extract(q):
         return {k: np.asarray(v.to_base_units().magnitude, dtype=float) for k, v in q.items()}
+
     return run, extract
 
 
@@ -169,6 +196,7 @@ def loop_tolerance_parameter():
     """Name of the convergence-tolerance argument of
     :meth:`accelab.solver.VectorLoopLinkage.solve`, or None if it has none."""
     from accelab.solver import VectorLoopLinkage
+
     params = inspect.signature(VectorLoopLinkage.solve).parameters
     for name in ("tol", "tolerance", "xtol", "rtol"):
         if name in params:
@@ -179,6 +207,7 @@ def loop_tolerance_parameter():
 def loop_default_tolerance():
     """The default of that argument (None if there is none)."""
     from accelab.solver import VectorLoopLinkage
+
     name = loop_tolerance_parameter()
     if name is None:
         return None
@@ -188,13 +217,16 @@ def loop_default_tolerance():
 
 def loop_linkage(case):
     from accelab.solver import VectorLoopLinkage
+
     from .cases import description
+
     return VectorLoopLinkage(**description(case))
 
 
 def _loops_with(tol):
     def prepare(case, theta2):
         from accelab.solver.units import Q_
+
         linkage = loop_linkage(case)
         names = _names(case, 3)
         inputs = unit_inputs(theta2)
@@ -216,7 +248,9 @@ def _loops_with(tol):
                     v = np.angle(np.exp(1j * v))
                 out[k] = v
             return out
+
         return run, extract
+
     return prepare
 
 
@@ -243,16 +277,21 @@ def fd_with(h):
                     f = f[2] + np.angle(np.exp(1j * (f - f[2])))
                 d1 = (f[3] - f[1]) / (2 * h)
                 d2 = (f[3] - 2 * f[2] + f[1]) / (h * h)
-                d3 = (f[4] - 2 * f[3] + 2 * f[1] - f[0]) / (2 * h ** 3)
+                d3 = (f[4] - 2 * f[3] + 2 * f[1] - f[0]) / (2 * h**3)
                 out[names[0]] = _wrap(f[2]) if kind == "angle" else f[2]
                 # chain rule: x(theta2(t))
-                derivs = {1: d1 * w, 2: d2 * w * w + d1 * al,
-                          3: d3 * w ** 3 + 3 * d2 * w * al + d1 * jk}
+                derivs = {
+                    1: d1 * w,
+                    2: d2 * w * w + d1 * al,
+                    3: d3 * w**3 + 3 * d2 * w * al + d1 * jk,
+                }
                 for n, name in names.items():
                     if n:
                         out[name] = derivs[n]
             return out
+
         return run, lambda out: out
+
     return prepare
 
 
@@ -266,6 +305,7 @@ GRAPHICAL = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar")
 
 def _graphical(case, theta2):
     from accelab.solver.graphical import construct
+
     if case.mechanism not in GRAPHICAL:
         raise NotApplicable(f"{case.name} has no graphical construction")
     names = _names(case, 2)
@@ -276,38 +316,78 @@ def _graphical(case, theta2):
         out = []
         for t in angles:
             try:
-                out.append(construct(case.mechanism, case.circuit, **p, theta2=t,
-                                     omega2=m["omega2"], alpha2=m["alpha2"]).values)
+                out.append(
+                    construct(
+                        case.mechanism,
+                        case.circuit,
+                        **p,
+                        theta2=t,
+                        omega2=m["omega2"],
+                        alpha2=m["alpha2"],
+                    ).values
+                )
             except Exception:  # a construction that fails reports nothing there
                 out.append({})
         return out
 
     def extract(values):
         return {k: np.array([float(np.real(v.get(k, np.nan))) for v in values]) for k in names}
+
     return run, extract
 
 
 def methods(include_peers=True):
     """Every method at every setting, in the order the tables list them."""
-    out = [Method("kernels", "closed forms, unit-free (vectorised)", "kernels", 3, _kernels),
-           Method("units", "closed forms, unit-aware API", "units", 3, _units),
-           Method("scalar", "closed forms, scalar Python loop", "scalar", 3, _scalar,
-                  vectorised=False)]
+    out = [
+        Method("kernels", "closed forms, unit-free (vectorised)", "kernels", 3, _kernels),
+        Method("units", "closed forms, unit-aware API", "units", 3, _units),
+        Method(
+            "scalar", "closed forms, scalar Python loop", "scalar", 3, _scalar, vectorised=False
+        ),
+    ]
     default = loop_default_tolerance()
-    out.append(Method("loops", "vector loops" + (f" (default tol {default:.0e})" if default
-                                                 else " (default tolerance)"),
-                      "loops", 3, _loops_with(None), setting=default, vectorised=False))
+    out.append(
+        Method(
+            "loops",
+            "vector loops"
+            + (f" (default tol {default:.0e})" if default else " (default tolerance)"),
+            "loops",
+            3,
+            _loops_with(None),
+            setting=default,
+            vectorised=False,
+        )
+    )
     if loop_tolerance_parameter():
         for tol in LOOP_TOLERANCES:
             if default is None or not math.isclose(tol, default):
-                out.append(Method(f"loops-tol{tol:.0e}", f"vector loops, tol {tol:.0e}", "loops",
-                                  3, _loops_with(tol), setting=tol, vectorised=False))
+                out.append(
+                    Method(
+                        f"loops-tol{tol:.0e}",
+                        f"vector loops, tol {tol:.0e}",
+                        "loops",
+                        3,
+                        _loops_with(tol),
+                        setting=tol,
+                        vectorised=False,
+                    )
+                )
     for h in FD_STEPS:
-        out.append(Method(f"fd-h{h:.0e}", f"finite differences, h = {h:.0e} rad", "fd", 3,
-                          fd_with(h), setting=h))
-    out.append(Method("graphical", "graphical construction", "graphical", 2, _graphical,
-                      vectorised=False))
+        out.append(
+            Method(
+                f"fd-h{h:.0e}",
+                f"finite differences, h = {h:.0e} rad",
+                "fd",
+                3,
+                fd_with(h),
+                setting=h,
+            )
+        )
+    out.append(
+        Method("graphical", "graphical construction", "graphical", 2, _graphical, vectorised=False)
+    )
     if include_peers:
         from .peers import peer_methods
+
         out += peer_methods(Method, NotApplicable)
     return out

@@ -33,18 +33,23 @@ import numpy as np
 PEERS = ("pylinkage", "mechanism", "kimech")
 
 
-SLIDER_NOTE = ("pylinkage 1.3.0's slider-crank: step_fast_with_kinematics leaves the slider "
-               "where it was assembled, and step_with_derivatives gives its velocity and "
-               "acceleration as None; it also has no choice of branch (the slider sits on the "
-               "-x side of the crank pin)")
-RANGE_NOTE = ("pylinkage turns its crank by a fixed step before each output, so its first "
-              "position would come from one step outside a non-Grashof range; from one step "
-              "inside, its first solution lands on the other assembly")
+SLIDER_NOTE = (
+    "pylinkage 1.3.0's slider-crank: step_fast_with_kinematics leaves the slider "
+    "where it was assembled, and step_with_derivatives gives its velocity and "
+    "acceleration as None; it also has no choice of branch (the slider sits on the "
+    "-x side of the crank pin)"
+)
+RANGE_NOTE = (
+    "pylinkage turns its crank by a fixed step before each output, so its first "
+    "position would come from one step outside a non-Grashof range; from one step "
+    "inside, its first solution lands on the other assembly"
+)
 
 
 def installed():
     """Installed peers: dict name -> version."""
     from importlib.metadata import PackageNotFoundError, version
+
     out = {}
     for name in PEERS:
         try:
@@ -77,19 +82,30 @@ def _even_steps(theta2):
 def _pylinkage(NotApplicable):
     def prepare(case, theta2):
         from pylinkage.mechanism import DriverLink, fourbar
+
         from .cases import MOTION
+
         if case.mechanism != "fourbar":
-            raise NotApplicable(SLIDER_NOTE if case.mechanism == "slidercrank" else
-                                "pylinkage has no such mechanism")
+            raise NotApplicable(
+                SLIDER_NOTE
+                if case.mechanism == "slidercrank"
+                else "pylinkage has no such mechanism"
+            )
         if not case.full_turn:
             raise NotApplicable(RANGE_NOTE)
         p = case.params
         step = _even_steps(theta2)
         N = theta2.size
         # branch 1 puts B above the line A -> O4 at the start: the open circuit
-        mech = fourbar(crank=p["a"], coupler=p["b"], rocker=p["c"], ground=p["d"],
-                       omega=step, initial_angle=float(theta2[0]) - step,
-                       branch=1 if case.circuit == "open" else 0)
+        mech = fourbar(
+            crank=p["a"],
+            coupler=p["b"],
+            rocker=p["c"],
+            ground=p["d"],
+            omega=step,
+            initial_angle=float(theta2[0]) - step,
+            branch=1 if case.circuit == "open" else 0,
+        )
         crank = next(link for link in mech.links if isinstance(link, DriverLink))
         mech.set_input_velocity(crank, MOTION["omega2"], MOTION["alpha2"])
         mech.compile()
@@ -103,12 +119,21 @@ def _pylinkage(NotApplicable):
             pos, vel, acc = (r[..., 0] + 1j * r[..., 1] for r in result)
             idx = _joint_roles(pos[0], theta2[0], p)
             A, B, O4 = idx["A"], idx["B"], idx["O4"]
-            t3, w3, a3 = _angular(pos[:, B] - pos[:, A], vel[:, B] - vel[:, A],
-                                  acc[:, B] - acc[:, A])
+            t3, w3, a3 = _angular(
+                pos[:, B] - pos[:, A], vel[:, B] - vel[:, A], acc[:, B] - acc[:, A]
+            )
             t4, w4, a4 = _angular(pos[:, B] - pos[:, O4], vel[:, B], acc[:, B])
-            return {"theta3": t3, "omega3": w3, "alpha3": a3,
-                    "theta4": t4, "omega4": w4, "alpha4": a4}
+            return {
+                "theta3": t3,
+                "omega3": w3,
+                "alpha3": a3,
+                "theta4": t4,
+                "omega4": w4,
+                "alpha4": a4,
+            }
+
         return run, extract
+
     return prepare
 
 
@@ -129,6 +154,7 @@ def _joint_roles(z, theta2, p):
 def _mechanism(NotApplicable):
     def prepare(case, theta2):
         from .cases import MOTION
+
         if case.mechanism not in ("fourbar", "slidercrank"):
             raise NotApplicable("measured here on the fourbar and slider-crank only")
         p = case.params
@@ -138,6 +164,7 @@ def _mechanism(NotApplicable):
 
         def build():
             from mechanism import Mechanism, Vector, get_joints
+
             if case.mechanism == "fourbar":
                 O2, A, B, O4 = get_joints("O2 A B O4")
                 a = Vector((O2, A), r=p["a"])
@@ -147,6 +174,7 @@ def _mechanism(NotApplicable):
 
                 def loops(x, i):
                     return a(i) + b(x[0]) - c(x[1]) - d()
+
                 guess = np.array([case.guess["R3"], case.guess["R4"]])
                 vectors, out = (a, b, c, d), {"3": b, "4": c}
             else:
@@ -158,10 +186,18 @@ def _mechanism(NotApplicable):
 
                 def loops(x, i):
                     return a(i) - b(x[0]) - c() - d(x[1])
+
                 guess = np.array([case.guess["R3"], case.guess["R1"]])
                 vectors, out = (a, b, c, d), {"3": b, "d": d}
-            mech = Mechanism(vectors=vectors, origin=O2, loops=loops, pos=theta2, vel=w, acc=al,
-                             guess=(guess, np.zeros(2), np.zeros(2)))
+            mech = Mechanism(
+                vectors=vectors,
+                origin=O2,
+                loops=loops,
+                pos=theta2,
+                vel=w,
+                acc=al,
+                guess=(guess, np.zeros(2), np.zeros(2)),
+            )
             return mech, out
 
         def run():
@@ -175,10 +211,17 @@ def _mechanism(NotApplicable):
                 if key == "d":
                     res.update(d=v.pos.rs, d_dot=v.vel.r_dots, d_ddot=v.acc.r_ddots)
                 else:
-                    res.update({f"theta{key}": np.angle(np.exp(1j * v.pos.thetas)),
-                                f"omega{key}": v.vel.omegas, f"alpha{key}": v.acc.alphas})
+                    res.update(
+                        {
+                            f"theta{key}": np.angle(np.exp(1j * v.pos.thetas)),
+                            f"omega{key}": v.vel.omegas,
+                            f"alpha{key}": v.acc.alphas,
+                        }
+                    )
             return {k: np.array(x, dtype=float) for k, x in res.items()}
+
         return run, extract
+
     return prepare
 
 
@@ -186,7 +229,9 @@ def _mechanism(NotApplicable):
 def _kimech(NotApplicable):
     def prepare(case, theta2):
         import kimech as km
+
         from .cases import MOTION
+
         if case.mechanism != "fourbar":
             raise NotApplicable("measured here on the fourbars only")
         p = case.params
@@ -211,17 +256,27 @@ def _kimech(NotApplicable):
             m.revolute(coupler["B"], rocker["B"])
             m.revolute(rocker["O"], g["O4"])
             A = p["a"] * complex(math.cos(theta2[0]), math.sin(theta2[0]))
-            guess = {crank: (0.0, 0.0, float(theta2[0])),
-                     coupler: (A.real, A.imag, case.kernel_guess(theta2[0])["R3"]),
-                     rocker: (p["d"], 0.0, case.kernel_guess(theta2[0])["R4"])}
+            guess = {
+                crank: (0.0, 0.0, float(theta2[0])),
+                coupler: (A.real, A.imag, case.kernel_guess(theta2[0])["R3"]),
+                rocker: (p["d"], 0.0, case.kernel_guess(theta2[0])["R4"]),
+            }
             driver = km.KinematicDriver(drive, position=theta2, velocity=w, acceleration=al)
             return km.solve(m, drivers=driver, initial_guess=guess)
 
         def extract(sol):
             q, v, a = sol.coordinates, sol.coordinate_velocities, sol.coordinate_accelerations
-            return {"theta3": np.angle(np.exp(1j * q[:, 5])), "omega3": v[:, 5], "alpha3": a[:, 5],
-                    "theta4": np.angle(np.exp(1j * q[:, 8])), "omega4": v[:, 8], "alpha4": a[:, 8]}
+            return {
+                "theta3": np.angle(np.exp(1j * q[:, 5])),
+                "omega3": v[:, 5],
+                "alpha3": a[:, 5],
+                "theta4": np.angle(np.exp(1j * q[:, 8])),
+                "omega4": v[:, 8],
+                "alpha4": a[:, 8],
+            }
+
         return run, extract
+
     return prepare
 
 
@@ -232,15 +287,40 @@ def peer_methods(Method, NotApplicable):
     if "pylinkage" in have:
         try:
             import numba  # noqa: F401
+
             jit = "numba"
         except ImportError:
             jit = "pure Python, no numba"
-        out.append(Method("pylinkage", f"pylinkage {have['pylinkage']} ({jit})", "peer-pylinkage",
-                          2, _pylinkage(NotApplicable), vectorised=False))
+        out.append(
+            Method(
+                "pylinkage",
+                f"pylinkage {have['pylinkage']} ({jit})",
+                "peer-pylinkage",
+                2,
+                _pylinkage(NotApplicable),
+                vectorised=False,
+            )
+        )
     if "mechanism" in have:
-        out.append(Method("mechanism", f"mechanism {have['mechanism']} (fsolve)",
-                          "peer-mechanism", 2, _mechanism(NotApplicable), vectorised=False))
+        out.append(
+            Method(
+                "mechanism",
+                f"mechanism {have['mechanism']} (fsolve)",
+                "peer-mechanism",
+                2,
+                _mechanism(NotApplicable),
+                vectorised=False,
+            )
+        )
     if "kimech" in have:
-        out.append(Method("kimech", f"kimech {have['kimech']} (scipy, body coordinates)",
-                          "peer-kimech", 2, _kimech(NotApplicable), vectorised=False))
+        out.append(
+            Method(
+                "kimech",
+                f"kimech {have['kimech']} (scipy, body coordinates)",
+                "peer-kimech",
+                2,
+                _kimech(NotApplicable),
+                vectorised=False,
+            )
+        )
     return out

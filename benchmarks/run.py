@@ -23,20 +23,44 @@ from .timing import machine, measure
 #: settings of each mode: positions per cycle, repeats, stability points,
 #: Newton offsets x trials, largest N of the scaling, positions of the loop count
 MODES = {
-    "full": dict(positions=360, repeats=7, toggle_points=43, newton_offsets=16,
-                 newton_trials=32, scaling_quick=False, loops_positions=360, peer_big=10 ** 5),
-    "quick": dict(positions=72, repeats=3, toggle_points=23, newton_offsets=10,
-                  newton_trials=12, scaling_quick=True, loops_positions=72, peer_big=10 ** 4),
-    "tiny": dict(positions=16, repeats=1, toggle_points=7, newton_offsets=3, newton_trials=3,
-                 scaling_quick=True, loops_positions=8, peer_big=None),
+    "full": dict(
+        positions=360,
+        repeats=7,
+        toggle_points=43,
+        newton_offsets=16,
+        newton_trials=32,
+        scaling_quick=False,
+        loops_positions=360,
+        peer_big=10**5,
+    ),
+    "quick": dict(
+        positions=72,
+        repeats=3,
+        toggle_points=23,
+        newton_offsets=10,
+        newton_trials=12,
+        scaling_quick=True,
+        loops_positions=72,
+        peer_big=10**4,
+    ),
+    "tiny": dict(
+        positions=16,
+        repeats=1,
+        toggle_points=7,
+        newton_offsets=3,
+        newton_trials=3,
+        scaling_quick=True,
+        loops_positions=8,
+        peer_big=None,
+    ),
 }
 
 GOALS = {
-    "kernel_speed": 0.2,       # [us/position] fourbar to jerk, unit-free, 10^5 positions
-    "units_ratio": 1.5,        # unit-aware / unit-free at 360 positions
-    "units_single": 100.0,     # [us] one unit-aware solve
-    "accuracy": 1e-13,         # worst relative error away from limit positions
-    "loops_speed": 50.0,       # [us/position] sixbar, general solver, to jerk
+    "kernel_speed": 0.2,  # [us/position] fourbar to jerk, unit-free, 10^5 positions
+    "units_ratio": 1.5,  # unit-aware / unit-free at 360 positions
+    "units_single": 100.0,  # [us] one unit-aware solve
+    "accuracy": 1e-13,  # worst relative error away from limit positions
+    "loops_speed": 50.0,  # [us/position] sixbar, general solver, to jerk
 }
 
 
@@ -67,8 +91,15 @@ def cycle_results(cases, method_list, n, repeats, ref_dir, log):
         ref = cached(case, theta2, ref_dir)
         scale = accuracy.scales(ref)
         for m in method_list:
-            row = {"case": case.name, "method": m.key, "label": m.label, "family": m.family,
-                   "order": m.order, "setting": m.setting, "positions": n}
+            row = {
+                "case": case.name,
+                "method": m.key,
+                "label": m.label,
+                "family": m.family,
+                "order": m.order,
+                "setting": m.setting,
+                "positions": n,
+            }
             try:
                 run, extract = m.prepare(case, theta2)
                 with np.errstate(all="ignore"):
@@ -85,11 +116,12 @@ def cycle_results(cases, method_list, n, repeats, ref_dir, log):
                 continue
             errs = accuracy.relative_errors(values, ref, scale)
             s = accuracy.summary(errs)
-            row.update(us_per_position=t["median"] / n * 1e6, time_s=t, outputs=sorted(errs),
-                       **s)
+            row.update(us_per_position=t["median"] / n * 1e6, time_s=t, outputs=sorted(errs), **s)
             rows.append(row)
-            log(f"  {case.name:27s} {m.key:14s} {row['us_per_position']:10.3f} us/pos   "
-                f"worst {_fmt(s['worst'])}  refused {s['flagged']}/{n}")
+            log(
+                f"  {case.name:27s} {m.key:14s} {row['us_per_position']:10.3f} us/pos   "
+                f"worst {_fmt(s['worst'])}  refused {s['flagged']}/{n}"
+            )
     return rows
 
 
@@ -112,6 +144,7 @@ def peer_comparison(n_values, repeats):
     """The fourbar on the peers' work (position to acceleration), ours and
     theirs, timed in turn within each repeat."""
     from .timing import measure_interleaved
+
     cases = all_cases()
     case = cases["fourbar-open"]
     table = {m.key: m for m in methods()}
@@ -126,8 +159,11 @@ def peer_comparison(n_values, repeats):
                 fns.append(run)
                 keys.append(key)
         res = measure_interleaved(fns, repeats=repeats, min_time=0.01)
-        row = {"N": n, "kernels_to_acceleration_us": res[0]["median"] / n * 1e6,
-               "kernels_to_jerk_us": res[1]["median"] / n * 1e6}
+        row = {
+            "N": n,
+            "kernels_to_acceleration_us": res[0]["median"] / n * 1e6,
+            "kernels_to_jerk_us": res[1]["median"] / n * 1e6,
+        }
         for key, r in zip(keys, res[2:]):
             row[f"{key}_us"] = r["median"] / n * 1e6
             row[f"{key}_over_ours"] = r["ratio"]  # their time / ours, median per repeat
@@ -141,16 +177,19 @@ def goals(data):
     out = []
 
     def add(goal, target, measured, met, note=""):
-        out.append({"goal": goal, "target": target, "measured": measured, "met": met,
-                    "note": note})
+        out.append({"goal": goal, "target": target, "measured": measured, "met": met, "note": note})
 
     pos = data["scaling"]["positions"].get("kernels", {}).get("points", [])
-    big = [p for p in pos if p["N"] == 10 ** 5]
+    big = [p for p in pos if p["N"] == 10**5]
     if big:
         us = big[0]["us"]
-        add("fourbar position to jerk, unit-free, 10^5 positions [us/position]",
-            f"<= {GOALS['kernel_speed']}", round(us, 4), us <= GOALS["kernel_speed"],
-            f"fastest repeat {big[0].get('us_min', us):.3g}")
+        add(
+            "fourbar position to jerk, unit-free, 10^5 positions [us/position]",
+            f"<= {GOALS['kernel_speed']}",
+            round(us, 4),
+            us <= GOALS["kernel_speed"],
+            f"fastest repeat {big[0].get('us_min', us):.3g}",
+        )
     peers = data.get("peer_comparison") or []
     if peers:
         verdicts = []
@@ -161,60 +200,92 @@ def goals(data):
                     ours = row["kernels_to_acceleration_us"]
                     ratio = row.get(f"{key}_over_ours") or row[f"{key}_us"] / ours
                     met &= ratio > 1
-                    verdicts.append(f"N={row['N']}: ours {ours:.3g} vs {key} "
-                                    f"{row[key + '_us']:.3g} us/pos ({ratio:.3g}x)")
+                    verdicts.append(
+                        f"N={row['N']}: ours {ours:.3g} vs {key} "
+                        f"{row[key + '_us']:.3g} us/pos ({ratio:.3g}x)"
+                    )
         for r in data["results"]:
             if r["case"] == "fourbar-open" and r["method"] == "kimech" and r.get("worst"):
-                ours = next(x for x in data["results"] if x["case"] == "fourbar-open"
-                            and x["method"] == "kernels")["us_per_position"]
+                ours = next(
+                    x
+                    for x in data["results"]
+                    if x["case"] == "fourbar-open" and x["method"] == "kernels"
+                )["us_per_position"]
                 met &= ours < r["us_per_position"]
-                verdicts.append(f"N={r['positions']} (cycle, ours to jerk): ours {ours:.3g} vs "
-                                f"kimech {r['us_per_position']:.3g} us/pos")
+                verdicts.append(
+                    f"N={r['positions']} (cycle, ours to jerk): ours {ours:.3g} vs "
+                    f"kimech {r['us_per_position']:.3g} us/pos"
+                )
         if verdicts:
-            add("fourbar faster than every peer on the same work (position to acceleration)",
-                "faster", "; ".join(verdicts), met)
+            add(
+                "fourbar faster than every peer on the same work (position to acceleration)",
+                "faster",
+                "; ".join(verdicts),
+                met,
+            )
     units = {r["N"]: r for r in data["units"]["rows"]}
     if 360 in units:
         u = units[360]
-        add("unit-aware / unit-free time, 360 positions", f"<= {GOALS['units_ratio']}",
-            round(u["ratio"], 3), u["ratio"] <= GOALS["units_ratio"],
+        add(
+            "unit-aware / unit-free time, 360 positions",
+            f"<= {GOALS['units_ratio']}",
+            round(u["ratio"], 3),
+            u["ratio"] <= GOALS["units_ratio"],
             f"{u['unit_aware_us']:.0f} against {u['unit_free_us']:.0f} us per call; fastest "
             f"repeats {u.get('unit_aware_min_us', 0):.0f} against "
-            f"{u.get('unit_free_min_us', 0):.0f} us")
+            f"{u.get('unit_free_min_us', 0):.0f} us",
+        )
     if 1 in units:
         us = units[1]["unit_aware_us"]
-        add("one unit-aware solve, position to jerk [us]", f"<= {GOALS['units_single']}",
-            round(us, 1), us <= GOALS["units_single"],
+        add(
+            "one unit-aware solve, position to jerk [us]",
+            f"<= {GOALS['units_single']}",
+            round(us, 1),
+            us <= GOALS["units_single"],
             f"fastest repeat {units[1].get('unit_aware_min_us', us):.0f} us; unit-free kernel "
             f"alone: {units[1]['unit_free_us']:.1f} us; with string inputs "
-            f"{data['units']['single_string_inputs_us']:.1f} us")
+            f"{data['units']['single_string_inputs_us']:.1f} us",
+        )
     closed = [r for r in res if r["method"] in ("kernels", "units")]
     if closed:
         worst = max(r["worst"] for r in closed if r["worst"] is not None)
         where = max((r for r in closed if r["worst"] is not None), key=lambda r: r["worst"])
         refused = sum(r["flagged"] for r in closed)
-        add("worst relative error away from limit positions, every output to jerk "
-            "(closed forms, all closed-form cases)", f"<= {GOALS['accuracy']:g}",
-            float(f"{worst:.3g}"), worst <= GOALS["accuracy"] and refused == 0,
+        add(
+            "worst relative error away from limit positions, every output to jerk "
+            "(closed forms, all closed-form cases)",
+            f"<= {GOALS['accuracy']:g}",
+            float(f"{worst:.3g}"),
+            worst <= GOALS["accuracy"] and refused == 0,
             f"worst in {where['case']}; cycles stop {math.degrees(CYCLE_MARGIN):g} deg from "
-            f"toggles; {refused} positions refused")
+            f"toggles; {refused} positions refused",
+        )
     six = [r for r in res if r["case"].startswith("sixbar") and r["method"] == "loops"]
     for r in six:
         loose = [x for x in res if x["case"] == r["case"] and x["method"].startswith("loops-")]
-        note = (f"{r['positions']} positions of a full turn, default tolerance, fastest repeat "
-                f"{r['time_s']['min'] / r['positions'] * 1e6:.1f} us")
+        note = (
+            f"{r['positions']} positions of a full turn, default tolerance, fastest repeat "
+            f"{r['time_s']['min'] / r['positions'] * 1e6:.1f} us"
+        )
         if loose:
             best = min(loose, key=lambda x: x["us_per_position"])
-            note += (f"; fastest setting {best['method']}: {best['us_per_position']:.1f} us, "
-                     f"worst error {_fmt(best['worst']).strip()}")
-        add(f"general solver, {r['case']}, position to jerk [us/position]",
-            f"<= {GOALS['loops_speed']}", round(r["us_per_position"], 1),
-            r["us_per_position"] <= GOALS["loops_speed"], note)
+            note += (
+                f"; fastest setting {best['method']}: {best['us_per_position']:.1f} us, "
+                f"worst error {_fmt(best['worst']).strip()}"
+            )
+        add(
+            f"general solver, {r['case']}, position to jerk [us/position]",
+            f"<= {GOALS['loops_speed']}",
+            round(r["us_per_position"], 1),
+            r["us_per_position"] <= GOALS["loops_speed"],
+            note,
+        )
     return out
 
 
-def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=print,
-                  formats=("png", "svg")):
+def run_benchmark(
+    out, mode="quick", figures=None, peers=True, charts=True, log=print, formats=("png", "svg")
+):
     """Run everything and write ``out/bench.json`` and the charts.
 
     Parameters
@@ -238,36 +309,66 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
     ref_dir = os.path.join(out, "reference")
     cases = all_cases()
     method_list = methods(include_peers=peers)
-    data = {"version": 1, "mode": mode,
-            "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
-            "machine": machine(),
-            "config": dict(cfg, reference_dps=DPS, cycle_margin_deg=math.degrees(CYCLE_MARGIN),
-                           loop_tolerance_parameter=loop_tolerance_parameter()),
-            "error_measure": accuracy.__doc__.strip(),
-            "cases": [], "methods": [m.describe() for m in method_list]}
+    data = {
+        "version": 1,
+        "mode": mode,
+        "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "machine": machine(),
+        "config": dict(
+            cfg,
+            reference_dps=DPS,
+            cycle_margin_deg=math.degrees(CYCLE_MARGIN),
+            loop_tolerance_parameter=loop_tolerance_parameter(),
+        ),
+        "error_measure": accuracy.__doc__.strip(),
+        "cases": [],
+        "methods": [m.describe() for m in method_list],
+    }
     for case in cases.values():
-        data["cases"].append({"name": case.name, "title": case.title,
-                              "mechanism": case.mechanism, "circuit": case.circuit,
-                              "positions": cfg["positions"], "span_rad": list(case.span),
-                              "full_turn": case.full_turn, "limits_rad": case.limits,
-                              "loops": len(case.loops), "outputs": list(case.outputs)})
-    data["peers"] = {"installed": installed() if peers else {},
-                     "notes": {"kimech": ["body coordinates solved with scipy, to acceleration; "
-                                          "measured on the fourbars"],
-                               "pylinkage": [SLIDER_NOTE, RANGE_NOTE],
-                               "mechanism": ["solves position, velocity and acceleration by "
-                                             "scipy.optimize.fsolve at every position; no jerk; "
-                                             "measured on the fourbars and the slider-crank"]}}
+        data["cases"].append(
+            {
+                "name": case.name,
+                "title": case.title,
+                "mechanism": case.mechanism,
+                "circuit": case.circuit,
+                "positions": cfg["positions"],
+                "span_rad": list(case.span),
+                "full_turn": case.full_turn,
+                "limits_rad": case.limits,
+                "loops": len(case.loops),
+                "outputs": list(case.outputs),
+            }
+        )
+    data["peers"] = {
+        "installed": installed() if peers else {},
+        "notes": {
+            "kimech": [
+                "body coordinates solved with scipy, to acceleration; measured on the fourbars"
+            ],
+            "pylinkage": [SLIDER_NOTE, RANGE_NOTE],
+            "mechanism": [
+                "solves position, velocity and acceleration by "
+                "scipy.optimize.fsolve at every position; no jerk; "
+                "measured on the fourbars and the slider-crank"
+            ],
+        },
+    }
     if loop_tolerance_parameter() is None:
-        data["peers"]["notes"]["loops"] = ("accelab.solver.VectorLoopLinkage.solve has no convergence "
-                                           "tolerance argument yet: measured at its default")
-    log(f"accelab bench ({mode}): {len(cases)} cases x {len(method_list)} methods, "
-        f"{cfg['positions']} positions per cycle")
-    data["results"] = cycle_results(cases, method_list, cfg["positions"], cfg["repeats"], ref_dir,
-                                    log)
+        data["peers"]["notes"]["loops"] = (
+            "accelab.solver.VectorLoopLinkage.solve has no convergence "
+            "tolerance argument yet: measured at its default"
+        )
+    log(
+        f"accelab bench ({mode}): {len(cases)} cases x {len(method_list)} methods, "
+        f"{cfg['positions']} positions per cycle"
+    )
+    data["results"] = cycle_results(
+        cases, method_list, cfg["positions"], cfg["repeats"], ref_dir, log
+    )
     log("stability near a toggle ...")
-    st_methods = ("kernels", "loops", "fd", "graphical") + (("mechanism", "kimech") if peers
-                                                            else ())
+    st_methods = ("kernels", "loops", "fd", "graphical") + (
+        ("mechanism", "kimech") if peers else ()
+    )
     st = stability.near_toggle(n=cfg["toggle_points"], methods=st_methods, cache_dir=ref_dir)
     st["title"] = cases[st["case"]].title
     st["thresholds"] = _thresholds(st)
@@ -278,12 +379,15 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
     log("scaling ...")
     quick = cfg["scaling_quick"]
     data["scaling"] = {
-        "positions": scaling.positions(repeats=max(cfg["repeats"], 3), quick=quick,
-                                       peers=peers, tiny=mode == "tiny"),
+        "positions": scaling.positions(
+            repeats=max(cfg["repeats"], 3), quick=quick, peers=peers, tiny=mode == "tiny"
+        ),
         "loops": scaling.loops(n=cfg["loops_positions"], repeats=max(cfg["repeats"], 2)),
-        "loops_positions": cfg["loops_positions"]}
-    data["units"] = scaling.units(sizes=(1, 360) if mode == "tiny" else (1, 360, 10 ** 5),
-                                  repeats=max(cfg["repeats"], 3))
+        "loops_positions": cfg["loops_positions"],
+    }
+    data["units"] = scaling.units(
+        sizes=(1, 360) if mode == "tiny" else (1, 360, 10**5), repeats=max(cfg["repeats"], 3)
+    )
     if peers and installed():
         sizes = [cfg["positions"]] + ([cfg["peer_big"]] if cfg["peer_big"] else [])
         data["peer_comparison"] = peer_comparison(sizes, repeats=max(cfg["repeats"], 3))
@@ -296,11 +400,14 @@ def run_benchmark(out, mode="quick", figures=None, peers=True, charts=True, log=
     log(f"wrote {path}")
     if charts:
         from .charts import draw_all
+
         for p in draw_all(data, figures or out, formats):
             log(f"wrote {p}")
     for g in data["goals"]:
-        log(f"  [{'met ' if g['met'] else 'MISS'}] {g['goal']}: {g['measured']} "
-            f"(goal {g['target']})")
+        log(
+            f"  [{'met ' if g['met'] else 'MISS'}] {g['goal']}: {g['measured']} "
+            f"(goal {g['target']})"
+        )
     log(f"done in {time.perf_counter() - t_start:.1f} s")
     return data
 
@@ -310,12 +417,14 @@ def _thresholds(st):
     measure crosses the solver's SINGULAR_CONDITION, on the distance axis."""
     from accelab.solver.kernels import common
     from accelab.solver.vectorloops import SINGULAR_CONDITION
+
     out = {}
     d = stability.threshold_distance(st, "kernels")
     if d:
         out["kernels"] = d
-        out["kernels_text"] = ("closed forms refuse below here\n(estimated round-off > "
-                               f"{common.MAX_ROUNDOFF:g})")
+        out["kernels_text"] = (
+            f"closed forms refuse below here\n(estimated round-off > {common.MAX_ROUNDOFF:g})"
+        )
     delta = np.asarray(st["delta"])
     cond = np.asarray(st["condition"], dtype=float)
     ok = np.isfinite(cond) & (cond > 0)
@@ -325,8 +434,7 @@ def _thresholds(st):
         if near.sum() >= 2:
             k = float(np.median(cond[near] / np.sqrt(delta[near])))
             out["condition"] = (SINGULAR_CONDITION / k) ** 2
-            out["condition_text"] = (f"condition = SINGULAR_CONDITION\n"
-                                     f"({SINGULAR_CONDITION:g})")
+            out["condition_text"] = f"condition = SINGULAR_CONDITION\n({SINGULAR_CONDITION:g})"
     errs = st["methods"].get("kernels", {}).get("errors", [])
     answered = [(x, e) for x, e in zip(delta, errs) if e is not None]
     if answered:

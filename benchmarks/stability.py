@@ -25,7 +25,7 @@ import numpy as np
 
 from . import accuracy
 from .cases import MOTION, all_cases
-from .reference import at_points, toggle_angle, cached
+from .reference import at_points, cached, toggle_angle
 
 STUDY_CASE = "fourbar-nongrashof-open"
 
@@ -35,8 +35,13 @@ def distances(n):
     return np.logspace(-15, math.log10(0.3), n)
 
 
-def near_toggle(n=29, methods=("kernels", "loops", "fd", "graphical", "mechanism"),
-                fd_step=1e-4, case_name=STUDY_CASE, cache_dir=None):
+def near_toggle(
+    n=29,
+    methods=("kernels", "loops", "fd", "graphical", "mechanism"),
+    fd_step=1e-4,
+    case_name=STUDY_CASE,
+    cache_dir=None,
+):
     """Error against distance to the toggle, per method.
 
     Parameters
@@ -60,6 +65,7 @@ def near_toggle(n=29, methods=("kernels", "loops", "fd", "graphical", "mechanism
         (worst relative error, NaN where refused) and ``refused`` (bool).
     """
     import mpmath as mp
+
     case = all_cases()[case_name]
     p = case.params
     lim = toggle_angle(p["a"], p["b"], p["c"], p["d"])
@@ -72,9 +78,14 @@ def near_toggle(n=29, methods=("kernels", "loops", "fd", "graphical", "mechanism
     ref = at_points(case, theta2, guesses)
     cyc = case.theta2(181)
     scale = accuracy.scales(cached(case, cyc, cache_dir))
-    out = {"case": case_name, "delta": delta.tolist(), "theta2": theta2.tolist(),
-           "toggle_theta2": float(lim), "condition": np.asarray(kern.condition).tolist(),
-           "methods": {}}
+    out = {
+        "case": case_name,
+        "delta": delta.tolist(),
+        "theta2": theta2.tolist(),
+        "toggle_theta2": float(lim),
+        "condition": np.asarray(kern.condition).tolist(),
+        "methods": {},
+    }
     if hasattr(kern, "roundoff"):
         out["roundoff"] = np.asarray(kern.roundoff, dtype=float).tolist()
     for key in methods:
@@ -83,26 +94,33 @@ def near_toggle(n=29, methods=("kernels", "loops", "fd", "graphical", "mechanism
             continue
         errs = accuracy.relative_errors(values, ref, scale)
         w = accuracy.worst(errs)
-        out["methods"][key] = {"errors": [None if np.isnan(x) else float(x) for x in w],
-                               "refused": np.isnan(w).tolist(),
-                               "label": _LABELS[key] + (f" (h = {fd_step:g} rad)"
-                                                        if key == "fd" else "")}
+        out["methods"][key] = {
+            "errors": [None if np.isnan(x) else float(x) for x in w],
+            "refused": np.isnan(w).tolist(),
+            "label": _LABELS[key] + (f" (h = {fd_step:g} rad)" if key == "fd" else ""),
+        }
     return out
 
 
-_LABELS = {"kernels": "closed forms (unit-free and unit-aware alike)",
-           "loops": "vector loops (sweep)", "fd": "finite differences",
-           "graphical": "graphical construction", "mechanism": "mechanism (peer, fsolve)",
-           "kimech": "kimech (peer)"}
+_LABELS = {
+    "kernels": "closed forms (unit-free and unit-aware alike)",
+    "loops": "vector loops (sweep)",
+    "fd": "finite differences",
+    "graphical": "graphical construction",
+    "mechanism": "mechanism (peer, fsolve)",
+    "kimech": "kimech (peer)",
+}
 
 
 def _values(key, case, theta2, h):
-    from .methods import methods, NotApplicable
+    from .methods import NotApplicable, methods
+
     table = {m.key: m for m in methods()}
     if key == "loops":
         m = next(m for k, m in table.items() if k.startswith("loops"))
     elif key == "fd":
         from .methods import Method, fd_with
+
         m = Method("fd", "fd", "fd", 3, fd_with(h))
     elif key in table:
         m = table[key]
@@ -158,14 +176,18 @@ def newton_guesses(offsets=None, trials=24, seed=7, points=None):
     from accelab.solver import VectorLoopLinkage
     from accelab.solver.errors import AccelabError
     from accelab.solver.units import Q_
+
     from .cases import description
+
     cases = all_cases()
     offsets = np.logspace(-3, math.log10(math.pi), 16) if offsets is None else offsets
     if points is None:
         nag = cases[STUDY_CASE]
         lim = float(toggle_angle(**{k: nag.params[k] for k in "abcd"}))
-        points = [("fourbar-open", math.radians(30.0), "Grashof fourbar,\ntheta2 = 30 deg"),
-                  (STUDY_CASE, lim + 1e-4, "non-Grashof fourbar,\n1e-4 rad from its toggle")]
+        points = [
+            ("fourbar-open", math.radians(30.0), "Grashof fourbar,\ntheta2 = 30 deg"),
+            (STUDY_CASE, lim + 1e-4, "non-Grashof fourbar,\n1e-4 rad from its toggle"),
+        ]
     rng = np.random.default_rng(seed)
     out = {"offsets": np.asarray(offsets).tolist(), "trials": trials, "points": []}
     for name, t2, text in points:
@@ -184,7 +206,8 @@ def newton_guesses(offsets=None, trials=24, seed=7, points=None):
                 guess = {u: true[u] + off * direction[k] for k, u in enumerate(unknown)}
                 try:
                     r = VectorLoopLinkage(**description(case, guess)).solve(
-                        theta2=Q_(t2, "rad"), omega2=Q_(MOTION["omega2"], "rad/s"), order=1)
+                        theta2=Q_(t2, "rad"), omega2=Q_(MOTION["omega2"], "rad/s"), order=1
+                    )
                     got = {u: r.vectors[u].angle.m_as("rad") for u in unknown}
                 except AccelabError:
                     c["failed"] += 1
@@ -218,6 +241,7 @@ def threshold_distance(study, key="kernels"):
         return None
     far_refused = d[refused].max()
     answered = d[~refused & (d < far_refused * 1e6)]
-    near_answered = answered[answered > far_refused].min() if (answered > far_refused).any() \
-        else far_refused
+    near_answered = (
+        answered[answered > far_refused].min() if (answered > far_refused).any() else far_refused
+    )
     return float(math.sqrt(far_refused * near_answered))

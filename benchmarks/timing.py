@@ -12,7 +12,6 @@ import statistics
 import sys
 import time
 
-
 #: a call slower than this [s] is repeated at most SLOW_REPEATS times
 SLOW_CALL = 0.5
 SLOW_REPEATS = 3
@@ -55,8 +54,14 @@ def measure(fn, repeats=7, min_time=0.02, max_number=10000):
         for _ in range(number):
             fn()
         times.append((time.perf_counter() - t0) / number)
-    return {"median": statistics.median(times), "min": min(times), "max": max(times),
-            "repeats": repeats, "number": number, "result": result}
+    return {
+        "median": statistics.median(times),
+        "min": min(times),
+        "max": max(times),
+        "repeats": repeats,
+        "number": number,
+        "result": result,
+    }
 
 
 def measure_interleaved(fns, repeats=9, min_time=0.02, max_number=10000):
@@ -86,24 +91,39 @@ def measure_interleaved(fns, repeats=9, min_time=0.02, max_number=10000):
     out = []
     for k in range(len(fns)):
         ratios = [a / b for a, b in zip(times[k], times[0])]
-        out.append({"median": statistics.median(times[k]), "min": min(times[k]),
-                    "max": max(times[k]), "repeats": repeats, "number": numbers[k],
-                    "ratio": statistics.median(ratios)})
+        out.append(
+            {
+                "median": statistics.median(times[k]),
+                "min": min(times[k]),
+                "max": max(times[k]),
+                "repeats": repeats,
+                "number": numbers[k],
+                "ratio": statistics.median(ratios),
+            }
+        )
     return out
 
 
 def machine():
     """What the numbers were measured on: CPU, cores, Python and package versions."""
+    import matplotlib
     import numpy
     import pint
-    import matplotlib
-    info = {"python": sys.version.split()[0], "implementation": platform.python_implementation(),
-            "platform": platform.platform(), "machine": platform.machine(),
-            "cpu": _cpu_name(), "cores": os.cpu_count(),
-            "numpy": numpy.__version__, "pint": pint.__version__,
-            "matplotlib": matplotlib.__version__}
+
+    info = {
+        "python": sys.version.split()[0],
+        "implementation": platform.python_implementation(),
+        "platform": platform.platform(),
+        "machine": platform.machine(),
+        "cpu": _cpu_name(),
+        "cores": os.cpu_count(),
+        "numpy": numpy.__version__,
+        "pint": pint.__version__,
+        "matplotlib": matplotlib.__version__,
+    }
     try:
         import mpmath
+
         info["mpmath"] = mpmath.__version__
     except ImportError:  # pragma: no cover
         pass
@@ -111,8 +131,11 @@ def machine():
         info[name] = _version(name)
     try:
         from threadpoolctl import threadpool_info
-        info["blas"] = [{k: p.get(k) for k in ("internal_api", "version", "num_threads",
-                                                  "architecture")} for p in threadpool_info()]
+
+        info["blas"] = [
+            {k: p.get(k) for k in ("internal_api", "version", "num_threads", "architecture")}
+            for p in threadpool_info()
+        ]
     except Exception:  # threadpoolctl is optional
         pass
     info["OPENBLAS_CORETYPE"] = os.environ.get("OPENBLAS_CORETYPE")
@@ -125,6 +148,7 @@ def machine():
 
 def _version(name):
     from importlib.metadata import PackageNotFoundError, version
+
     try:
         return version(name)
     except PackageNotFoundError:

@@ -36,8 +36,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.animation import animate
-from accelab.course.kit import (COLORS, cartesian, explore, in_g, point_label, polar, stated,
-                        use_style, vector)
+from accelab.course.kit import (
+    COLORS,
+    cartesian,
+    explore,
+    in_g,
+    point_label,
+    polar,
+    stated,
+    use_style,
+    vector,
+)
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, RotatingPoint
 from accelab.solver.graphical import construct_case
@@ -84,9 +93,10 @@ use_style()
 # only: the assertion makes sure it says what `accelab.solver` computes.
 
 # %%
-p, theta, omega, alpha = 4.0 * 0.0254, np.radians(30), -20.0, 150.0   # SI: m, rad, rad/s, rad/s^2
-by_hand = (p * alpha * (-np.sin(theta) + 1j * np.cos(theta))
-           - p * omega**2 * (np.cos(theta) + 1j * np.sin(theta)))          # eq. 7.3
+p, theta, omega, alpha = 4.0 * 0.0254, np.radians(30), -20.0, 150.0  # SI: m, rad, rad/s, rad/s^2
+by_hand = p * alpha * (-np.sin(theta) + 1j * np.cos(theta)) - p * omega**2 * (
+    np.cos(theta) + 1j * np.sin(theta)
+)  # eq. 7.3
 
 point = RotatingPoint(p="4 in")
 r = point.solve(theta2="30 deg", omega2="-20 rad/s", alpha2="150 rad/s^2")
@@ -96,7 +106,7 @@ print("A_t =", cartesian(r.A_t, "in/s^2"), "=", polar(r.A_t, "in/s^2"))
 print("A_n =", cartesian(r.A_n, "in/s^2"), "=", polar(r.A_n, "in/s^2"))
 print("A   =", cartesian(r.A, "in/s^2"), "=", polar(r.A, "in/s^2"))
 angle = {k: float(np.angle(getattr(r, k).to("in/s^2").magnitude, deg=True)) for k in ("A_t", "A_n")}
-stated(angle["A_n"], "-150"), stated(angle["A_t"], "120");
+stated(angle["A_n"], "-150"), stated(angle["A_t"], "120")
 
 # %% [markdown]
 # The normal part points at $-150^\circ$ (that is, $210^\circ$), exactly opposite the radius at $30^\circ$; the
@@ -104,18 +114,23 @@ stated(angle["A_n"], "-150"), stated(angle["A_t"], "120");
 # $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
 # vectors drawn at the point they belong to (the chapter's Figure 7-1):
 
+
 # %% mystnb={"figure": {"caption": "A point 4 in from its pivot (the chapter's Figure 7-1): tangential, normal and total acceleration drawn at the point, with scale bars in inches and in/s^2."}, "image": {"alt": "A link from O to P with three acceleration arrows at P: tangential, normal (beside the link) and the total."}}
 def rotating(p, theta2, omega2, alpha2):
     """The graphical construction of a point on a link turning about a fixed pivot
     (section 7.1), as the solver's drawings take it: inputs as quantity strings."""
-    return construct_case({"mechanism": "rotation", "p": p, "theta2": theta2,
-                           "omega2": omega2, "alpha2": alpha2})
+    return construct_case(
+        {"mechanism": "rotation", "p": p, "theta2": theta2, "omega2": omega2, "alpha2": alpha2}
+    )
 
 
 fig, ax = plt.subplots(figsize=(6.4, 4.6))
-draw_linkage(rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"), ax=ax,
-             names={"O2": "O"}, title="4 in link, $\\omega$ = -20 rad/s, "
-             "$\\alpha$ = 150 rad/s$^2$")
+draw_linkage(
+    rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"),
+    ax=ax,
+    names={"O2": "O"},
+    title="4 in link, $\\omega$ = -20 rad/s, $\\alpha$ = 150 rad/s$^2$",
+)
 plt.show()
 
 # %% [markdown]
@@ -170,8 +185,7 @@ print(f"omega_B = {omega_B:.4g~P},  theta_B = {theta_B:.5g~P}")
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 turned = theta_B - theta_A
 stated(turned.to("rad"), "0.975", "rad"), stated(turned, "55.86", "deg")
-stated(omega_A - omega_B, "5", "rad/s");
-
+stated(omega_A - omega_B, "5", "rad/s")
 # %% [markdown]
 # The point turned $0.975$ rad ($55.86^\circ$) in those 10 ms and slowed by 5 rad/s.
 #
@@ -195,12 +209,10 @@ for name, res in (("A", at_A), ("B", at_B)):
     print(f"   A_t = {polar(res.A_t, 'in/s^2')}   (|p alpha|)")
     print(f"   A_n = {polar(res.A_n, 'in/s^2')}   (p omega^2, toward the centre)")
     print(f"   A   = {cartesian(res.A, 'in/s^2')} = {polar(res.A, 'in/s^2')}")
-    print(f"       = {cartesian(res.A, 'm/s^2')} = {polar(res.A, 'm/s^2')}"
-          f"  ({in_g(res.A):.0f} g)")
+    print(f"       = {cartesian(res.A, 'm/s^2')} = {polar(res.A, 'm/s^2')}  ({in_g(res.A):.0f} g)")
 stated(np.angle(at_A.A_t.magnitude, deg=True), "-45")
 stated(abs(at_A.A_n), "65000", "in/s^2"), stated(abs(at_B.A_n), "58660", "in/s^2", sig=4)
-stated(abs(at_A.A), "1650", "m/s^2", sig=2), stated(in_g(at_A.A), "170", sig=2);
-
+stated(abs(at_A.A), "1650", "m/s^2", sig=2), stated(in_g(at_A.A), "170", sig=2)
 # %% [markdown]
 # Each tangential part points $90^\circ$ *clockwise* from its radius ($45^\circ - 90^\circ =
 # -45^\circ$ at $A$) because $\alpha < 0$, while the point itself still turns
@@ -227,25 +239,42 @@ assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2))
 ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
 ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
-scale = 6.5 / 80_000            # in of drawing per in/s^2
+scale = 6.5 / 80_000  # in of drawing per in/s^2
 for res, label in ((at_A, "A"), (at_B, "B")):
     z = complex(res.R.to("in").magnitude)
     ax1.plot([0, z.real], [0, z.imag], color="#4d4d4d", lw=3, solid_capstyle="round")
     ax1.scatter([z.real], [z.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
-    ax1.annotate(label, (z.real, z.imag), xytext=(10, 4), textcoords="offset points",
-                 fontsize=13, fontweight="bold")
+    ax1.annotate(
+        label,
+        (z.real, z.imag),
+        xytext=(10, 4),
+        textcoords="offset points",
+        fontsize=13,
+        fontweight="bold",
+    )
     vector(ax1, z, complex(res.A_t.to("in/s^2").magnitude), "tangential", None, scale)
-    vector(ax1, z, complex(res.A.to("in/s^2").magnitude), "resultant",
-           rf"$\mathbf{{A}}_{label}$", scale)
+    vector(
+        ax1,
+        z,
+        complex(res.A.to("in/s^2").magnitude),
+        "resultant",
+        rf"$\mathbf{{A}}_{label}$",
+        scale,
+    )
 arc = 6.5 * np.exp(1j * np.linspace(np.radians(45), theta_B.to("rad").magnitude, 40))
 ax1.plot(1.12 * arc.real, 1.12 * arc.imag, color="#888888", lw=1)
-ax1.annotate("0.01 s", (1.15 * arc[20].real, 1.15 * arc[20].imag), fontsize=10,
-             color="#555555", ha="left")
+ax1.annotate(
+    "0.01 s", (1.15 * arc[20].real, 1.15 * arc[20].imag), fontsize=10, color="#555555", ha="left"
+)
 ax1.scatter([0], [0], s=40, facecolor="white", edgecolor="k", zorder=5)
 ax1.annotate("O", (0, 0), xytext=(-14, -12), textcoords="offset points")
-handles = [plt.Line2D([], [], color=COLORS[k], lw=2, ls=ls, label=t)
-           for k, ls, t in (("tangential", "--", "tangential (small)"),
-                            ("resultant", "-", "total acceleration"))]
+handles = [
+    plt.Line2D([], [], color=COLORS[k], lw=2, ls=ls, label=t)
+    for k, ls, t in (
+        ("tangential", "--", "tangential (small)"),
+        ("resultant", "-", "total acceleration"),
+    )
+]
 ax1.legend(handles=handles, loc="lower left", fontsize=9)
 ax1.set_aspect("equal")
 ax1.set_xlabel("x [in]")
@@ -293,9 +322,9 @@ plt.show()
 # Case 1: one body
 A_A1 = Q_(12 + 0j, "m/s^2")
 link = RotatingPoint(p="0.3 m").solve(theta2="60 deg", omega2="8 rad/s", alpha2="-40 rad/s^2")
-A_PA1 = link.A                                   # acceleration difference, about A
-A_P1 = A_A1 + A_PA1                              # eq. 7.4
-R_PA1 = complex(link.R.to("m").magnitude)        # P as seen from A
+A_PA1 = link.A  # acceleration difference, about A
+A_P1 = A_A1 + A_PA1  # eq. 7.4
+R_PA1 = complex(link.R.to("m").magnitude)  # P as seen from A
 
 # Case 2: two bodies
 bend, v, v_dot = Q_(50, "m"), Q_(15, "m/s"), Q_(2, "m/s^2")
@@ -304,7 +333,7 @@ A_P2 = car_P.A
 A_A2 = Q_(-6 + 0j, "m/s^2")
 R_P2 = complex(car_P.R.to("m").magnitude)
 R_A2 = R_P2 + 20 * np.exp(1j * np.radians(-110))  # car A is 20 m away
-A_PA2 = A_P2 - A_A2                              # relative acceleration, eq. 7.5
+A_PA2 = A_P2 - A_A2  # relative acceleration, eq. 7.5
 
 
 def angle_to_line(a_vec, from_p_to_a):
@@ -315,12 +344,18 @@ def angle_to_line(a_vec, from_p_to_a):
 
 n1 = link.A_n
 print("Case 1: A_PA   =", polar(A_PA1, "m/s^2"))
-print("        A_PA^n =", polar(n1, "m/s^2"),
-      f" -> {abs(angle_to_line(n1, -R_PA1)):.3f} deg from the line P->A: exactly along it")
+print(
+    "        A_PA^n =",
+    polar(n1, "m/s^2"),
+    f" -> {abs(angle_to_line(n1, -R_PA1)):.3f} deg from the line P->A: exactly along it",
+)
 print("        A_P    =", polar(A_P1, "m/s^2"))
 print("Case 2: A_P    =", polar(A_P2, "m/s^2"), "  A_A =", polar(A_A2, "m/s^2"))
-print("        A_PA   =", polar(A_PA2, "m/s^2"),
-      f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special")
+print(
+    "        A_PA   =",
+    polar(A_PA2, "m/s^2"),
+    f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special",
+)
 
 # %% mystnb={"figure": {"caption": "Acceleration difference on one body (its normal part lies along PA) against relative acceleration of two bodies (no such rule)."}, "image": {"alt": "Two panels comparing a point pair on one rotating body with a point on each of two bodies, with their acceleration vectors."}}
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
@@ -333,10 +368,10 @@ ax1.scatter([0, P1.real], [0, P1.imag], s=40, facecolor="white", edgecolor="k", 
 point_label(ax1, "A", 0j)
 point_label(ax1, "P", P1)
 vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
-vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential",
-       r"$\mathbf{A}^t_{PA}$", s1)
-vector(ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1,
-       beside=5)                               # along the link: drawn beside it
+vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential", r"$\mathbf{A}^t_{PA}$", s1)
+vector(
+    ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1, beside=5
+)  # along the link: drawn beside it
 vector(ax1, P1, complex(A_P1.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s1)
 ax1.plot([P1.real, 0], [P1.imag, 0], ls=":", color="#888888")
 ax1.set_aspect("equal")
@@ -356,8 +391,7 @@ for z, name in ((R_P2, "P"), (R_A2, "A")):
 ax2.plot([R_P2.real, R_A2.real], [R_P2.imag, R_A2.imag], ls=":", color="#888888")
 vector(ax2, R_P2, complex(A_P2.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s2)
 vector(ax2, R_A2, complex(A_A2.magnitude), "known", r"$\mathbf{A}_A$", s2)
-vector(ax2, R_P2, complex(A_PA2.to("m/s^2").magnitude), "tangential",
-       r"$\mathbf{A}_{PA}$", s2)
+vector(ax2, R_P2, complex(A_PA2.to("m/s^2").magnitude), "tangential", r"$\mathbf{A}_{PA}$", s2)
 ax2.set_aspect("equal")
 ax2.set_xlabel("x [m]")
 ax2.set_ylabel("y [m]")
@@ -367,8 +401,7 @@ ax2.set_title("Case 2: two bodies. $\\mathbf{A}_{PA}$ has no such rule")
 plt.show()
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0");
-
+stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0")
 # %% [markdown]
 # In Case 1 the normal part of $\mathbf{A}_{PA}$ lies exactly on the line from $P$ to $A$
 # ($0^\circ$) and has the size $|PA|\,\omega^2 = 0.3 \times 8^2 = 19.2$ m/s$^2$: we could
@@ -385,20 +418,27 @@ stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0");
 # sign of $\omega$ changes nothing at all.
 
 # %% mystnb={"figure": {"caption": "The rotating point at four values of alpha (omega = 20 rad/s), all in one frame at one arrow scale: only the tangential part changes."}, "image": {"alt": "Four drawings of the same link with its acceleration components for alpha from -1500 to 1500 rad/s^2."}}
-BOX = (-3.0, 10.5, -3.5, 10.5)     # one frame [in] ...
-SCALE = 6.5 / 12_000               # ... and one arrow scale [in per in/s^2] for every panel
+BOX = (-3.0, 10.5, -3.5, 10.5)  # one frame [in] ...
+SCALE = 6.5 / 12_000  # ... and one arrow scale [in per in/s^2] for every panel
 
 
 def draw(alpha2, omega2):
     con = rotating("6.5 in", "45 deg", f"{omega2} rad/s", f"{alpha2} rad/s^2")
-    A = abs(con.values["A"]) / 0.0254                       # in/s^2
+    A = abs(con.values["A"]) / 0.0254  # in/s^2
     phi = np.degrees(np.arctan2(alpha2, omega2**2))
     fig, ax = plt.subplots(figsize=(4.2, 4.4))
     ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
     ax.plot(ring.real, ring.imag, color="#dddddd", lw=1)
-    draw_linkage(con, ax=ax, scale=SCALE, box=BOX, names={"O2": "O"}, legend=False,
-                 title=f"$\\omega$ = {omega2:g} rad/s: |A| = {A:,.0f} in/s$^2$, "
-                       f"$\\varphi$ = {phi:.0f}$^\\circ$")
+    draw_linkage(
+        con,
+        ax=ax,
+        scale=SCALE,
+        box=BOX,
+        names={"O2": "O"},
+        legend=False,
+        title=f"$\\omega$ = {omega2:g} rad/s: |A| = {A:,.0f} in/s$^2$, "
+        f"$\\varphi$ = {phi:.0f}$^\\circ$",
+    )
     ax.title.set_fontsize(10)
     return fig
 
@@ -408,7 +448,7 @@ explore(draw, alpha2=(-1500, 1500, 50, -500, "rad/s^2"), omega2=(-40, 40, 1, 20,
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 stated(6.5 * 20**2, "2600")
 stated((100 / 20) ** 2, "25")
-assert abs(np.degrees(np.arctan2(500, 100**2))) < 3      # "only a few degrees"
+assert abs(np.degrees(np.arctan2(500, 100**2))) < 3  # "only a few degrees"
 
 # %% [markdown]
 # At $\omega = 20$ rad/s the normal part is $6.5 \times 400 = 2600$ in/s$^2$ whatever
@@ -425,16 +465,26 @@ assert abs(np.degrees(np.arctan2(500, 100**2))) < 3      # "only a few degrees"
 # dominates, and the total acceleration swings round toward the pivot. The arrows are drawn at
 # one scale; the marker runs along the curves of $\omega$ and of the sizes of the three vectors.
 
+
 # %% mystnb={"figure": {"caption": "Animation: a point 6.5 in from its pivot speeding up from 2 rad/s at 10 rad/s^2 through one turn, with omega and the sizes of its acceleration components."}, "image": {"alt": "Animated drawing of a turning link with growing acceleration arrows, beside plots of omega and of the acceleration sizes with a moving marker."}}
 def speeding_up(theta2_deg, omega0=2.0, alpha=10.0):
     """omega at the angle theta2 [deg] for a start at omega0 [rad/s], constant alpha."""
     return {"omega2": f"{np.sqrt(omega0**2 + 2 * alpha * np.radians(theta2_deg)):.6f} rad/s"}
 
 
-animate({"mechanism": "rotation", "p": "6.5 in", "theta2": "0 deg", "omega2": "2 rad/s",
-         "alpha2": "10 rad/s^2"}, motion=speeding_up,
-        kinds=("tangential", "normal", "resultant"), title="6.5 in link speeding up",
-        names={"O2": "O"})
+animate(
+    {
+        "mechanism": "rotation",
+        "p": "6.5 in",
+        "theta2": "0 deg",
+        "omega2": "2 rad/s",
+        "alpha2": "10 rad/s^2",
+    },
+    motion=speeding_up,
+    kinds=("tangential", "normal", "resultant"),
+    title="6.5 in link speeding up",
+    names={"O2": "O"},
+)
 
 # %% [markdown]
 # ## Check yourself
@@ -492,8 +542,7 @@ assert np.isclose(a2, 6 - 5j)
 stated(abs(a2), "7.81"), stated(np.angle(a2, deg=True), "-39.8")
 stated(0.1 * 10**2, "10")
 stated(100 * (1 - (abs(at_B.A_n) / abs(at_A.A_n)).magnitude), "10", sig=1)
-stated(abs(at_A.A_t), "3250", "in/s^2"), stated(abs(at_B.A_t), "3250", "in/s^2");
-
+stated(abs(at_A.A_t), "3250", "in/s^2"), stated(abs(at_B.A_t), "3250", "in/s^2")
 # %% [markdown]
 # ## Further problems
 #
@@ -554,8 +603,7 @@ stated(abs(BA.A_n), "4.32", "m/s^2"), stated(np.angle(BA.A_n.magnitude, deg=True
 stated(A_BA.real, "0.438"), stated(A_BA.imag, "-5.241")
 A_B = 2 - 4j + A_BA
 stated(A_B.real, "2.438"), stated(A_B.imag, "-9.241"), stated(abs(A_B), "9.557")
-stated(np.angle(A_B, deg=True), "-75.22");
-
+stated(np.angle(A_B, deg=True), "-75.22")
 # %% [markdown]
 # ## Practice
 #
@@ -602,9 +650,9 @@ p = practice("rotation", seed=2)
 g = p.given
 point = RotatingPoint(p=g["p"])
 at_A = point.solve(theta2=g["theta_A"], omega2=g["omega"], alpha2=g["alpha"])
-assert p.check("A_A_x", at_A.A.real.to("in/s^2"))      # right
-assert not p.check("A_A_x", -at_A.A.real.to("in/s^2")) # a sign error
-assert not p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s")) # a velocity unit
+assert p.check("A_A_x", at_A.A.real.to("in/s^2"))  # right
+assert not p.check("A_A_x", -at_A.A.real.to("in/s^2"))  # a sign error
+assert not p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s"))  # a velocity unit
 
 # %% [markdown]
 # ## Common mistakes

@@ -41,7 +41,7 @@ import matplotlib.pyplot as plt
 
 from accelab.course.kit import cartesian, explore, polar, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, Q_, NotAssemblable, Singular
+from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct, construct_case
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon
 from accelab.solver.graphical.gallery import EXAMPLE_7_1
@@ -105,8 +105,11 @@ EXAMPLE_7_1
 # %%
 con = construct_case(EXAMPLE_7_1)
 for s in con.steps:
-    print(textwrap.fill(s.text, 92, initial_indent=f"{s.label:>3}  {s.phase:<13}",
-                        subsequent_indent=" " * 18))
+    print(
+        textwrap.fill(
+            s.text, 92, initial_indent=f"{s.label:>3}  {s.phase:<13}", subsequent_indent=" " * 18
+        )
+    )
 
 
 def show(step, diagram=None, figsize=(11, 5.2)):
@@ -142,15 +145,20 @@ print(f"omega3 = {v['omega3']:.4f} rad/s, omega4 = {v['omega4']:.4f} rad/s (both
 
 # %% mystnb={"figure": {"caption": "Example 7-1, first steps of the acceleration polygon: the crank pin's tangential and normal accelerations."}, "image": {"alt": "Linkage and the start of the acceleration polygon with the two components of A_A."}}
 a_in = Q_(2, "in")
-print("A_A^n:", polar(Q_(v["A_A_n"], "m/s^2"), "in/s^2"),
-      f"  (a omega2^2 = {(a_in * Q_(10, 'rad/s')**2).to('in/s^2'):.4g~P})")
-print("A_A^t:", polar(Q_(v["A_A_t"], "m/s^2"), "in/s^2"),
-      f"  (a |alpha2| = {(a_in * Q_(5, 'rad/s^2')).to('in/s^2'):.4g~P})")
+print(
+    "A_A^n:",
+    polar(Q_(v["A_A_n"], "m/s^2"), "in/s^2"),
+    f"  (a omega2^2 = {(a_in * Q_(10, 'rad/s') ** 2).to('in/s^2'):.4g~P})",
+)
+print(
+    "A_A^t:",
+    polar(Q_(v["A_A_t"], "m/s^2"), "in/s^2"),
+    f"  (a |alpha2| = {(a_in * Q_(5, 'rad/s^2')).to('in/s^2'):.4g~P})",
+)
 show("2")
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(abs(v["A_A_n"]) / abs(v["A_A_t"]), "20");
-
+stated(abs(v["A_A_n"]) / abs(v["A_A_t"]), "20")
 # %% [markdown]
 # The tangential part is a twentieth of the normal one ($\alpha_2$ is small next to
 # $\omega_2^2$), too short to see at the scale of the drawing, so the drawing shows it again
@@ -192,8 +200,12 @@ show("6", "acceleration", figsize=(12, 6))
 # %%
 print(f"A_B^t  = {abs(v['A_B_t']):.4f} m/s^2  -> alpha4 = A_B^t / c  = {v['alpha4']:+.4f} rad/s^2")
 print(f"A_BA^t = {abs(v['A_BA_t']):.4f} m/s^2  -> alpha3 = A_BA^t / b = {v['alpha3']:+.4f} rad/s^2")
-print("A_A =", cartesian(Q_(v["A_A"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_A"], "m/s^2"), "in/s^2"))
-print("A_B =", cartesian(Q_(v["A_B"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_B"], "m/s^2"), "in/s^2"))
+print(
+    "A_A =", cartesian(Q_(v["A_A"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_A"], "m/s^2"), "in/s^2")
+)
+print(
+    "A_B =", cartesian(Q_(v["A_B"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_B"], "m/s^2"), "in/s^2")
+)
 c_len = 9 * 0.0254
 assert math.isclose(v["alpha4"], abs(v["A_B_t"]) / c_len, rel_tol=1e-12)  # CCW: positive
 assert v["alpha3"] > 0 and v["alpha4"] > 0 and EXAMPLE_7_1["alpha2"].startswith("-")
@@ -210,7 +222,9 @@ assert v["alpha3"] > 0 and v["alpha4"] > 0 and EXAMPLE_7_1["alpha2"].startswith(
 
 # %% mystnb={"figure": {"caption": "Example 7-1, the acceleration of coupler point P found from A_A and the acceleration difference A_PA."}, "image": {"alt": "Acceleration polygon extended to the coupler point P."}}
 show("8", "point")
-print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"], "m/s^2"), "in/s^2"))
+print(
+    "A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"], "m/s^2"), "in/s^2")
+)
 
 # %% [markdown]
 # Notebook 3 solves the same linkage from the differentiated vector loop, and the two
@@ -226,7 +240,7 @@ print("A_P =", cartesian(Q_(v["A_P"], "m/s^2"), "in/s^2"), "=", polar(Q_(v["A_P"
 # all.
 
 # %%
-a, b, c, d = (x * 0.0254 for x in (5, 5, 5, 7))          # SI, as accelab.solver.graphical takes them
+a, b, c, d = (x * 0.0254 for x in (5, 5, 5, 7))  # SI, as accelab.solver.graphical takes them
 toggle = math.acos((a * a + d * d - (b + c) ** 2) / (2 * a * d))
 print(f"toggle at theta2 = {math.degrees(toggle):.4f} deg")
 for t2 in (toggle - 0.05, toggle, toggle + 0.05):
@@ -251,16 +265,23 @@ for t2 in (toggle - 0.05, toggle, toggle + 0.05):
 # in one frame, at one scale (in a live notebook the frame grows with $\omega_2^2$ when you
 # move $\omega_2$, so that the polygon keeps its size on the screen).
 
+
 # %% mystnb={"figure": {"caption": "The graphical construction at several crank angles, all at the same scale: the polygon changes shape over the cycle."}, "image": {"alt": "Small multiples of the fourbar's acceleration polygon at several crank angles."}}
 def draw(theta2, omega2):
     case = dict(EXAMPLE_7_1, theta2=f"{theta2} deg", omega2=f"{omega2} rad/s")
     case.pop("p"), case.pop("delta3")
     g = construct_case(case)
-    reach = 380 * (omega2 / 10) ** 2          # in/s^2: the frame grows as omega2^2
+    reach = 380 * (omega2 / 10) ** 2  # in/s^2: the frame grows as omega2^2
     fig, ax = plt.subplots(figsize=(4.4, 4.6))
-    draw_polygon(g, "acceleration", ax=ax, box=(-reach, reach, -reach, reach), inset=False,
-                 title=f"$\\alpha_3$ = {g.values['alpha3']:.3g}, $\\alpha_4$ = "
-                       f"{g.values['alpha4']:.3g} rad/s$^2$")
+    draw_polygon(
+        g,
+        "acceleration",
+        ax=ax,
+        box=(-reach, reach, -reach, reach),
+        inset=False,
+        title=f"$\\alpha_3$ = {g.values['alpha3']:.3g}, $\\alpha_4$ = "
+        f"{g.values['alpha4']:.3g} rad/s$^2$",
+    )
     ax.title.set_fontsize(10)
     return fig
 
@@ -322,7 +343,7 @@ explore(draw, theta2=(0, 360, 5, 30, "deg"), omega2=(1, 20, 1, 10, "rad/s"))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 stated(v["alpha3"], "8.77")
-assert 60 < math.degrees(v["theta3"]) < 120 and v["A_BA_t"].real < 0   # B above A, leftward
+assert 60 < math.degrees(v["theta3"]) < 120 and v["A_BA_t"].real < 0  # B above A, leftward
 
 # %% [markdown]
 # ## Further problems
@@ -361,16 +382,19 @@ g120 = construct_case(dict(EXAMPLE_7_1, theta2="120 deg")).values
 stated(g120["omega3"], "-0.475"), stated(g120["omega4"], "2.058")
 stated(abs(g120["A_A_n"]) / 0.0254, "200"), stated(abs(g120["A_A_n"] / g120["A_A_t"]), "20")
 stated(g120["alpha3"], "30.50"), stated(g120["alpha4"], "11.25")
-stated(abs(g120["A_B"]) / 0.0254, "108.2"), stated(math.degrees(math.atan2(g120["A_B"].imag, g120["A_B"].real)), "-122.1")
+(
+    stated(abs(g120["A_B"]) / 0.0254, "108.2"),
+    stated(math.degrees(math.atan2(g120["A_B"].imag, g120["A_B"].real)), "-122.1"),
+)
 crossed = construct_case(dict(EXAMPLE_7_1, circuit="crossed")).values
 assert crossed["A_A"] == v["A_A"] and crossed["A_B"] != v["A_B"]
 stated(crossed["alpha3"], "70.3"), stated(crossed["alpha4"], "39.61")
 stated(v["alpha3"], "8.77"), stated(v["alpha4"], "39.43")
 # the analytic solver agrees (notebook 3 derives it)
-r120 = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="120 deg", omega2="10 rad/s",
-                                                             alpha2="-5 rad/s^2")
-assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9);
-
+r120 = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
+    theta2="120 deg", omega2="10 rad/s", alpha2="-5 rad/s^2"
+)
+assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 # %% [markdown]
 # ## Practice
 #
@@ -413,9 +437,9 @@ p.answers()
 p = practice("fourbar", seed=3)
 g = dict(p.problem.given, mechanism="fourbar")
 drawn = construct_case(g).values
-assert p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2")) # right
-assert not p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2")) # the sense read the wrong way
-assert not p.check("alpha4", Q_(drawn["alpha4"], "rad/s")) # not an angular acceleration
+assert p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2"))  # right
+assert not p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2"))  # the sense read the wrong way
+assert not p.check("alpha4", Q_(drawn["alpha4"], "rad/s"))  # not an angular acceleration
 
 # %% [markdown]
 # ## Common mistakes

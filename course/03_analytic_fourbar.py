@@ -40,7 +40,7 @@ import numpy as np
 from accelab.course.animation import animate
 from accelab.course.kit import CIRCUIT_COLORS, cartesian, explore, polar, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, NotAssemblable, Q_, Singular
+from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage
 from accelab.solver.graphical.gallery import EXAMPLE_7_1
@@ -94,16 +94,24 @@ use_style()
 fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
 r = fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
 
-a, b, c = 2.0, 6.0, 9.0                      # in
+a, b, c = 2.0, 6.0, 9.0  # in
 t2, w2, al2 = math.radians(30), 10.0, -5.0
 t3, t4 = r.theta3.to("rad").magnitude, r.theta4.to("rad").magnitude
 w3, w4 = r.omega3.to("rad/s").magnitude, r.omega4.to("rad/s").magnitude
 A, B, D, E = c * math.sin(t4), b * math.sin(t3), c * math.cos(t4), b * math.cos(t3)
-C = (a * al2 * math.sin(t2) + a * w2**2 * math.cos(t2) + b * w3**2 * math.cos(t3)
-     - c * w4**2 * math.cos(t4))
-F = (a * al2 * math.cos(t2) - a * w2**2 * math.sin(t2) - b * w3**2 * math.sin(t3)
-     + c * w4**2 * math.sin(t4))
-alpha3 = (C * D - A * F) / (A * E - B * D)      # eq. 7.12
+C = (
+    a * al2 * math.sin(t2)
+    + a * w2**2 * math.cos(t2)
+    + b * w3**2 * math.cos(t3)
+    - c * w4**2 * math.cos(t4)
+)
+F = (
+    a * al2 * math.cos(t2)
+    - a * w2**2 * math.sin(t2)
+    - b * w3**2 * math.sin(t3)
+    + c * w4**2 * math.sin(t4)
+)
+alpha3 = (C * D - A * F) / (A * E - B * D)  # eq. 7.12
 alpha4 = (C * E - B * F) / (A * E - B * D)
 assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
 assert math.isclose(alpha4, r.alpha4.to("rad/s^2").magnitude, rel_tol=1e-12)
@@ -123,8 +131,10 @@ print(f"omega3 = {r.omega3:.4f~P}, omega4 = {r.omega4:.4f~P}")
 print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
 for name in ("A_A", "A_BA_t", "A_BA_n", "A_BA", "A_B"):
     q = getattr(r, name)
-    print(f"{name:7s}= {cartesian(q, 'in/s^2'):>24s} = {polar(q, 'in/s^2'):>26s}"
-          f"  = {polar(q, 'm/s^2')}")
+    print(
+        f"{name:7s}= {cartesian(q, 'in/s^2'):>24s} = {polar(q, 'in/s^2'):>26s}"
+        f"  = {polar(q, 'm/s^2')}"
+    )
 
 # %% [markdown]
 # Check them against the graphical construction, which never calls the analytic solver:
@@ -132,8 +142,13 @@ for name in ("A_A", "A_BA_t", "A_BA_n", "A_BA", "A_B"):
 # %%
 graphical = construct_case(EXAMPLE_7_1).values
 print(f"{'':8s}{'analytic':>16s}{'graphical':>16s}{'relative difference':>22s}")
-for name, unit in (("alpha3", "rad/s^2"), ("alpha4", "rad/s^2"), ("A_A", "m/s^2"),
-                   ("A_B", "m/s^2"), ("A_BA", "m/s^2")):
+for name, unit in (
+    ("alpha3", "rad/s^2"),
+    ("alpha4", "rad/s^2"),
+    ("A_A", "m/s^2"),
+    ("A_B", "m/s^2"),
+    ("A_BA", "m/s^2"),
+):
     exact = complex(getattr(r, name).to(unit).magnitude)
     drawn = complex(graphical[name])
     rel = abs(exact - drawn) / abs(exact)
@@ -161,9 +176,12 @@ plt.show()
 
 # %% mystnb={"figure": {"caption": "The Example 7-1 linkage over a whole crank cycle: angular accelerations of links 3 and 4 for both circuits."}, "image": {"alt": "Line plots of alpha3 and alpha4 against crank angle from 0 to 360 degrees, open and crossed circuits."}}
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
-cycle = {circuit: fb.solve(theta2=theta2, omega2="10 rad/s", alpha2="-5 rad/s^2",
-                           circuit=circuit, order=2)
-         for circuit in ("open", "crossed")}
+cycle = {
+    circuit: fb.solve(
+        theta2=theta2, omega2="10 rad/s", alpha2="-5 rad/s^2", circuit=circuit, order=2
+    )
+    for circuit in ("open", "crossed")
+}
 deg = theta2.magnitude
 
 fig, axes = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
@@ -172,8 +190,13 @@ for circuit, res in cycle.items():
     axes[0].plot(deg, res.alpha3.to("rad/s^2").magnitude, color=col, label=circuit)
     axes[1].plot(deg, res.alpha4.to("rad/s^2").magnitude, color=col, label=circuit)
     axes[2].plot(deg, abs(res.A_B).to("in/s^2").magnitude, color=col, label=circuit)
-axes[2].plot(deg, abs(cycle["open"].A_A).to("in/s^2").magnitude, color="#777777", ls="--",
-             label="$|\\mathbf{A}_A|$ (both)")
+axes[2].plot(
+    deg,
+    abs(cycle["open"].A_A).to("in/s^2").magnitude,
+    color="#777777",
+    ls="--",
+    label="$|\\mathbf{A}_A|$ (both)",
+)
 axes[0].set_ylabel("$\\alpha_3$ [rad/s$^2$]")
 axes[1].set_ylabel("$\\alpha_4$ [rad/s$^2$]")
 axes[2].set_ylabel("$|\\mathbf{A}_B|$ [in/s$^2$]")
@@ -188,14 +211,16 @@ plt.show()
 for circuit, res in cycle.items():
     a4 = res.alpha4.to("rad/s^2").magnitude
     ab = abs(res.A_B).to("in/s^2").magnitude
-    print(f"{circuit:8s} alpha4 from {a4.min():7.2f} to {a4.max():6.2f} rad/s^2;"
-          f" |A_B| peaks at {ab.max():5.1f} in/s^2 ({ab.max() * 0.0254:.2f} m/s^2)"
-          f" at theta2 = {deg[ab.argmax()]:.1f} deg")
+    print(
+        f"{circuit:8s} alpha4 from {a4.min():7.2f} to {a4.max():6.2f} rad/s^2;"
+        f" |A_B| peaks at {ab.max():5.1f} in/s^2 ({ab.max() * 0.0254:.2f} m/s^2)"
+        f" at theta2 = {deg[ab.argmax()]:.1f} deg"
+    )
 A_A = abs(cycle["open"].A_A).to("in/s^2").magnitude
-assert np.ptp(A_A) < 1e-9 * A_A[0]                                  # constant size
+assert np.ptp(A_A) < 1e-9 * A_A[0]  # constant size
 stated(A_A[0], "200", sig=2)
 ab = abs(cycle["open"].A_B).to("in/s^2").magnitude
-assert ab.max() > 2 * A_A[0] and ab.min() < 0.3 * A_A[0]            # "more than doubles ..."
+assert ab.max() > 2 * A_A[0] and ab.min() < 0.3 * A_A[0]  # "more than doubles ..."
 
 # %% [markdown]
 # What to notice:
@@ -227,10 +252,11 @@ animate(EXAMPLE_7_1, title="Example 7-1 linkage")
 
 # %% [markdown]
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-at30 = {c: fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit=c)
-        for c in ("open", "crossed")}
-stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "70.3", "rad/s^2");
-
+at30 = {
+    c: fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit=c)
+    for c in ("open", "crossed")
+}
+stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "70.3", "rad/s^2")
 # %% [markdown]
 # So for a *given crank angle* the two assemblies can have very different accelerations
 # (at $30^\circ$: $\alpha_3 = 8.77$ versus $70.3$ rad/s$^2$), and a design must say which circuit
@@ -250,8 +276,10 @@ stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "
 rocker = FourBar(a="5 in", b="5 in", c="5 in", d="7 in")
 swing = Q_(np.linspace(-180, 180, 721), "deg")
 sweep = rocker.solve(theta2=swing, omega2="10 rad/s", order=2)
-print(f"valid at {sweep.valid.sum()} of {sweep.valid.size} angles; the others are",
-      " or ".join(sorted(set(sweep.status[~sweep.valid]))))
+print(
+    f"valid at {sweep.valid.sum()} of {sweep.valid.size} angles; the others are",
+    " or ".join(sorted(set(sweep.status[~sweep.valid]))),
+)
 limit = math.degrees(math.acos((5**2 + 7**2 - (5 + 5) ** 2) / (2 * 5 * 7)))
 for angle in (limit, 150.0):
     try:
@@ -262,7 +290,7 @@ for angle in (limit, 150.0):
 # %% mystnb={"figure": {"caption": "A non-Grashof fourbar (5, 5, 5, 7 in): alpha4 runs away near the toggles, and beyond them the linkage cannot be assembled."}, "image": {"alt": "Plot of alpha4 against crank angle on a symmetric log scale, with the unreachable angles shaded and the toggles marked."}}
 mu = rocker.solve(theta2="0 deg", omega2="10 rad/s")
 mu = math.degrees(abs(math.remainder(mu.theta4.m_as("rad") - mu.theta3.m_as("rad"), math.pi)))
-stated(mu, "23")                    # the transmission angle at theta2 = 0, quoted below
+stated(mu, "23")  # the transmission angle at theta2 = 0, quoted below
 fig, ax = plt.subplots(figsize=(9, 3.8))
 a4 = sweep.alpha4.to("rad/s^2").magnitude
 ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
@@ -297,6 +325,7 @@ plt.show()
 # while $a + c \le b + d$, that is $c \le 11$ in; at $c = 11$ it can fold flat (a change point)
 # and beyond that the crank can no longer turn round.
 
+
 # %% mystnb={"figure": {"caption": "The fourbar for several rocker lengths c: Grashof or not, and how far the crank can turn."}, "image": {"alt": "Small multiples of fourbar linkages with different rocker lengths, labelled Grashof or non-Grashof."}}
 def draw(c, omega2):
     link = FourBar(a="2 in", b="6 in", c=Q_(c, "in"), d="7 in")
@@ -316,21 +345,24 @@ def draw(c, omega2):
     return fig
 
 
-explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"),
-        values=[5, 9, 10.8, 11.5])
+explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"), values=[5, 9, 10.8, 11.5])
+
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 def rocker_cycle(c):
     res = FourBar(a="2 in", b="6 in", c=f"{c} in", d="7 in").solve(
-        theta2=theta2, omega2="10 rad/s", order=2)
-    return (np.degrees(np.ptp(np.unwrap(res.theta4.m_as("rad")))),
-            np.nanmax(np.abs(res.alpha4.m_as("rad/s^2"))))
+        theta2=theta2, omega2="10 rad/s", order=2
+    )
+    return (
+        np.degrees(np.ptp(np.unwrap(res.theta4.m_as("rad")))),
+        np.nanmax(np.abs(res.alpha4.m_as("rad/s^2"))),
+    )
 
 
 swing, peak = zip(*(rocker_cycle(c) for c in (5, 9, 10.8, 10.95)))
 stated(swing[0], "48"), stated(swing[1], "33"), stated(peak[0], "66"), stated(peak[1], "49")
 stated(peak[2], "140"), stated(peak[3], "289")
-assert 2 + 11 == 6 + 7                                     # the change point at c = 11 in
+assert 2 + 11 == 6 + 7  # the change point at c = 11 in
 
 # %% [markdown]
 # A shorter rocker swings through a larger angle ($48^\circ$ for $c = 5$ in against $33^\circ$
@@ -387,10 +419,11 @@ assert 2 + 11 == 6 + 7                                     # the change point at
 # </details>
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-slow, fast = (fb.solve(theta2="30 deg", omega2=w, alpha2="0 rad/s^2") for w in ("10 rad/s", "20 rad/s"))
+slow, fast = (
+    fb.solve(theta2="30 deg", omega2=w, alpha2="0 rad/s^2") for w in ("10 rad/s", "20 rad/s")
+)
 stated(fast.alpha4 / slow.alpha4, "4"), stated(fast.alpha3 / slow.alpha3, "4")
-stated(abs(fast.A_B) / abs(slow.A_B), "4");
-
+stated(abs(fast.A_B) / abs(slow.A_B), "4")
 # %% [markdown]
 # ## Further problems
 #
@@ -420,8 +453,10 @@ stated(abs(fast.A_B) / abs(slow.A_B), "4");
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 link = FourBar(a="3 in", b="8 in", c="7 in", d="9 in")
-for circuit, (a3, a4, ab, ang) in (("open", ("111.0", "271.3", "1899", "-175.3")),
-                                   ("crossed", ("259.6", "99.3", "909", "1.5"))):
+for circuit, (a3, a4, ab, ang) in (
+    ("open", ("111.0", "271.3", "1899", "-175.3")),
+    ("crossed", ("259.6", "99.3", "909", "1.5")),
+):
     res = link.solve(theta2="45 deg", omega2="-20 rad/s", alpha2="100 rad/s^2", circuit=circuit)
     stated(res.alpha3, a3, "rad/s^2"), stated(res.alpha4, a4, "rad/s^2")
     stated(abs(res.A_B), ab, "in/s^2"), stated(np.angle(res.A_B.magnitude, deg=True), ang)
@@ -468,9 +503,9 @@ p = practice("fourbar", seed=5)
 g = p.given
 model = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("alpha3", res.alpha3)                   # right
-assert not p.check("alpha3", res.alpha4)               # the rocker's, not the coupler's
-assert p.check("A_B_mag", abs(res.A_B).to("m/s^2"))    # right, in other units
+assert p.check("alpha3", res.alpha3)  # right
+assert not p.check("alpha3", res.alpha4)  # the rocker's, not the coupler's
+assert p.check("A_B_mag", abs(res.A_B).to("m/s^2"))  # right, in other units
 
 # %% [markdown]
 # ## Common mistakes

@@ -41,7 +41,7 @@ import numpy as np
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import NotAssemblable, Q_, SliderCrank, Singular
+from accelab.solver import Q_, NotAssemblable, Singular, SliderCrank
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon
 from accelab.solver.graphical.gallery import SLIDER_CRANK
@@ -103,13 +103,18 @@ use_style()
 sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")
 r = sc.solve(theta2="60 deg", omega2="30 rad/s", alpha2="-200 rad/s^2")
 
-a, b = 0.040, 0.120                                 # m
+a, b = 0.040, 0.120  # m
 t2, w2, al2 = math.radians(60), 30.0, -200.0
 t3, w3 = r.theta3.to("rad").magnitude, r.omega3.to("rad/s").magnitude
-alpha3 = (a * al2 * math.cos(t2) - a * w2**2 * math.sin(t2)
-          + b * w3**2 * math.sin(t3)) / (b * math.cos(t3))                   # eq. 7.16d
-d_ddot = (-a * al2 * math.sin(t2) - a * w2**2 * math.cos(t2)
-          + b * alpha3 * math.sin(t3) + b * w3**2 * math.cos(t3))            # eq. 7.16e
+alpha3 = (a * al2 * math.cos(t2) - a * w2**2 * math.sin(t2) + b * w3**2 * math.sin(t3)) / (
+    b * math.cos(t3)
+)  # eq. 7.16d
+d_ddot = (
+    -a * al2 * math.sin(t2)
+    - a * w2**2 * math.cos(t2)
+    + b * alpha3 * math.sin(t3)
+    + b * w3**2 * math.cos(t3)
+)  # eq. 7.16e
 assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
 assert math.isclose(d_ddot, r.d_ddot.to("m/s^2").magnitude, rel_tol=1e-12)
 
@@ -138,8 +143,10 @@ fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), width_ratios=[1.2, 1])
 draw_linkage(con, ax=ax1)
 draw_polygon(con, "acceleration", ax=ax2)
 plt.show()
-print(f"graphical: alpha3 = {con.values['alpha3']:.6f} rad/s^2, A_B = "
-      f"{con.values['A_B'].real:.6f} m/s^2 along x")
+print(
+    f"graphical: alpha3 = {con.values['alpha3']:.6f} rad/s^2, A_B = "
+    f"{con.values['A_B'].real:.6f} m/s^2 along x"
+)
 assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-9)
 
 # %% [markdown]
@@ -148,8 +155,10 @@ assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_
 
 # %%
 stated(Q_(40, "mm"), "1.575", "in"), stated(Q_(120, "mm"), "4.724", "in")
-print(f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
-      f" = {in_g(r.d_ddot):.3f} g")
+print(
+    f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
+    f" = {in_g(r.d_ddot):.3f} g"
+)
 
 # %% [markdown]
 # ## Worked example 2: how hard does a piston accelerate?
@@ -169,8 +178,10 @@ print(f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
 bore, stroke, rod = Q_(77, "mm"), Q_(80, "mm"), Q_(130, "mm")
 displacement = (4 * math.pi / 4 * bore**2 * stroke).to("L")
 engine = SliderCrank(a=stroke / 2, b=rod)
-print(f"displacement {displacement.magnitude:.3f} L, crank radius a = {stroke / 2:~P}, "
-      f"rod/crank ratio b/a = {(rod / (stroke / 2)).to(''):.2f~P}")
+print(
+    f"displacement {displacement.magnitude:.3f} L, crank radius a = {stroke / 2:~P}, "
+    f"rod/crank ratio b/a = {(rod / (stroke / 2)).to(''):.2f~P}"
+)
 stated(displacement, "1.49", "L")
 
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
@@ -180,16 +191,20 @@ for name, n in speeds.items():
     piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
     peak = np.max(np.abs(piston))
     peaks[name] = peak
-    print(f"{name:10s} {n:5.0f~P}: peak |d_ddot| = {peak.to('m/s^2'):8.0f~P}"
-          f" = {peak.to('ft/s^2'):7.0f~P} = {in_g(peak):5.0f} g")
+    print(
+        f"{name:10s} {n:5.0f~P}: peak |d_ddot| = {peak.to('m/s^2'):8.0f~P}"
+        f" = {peak.to('ft/s^2'):7.0f~P} = {in_g(peak):5.0f} g"
+    )
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 stated(in_g(peaks["idle"]), "37"), stated(in_g(peaks["highway"]), "720", sig=2)
 stated(in_g(peaks["top speed"]), "2100", sig=2)
 w_top = speeds["top speed"].to("rad/s")
 stated(speeds["top speed"].to("turn/s"), "100"), stated(w_top, "628", "rad/s")
-stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3), stated(in_g((stroke / 2) * w_top**2), "1600", sig=2);
-
+(
+    stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3),
+    stated(in_g((stroke / 2) * w_top**2), "1600", sig=2),
+)
 # %% [markdown]
 # About 37 g at 800 rpm, 720 g at 3500 rpm, 2100 g at 6000 rpm: the chapter's figures,
 # from nothing but the geometry. Why so large? At 6000 rpm the crank turns 100 times a
@@ -204,10 +219,11 @@ stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3), stated(in_g((stroke / 
 top = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
 w = Q_(6000, "rpm").to("rad/s")
 by_hand = -(stroke / 2) * w**2 * (1 + (stroke / 2) / rod)
-assert math.isclose(top.d_ddot.to("m/s^2").magnitude, by_hand.to("m/s^2").magnitude,
-                    rel_tol=1e-12)
-print(f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
-      f"= a w^2 (1 + a/b) with a w^2 = {((stroke / 2) * w**2).to('m/s^2'):.1f~P}")
+assert math.isclose(top.d_ddot.to("m/s^2").magnitude, by_hand.to("m/s^2").magnitude, rel_tol=1e-12)
+print(
+    f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
+    f"= a w^2 (1 + a/b) with a w^2 = {((stroke / 2) * w**2).to('m/s^2'):.1f~P}"
+)
 
 # %% [markdown]
 # Over a revolution, in g at the three speeds. Every curve is the same shape scaled by
@@ -223,12 +239,22 @@ for (name, n), col in zip(speeds.items(), colours):
     g_level = in_g(piston)
     ax1.plot(theta2.magnitude, g_level, color=col, label=f"{name}, {n:.0f~P}")
     w = n.to("rad/s").magnitude
-    ax2.plot(theta2.magnitude, piston.to("m/s^2").magnitude / (0.040 * w**2), color=col,
-             lw=4 - 1.2 * colours.index(col))
+    ax2.plot(
+        theta2.magnitude,
+        piston.to("m/s^2").magnitude / (0.040 * w**2),
+        color=col,
+        lw=4 - 1.2 * colours.index(col),
+    )
 ax1.set_ylabel("piston acceleration $\\ddot d$ [g]")
 ax2.set_ylabel("$\\ddot d \\,/\\, a\\omega_2^2$")
-ax2.plot(theta2.magnitude, -np.cos(theta2.to("rad").magnitude), color="#888888", ls=":",
-         lw=1.5, label="crank pin's x acceleration,\n$-a\\omega_2^2\\cos\\theta_2$")
+ax2.plot(
+    theta2.magnitude,
+    -np.cos(theta2.to("rad").magnitude),
+    color="#888888",
+    ls=":",
+    lw=1.5,
+    label="crank pin's x acceleration,\n$-a\\omega_2^2\\cos\\theta_2$",
+)
 ax2.legend(loc="upper center", fontsize=9)
 ax2.set_title("the same curve at every speed")
 ax1.set_title("1.49 L engine: bore 77, stroke 80, rod 130 mm")
@@ -250,26 +276,41 @@ plt.show()
 # %%
 print(f"{'stroke':>8s}{'bore':>8s}{'rod':>8s}{'b/a':>6s}{'idle 800':>10s}{'6000 rpm':>10s}")
 for stroke_mm in (72, 80, 88):
-    bore_mm = math.sqrt(1.5e6 / 4 / (math.pi / 4) / stroke_mm)      # keep 1.5 L
+    bore_mm = math.sqrt(1.5e6 / 4 / (math.pi / 4) / stroke_mm)  # keep 1.5 L
     for ratio in (3.0, 3.5):
         rod_mm = ratio * stroke_mm / 2
         eng = SliderCrank(a=Q_(stroke_mm / 2, "mm"), b=Q_(rod_mm, "mm"))
         g_idle = in_g(eng.solve(theta2="0 deg", omega2="800 rpm", order=2).d_ddot)
         g_top = in_g(eng.solve(theta2="0 deg", omega2="6000 rpm", order=2).d_ddot)
-        print(f"{stroke_mm:6.0f}mm{bore_mm:6.1f}mm{rod_mm:6.0f}mm{ratio:6.1f}"
-              f"{abs(g_idle):8.0f} g{abs(g_top):8.0f} g")
+        print(
+            f"{stroke_mm:6.0f}mm{bore_mm:6.1f}mm{rod_mm:6.0f}mm{ratio:6.1f}"
+            f"{abs(g_idle):8.0f} g{abs(g_top):8.0f} g"
+        )
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-sweep_g = {(s_, k): [abs(in_g(SliderCrank(a=Q_(s_ / 2, "mm"), b=Q_(k * s_ / 2, "mm")).solve(
-    theta2="0 deg", omega2=n, order=2).d_ddot)) for n in ("800 rpm", "6000 rpm")]
-    for s_ in (72, 80, 88) for k in (3.0, 3.5)}
-lo, hi = (min(v[i] for v in sweep_g.values()) for i in (0, 1)), (max(v[i] for v in sweep_g.values()) for i in (0, 1))
+sweep_g = {
+    (s_, k): [
+        abs(
+            in_g(
+                SliderCrank(a=Q_(s_ / 2, "mm"), b=Q_(k * s_ / 2, "mm"))
+                .solve(theta2="0 deg", omega2=n, order=2)
+                .d_ddot
+            )
+        )
+        for n in ("800 rpm", "6000 rpm")
+    ]
+    for s_ in (72, 80, 88)
+    for k in (3.0, 3.5)
+}
+lo, hi = (
+    (min(v[i] for v in sweep_g.values()) for i in (0, 1)),
+    (max(v[i] for v in sweep_g.values()) for i in (0, 1)),
+)
 (idle_lo, top_lo), (idle_hi, top_hi) = lo, hi
 stated(top_lo, "1860", sig=3), stated(top_hi, "2360", sig=3)
 stated(idle_lo, "33"), stated(idle_hi, "42")
 stated(peaks["top speed"], "20650", "m/s^2", sig=4)
-stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN");
-
+stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN")
 # %% [markdown]
 # From about 1860 to 2360 g at 6000 rpm, and 33 to 42 g at 800 rpm: the claim holds for any
 # reasonable small engine. Newton's law then says what it costs: a 0.3 kg piston at 2100 g
@@ -281,9 +322,18 @@ stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN");
 # scale for the whole turn; millimetres and m/s$^2$).
 
 # %% mystnb={"figure": {"caption": "Animation: the 1.5 L engine's slider-crank at 6000 rpm through one turn, with the accelerations of the crank pin and the piston and a marker on alpha3 and their sizes."}, "image": {"alt": "Animated slider-crank with acceleration arrows at the crank pin and the piston, beside plots with a moving marker."}}
-animate({"mechanism": "slidercrank", "a": "40 mm", "b": "130 mm", "c": "0 mm",
-         "theta2": "0 deg", "omega2": "6000 rpm", "alpha2": "0 rad/s^2"},
-        title="1.5 L engine, 6000 rpm")
+animate(
+    {
+        "mechanism": "slidercrank",
+        "a": "40 mm",
+        "b": "130 mm",
+        "c": "0 mm",
+        "theta2": "0 deg",
+        "omega2": "6000 rpm",
+        "alpha2": "0 rad/s^2",
+    },
+    title="1.5 L engine, 6000 rpm",
+)
 
 # %% [markdown]
 # ### A slider-crank that cannot be assembled
@@ -310,6 +360,7 @@ except (NotAssemblable, Singular) as exc:
 # splits the positive lobe at BDC; a long rod brings the curve toward the pure cosine of the
 # crank pin (dotted).
 
+
 # %% mystnb={"figure": {"caption": "Piston acceleration for several connecting-rod lengths: a shorter rod gives a higher peak."}, "image": {"alt": "Small multiples of piston acceleration against crank angle, one per rod-to-crank ratio."}}
 def draw(rod_mm, rpm):
     eng = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm"))
@@ -317,8 +368,13 @@ def draw(rod_mm, rpm):
     w = Q_(rpm, "rpm").to("rad/s").magnitude
     fig, ax = plt.subplots(figsize=(5.0, 3.6))
     ax.plot(theta2.magnitude, in_g(res.d_ddot), color=COLORS["resultant"], lw=2)
-    ax.plot(theta2.magnitude, -0.040 * w**2 * np.cos(theta2.to("rad").magnitude) / 9.80665,
-            color="#888888", ls=":", label="crank pin's shadow")
+    ax.plot(
+        theta2.magnitude,
+        -0.040 * w**2 * np.cos(theta2.to("rad").magnitude) / 9.80665,
+        color="#888888",
+        ls=":",
+        label="crank pin's shadow",
+    )
     ax.set_ylim(-3000, 1800)
     ax.set_xticks(range(0, 361, 90))
     ax.set_xlabel("$\\theta_2$ [deg]")
@@ -329,12 +385,18 @@ def draw(rod_mm, rpm):
     return fig
 
 
-explore(draw, rod_mm=(80, 400, 10, 130, "mm"), rpm=(600, 7000, 100, 6000, "rpm"),
-        values=[80, 130, 200, 400])
+explore(
+    draw,
+    rod_mm=(80, 400, 10, 130, "mm"),
+    rpm=(600, 7000, 100, 6000, "rpm"),
+    values=[80, 130, 200, 400],
+)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 for rod_mm, above in ((80, "50"), (400, "10")):
-    res = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm")).solve(theta2=theta2, omega2="6000 rpm", order=2)
+    res = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm")).solve(
+        theta2=theta2, omega2="6000 rpm", order=2
+    )
     ratio = np.max(np.abs(res.d_ddot.m_as("m/s^2"))) / (0.040 * w_top.magnitude**2)
     stated(100 * (ratio - 1), above)
 
@@ -391,7 +453,10 @@ half = np.max(np.abs(engine.solve(theta2=theta2, omega2="3000 rpm", order=2).d_d
 stated(in_g(half), "530", sig=2), stated(half / peaks["top speed"], "0.25")
 stated(Q_(2100, "standard_gravity"), "67600", "ft/s^2", sig=3)
 stated(Q_(2100, "standard_gravity"), "811000", "in/s^2", sig=3)
-stated(Q_(1, "standard_gravity"), "32.17", "ft/s^2"), stated(Q_(1, "standard_gravity"), "386.1", "in/s^2")
+(
+    stated(Q_(1, "standard_gravity"), "32.17", "ft/s^2"),
+    stated(Q_(1, "standard_gravity"), "386.1", "in/s^2"),
+)
 tdc = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
 assert abs(tdc.alpha3.m_as("rad/s^2")) < 1e-9 and tdc.d_ddot.magnitude < 0
 
@@ -424,10 +489,15 @@ assert abs(tdc.alpha3.m_as("rad/s^2")) < 1e-9 and tdc.d_ddot.magnitude < 0
 # </details>
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-res = SliderCrank(a="1.5 in", b="5 in", c="0.5 in").solve(theta2="120 deg", omega2="50 rad/s",
-                                                         alpha2="-400 rad/s^2")
+res = SliderCrank(a="1.5 in", b="5 in", c="0.5 in").solve(
+    theta2="120 deg", omega2="50 rad/s", alpha2="-400 rad/s^2"
+)
 stated(res.theta3, "170.8", "deg"), stated(res.alpha3, "587.8", "rad/s^2")
-stated(res.d_ddot, "2579", "in/s^2"), stated(res.d_ddot, "215.0", "ft/s^2"), stated(in_g(res.d_ddot), "6.68")
+(
+    stated(res.d_ddot, "2579", "in/s^2"),
+    stated(res.d_ddot, "215.0", "ft/s^2"),
+    stated(in_g(res.d_ddot), "6.68"),
+)
 fine = Q_(np.linspace(0, 360, 7201), "deg")
 e_fine = engine.solve(theta2=fine, omega2="6000 rpm", order=2)
 zero = fine.magnitude[np.flatnonzero(np.diff(np.sign(e_fine.d_ddot.magnitude)))]
@@ -474,11 +544,12 @@ p.answers()
 # %%
 p = practice("slidercrank", seed=5)
 g = p.given
-res = SliderCrank(a=g["a"], b=g["b"], c=g["c"]).solve(theta2=g["theta2"], omega2=g["omega2"],
-                                                       alpha2=g["alpha2"])
-assert p.check("A_slider", res.d_ddot)         # right
-assert not p.check("A_slider", abs(res.A_A))   # the crank pin's, not the slider's
-assert not p.check("alpha3", -res.alpha3)      # the sign of alpha3 turned
+res = SliderCrank(a=g["a"], b=g["b"], c=g["c"]).solve(
+    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"]
+)
+assert p.check("A_slider", res.d_ddot)  # right
+assert not p.check("A_slider", abs(res.A_A))  # the crank pin's, not the slider's
+assert not p.check("alpha3", -res.alpha3)  # the sign of alpha3 turned
 
 # %% [markdown]
 # ## Common mistakes

@@ -79,7 +79,7 @@ import numpy as np
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
 from accelab.exercises.practice import practice
-from accelab.solver import InvertedSliderCrank, Q_, SlottedLink
+from accelab.solver import Q_, InvertedSliderCrank, SlottedLink
 from accelab.solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon
 from accelab.solver.graphical.geometry import intersect_lines
@@ -91,16 +91,28 @@ def show(name, z):
     """One line: a vector's size in m/s^2 and in/s^2 and its direction (angle from +x)."""
     si = z.to("m/s^2").magnitude
     us = z.to("in/s^2").magnitude
-    print(f"{name:<11} {abs(si):8.3f} m/s^2 = {abs(us):8.1f} in/s^2  at {np.angle(si, deg=True):7.1f} deg")
+    print(
+        f"{name:<11} {abs(si):8.3f} m/s^2 = {abs(us):8.1f} in/s^2  at {np.angle(si, deg=True):7.1f} deg"
+    )
 
 
 def legend_of(ax, kinds, lines=False):
     """A legend naming the vector kinds drawn (colours and line styles of accelab.solver.graphical)."""
-    handles = [plt.Line2D([], [], color=COLORS[k], linestyle=LINESTYLES[k], linewidth=2,
-                          label={"normal": "normal (centripetal)", "resultant": "resultant"}.get(k, k))
-               for k in kinds]
+    handles = [
+        plt.Line2D(
+            [],
+            [],
+            color=COLORS[k],
+            linestyle=LINESTYLES[k],
+            linewidth=2,
+            label={"normal": "normal (centripetal)", "resultant": "resultant"}.get(k, k),
+        )
+        for k in kinds
+    ]
     if lines:
-        handles.append(plt.Line2D([], [], color="#8c8c8c", ls="--", lw=1, label="construction line"))
+        handles.append(
+            plt.Line2D([], [], color="#8c8c8c", ls="--", lw=1, label="construction line")
+        )
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.0, 1.0), fontsize=9)
 
 
@@ -115,8 +127,14 @@ def legend_of(ax, kinds, lines=False):
 
 # %%
 slot = SlottedLink()
-inputs = dict(theta2="30 deg", omega2="-4 rad/s", alpha2="15 rad/s^2",
-              p="250 mm", p_dot="1.5 m/s", p_ddot="-3 m/s^2")
+inputs = dict(
+    theta2="30 deg",
+    omega2="-4 rad/s",
+    alpha2="15 rad/s^2",
+    p="250 mm",
+    p_dot="1.5 m/s",
+    p_ddot="-3 m/s^2",
+)
 r = slot.solve(**inputs)
 for name in ("A_t", "A_n", "A_coriolis", "A_slip", "A"):
     show(name, getattr(r, name))
@@ -136,7 +154,7 @@ assert max(parts, key=parts.get) == "A_coriolis"
 # %%
 theta, omega = Q_(30, "deg").to("rad").magnitude, -4.0
 p_dot = 1.5
-by_hand = 2 * p_dot * omega * 1j * np.exp(1j * theta)      # 2 p' omega j e^{j theta}, m/s^2
+by_hand = 2 * p_dot * omega * 1j * np.exp(1j * theta)  # 2 p' omega j e^{j theta}, m/s^2
 assert np.isclose(by_hand, r.A_coriolis.to("m/s^2").magnitude, rtol=1e-12)
 parts = r.A_t + r.A_n + r.A_coriolis + r.A_slip
 assert np.isclose(parts.to("m/s^2").magnitude, r.A.to("m/s^2").magnitude, rtol=1e-12)
@@ -172,16 +190,28 @@ plt.show()
 R_rim, v_walk = Q_(1.8, "m"), Q_(0.6, "m/s")
 omega_ride = Q_(12, "rpm").to("rad/s")
 t = np.linspace(0, (R_rim / v_walk).to("s").magnitude, 61) * Q_(1, "s")
-walk = slot.solve(theta2=(omega_ride * t).to("rad"), omega2=omega_ride, alpha2=0,
-                  p=R_rim - v_walk * t, p_dot=-v_walk, p_ddot=0)
+walk = slot.solve(
+    theta2=(omega_ride * t).to("rad"),
+    omega2=omega_ride,
+    alpha2=0,
+    p=R_rim - v_walk * t,
+    p_dot=-v_walk,
+    p_ddot=0,
+)
 print(f"walk lasts {t[-1]:.1f~P}, the floor turns {(omega_ride * t[-1]).to('turn'):.2f~P}")
-print(f"Coriolis:     {abs(walk.A_coriolis[0]).to('m/s^2'):.2f~P} = "
-      f"{in_g(walk.A_coriolis[0]):.3f} g all the way (it does not depend on p)")
-print(f"centripetal:  {abs(walk.A_n[0]).to('m/s^2'):.2f~P} = "
-      f"{in_g(walk.A_n[0]):.3f} g at the rim, falling to 0 at the centre")
+print(
+    f"Coriolis:     {abs(walk.A_coriolis[0]).to('m/s^2'):.2f~P} = "
+    f"{in_g(walk.A_coriolis[0]):.3f} g all the way (it does not depend on p)"
+)
+print(
+    f"centripetal:  {abs(walk.A_n[0]).to('m/s^2'):.2f~P} = "
+    f"{in_g(walk.A_n[0]):.3f} g at the rim, falling to 0 at the centre"
+)
 m_child = Q_(30, "kg")
-print(f"sideways push the floor must give a {m_child:~P} child: "
-      f"{(m_child * abs(walk.A_coriolis[0])).to('N'):.0f~P}")
+print(
+    f"sideways push the floor must give a {m_child:~P} child: "
+    f"{(m_child * abs(walk.A_coriolis[0])).to('N'):.0f~P}"
+)
 
 # %% [markdown]
 # Which way is "sideways"? The Coriolis part is the slip velocity (inward) turned 90° in the sense
@@ -205,23 +235,43 @@ scale = 0.3  # m of drawing per m/s^2
 for i in range(0, 61, 12):
     vector(ax1, R[i], A_cor[i], "coriolis", scale=scale)
     vector(ax1, R[i], A_n[i], "normal", scale=scale)
-    ax1.plot([0, R[i].real * 1.8 / max(abs(R[i]), 1e-9)], [0, R[i].imag * 1.8 / max(abs(R[i]), 1e-9)],
-             color="#bbbbbb", lw=0.8, ls=":")
-ax1.annotate("", xy=(1.35, 1.35), xytext=(1.85, 0.55),
-             arrowprops=dict(arrowstyle="->", connectionstyle="arc3,rad=0.3", color="#555555"))
+    ax1.plot(
+        [0, R[i].real * 1.8 / max(abs(R[i]), 1e-9)],
+        [0, R[i].imag * 1.8 / max(abs(R[i]), 1e-9)],
+        color="#bbbbbb",
+        lw=0.8,
+        ls=":",
+    )
+ax1.annotate(
+    "",
+    xy=(1.35, 1.35),
+    xytext=(1.85, 0.55),
+    arrowprops=dict(arrowstyle="->", connectionstyle="arc3,rad=0.3", color="#555555"),
+)
 ax1.text(1.75, 1.15, r"$\omega_2$", fontsize=12, color="#555555")
 ax1.set_aspect("equal")
 ax1.set_xlabel("x [m]")
 ax1.set_ylabel("y [m]")
 ax1.set_title("Top view: path and accelerations\n(1 m of drawing = 3.3 m/s²)")
-ax1.legend(handles=[plt.Line2D([], [], color="black", label="path over the ground"),
-                    plt.Line2D([], [], color="#bbbbbb", ls=":", label="her painted line, then"),
-                    plt.Line2D([], [], color=COLORS["coriolis"], ls=LINESTYLES["coriolis"], label="Coriolis"),
-                    plt.Line2D([], [], color=COLORS["normal"], label="normal (centripetal)")],
-           loc="lower left", fontsize=8)
+ax1.legend(
+    handles=[
+        plt.Line2D([], [], color="black", label="path over the ground"),
+        plt.Line2D([], [], color="#bbbbbb", ls=":", label="her painted line, then"),
+        plt.Line2D([], [], color=COLORS["coriolis"], ls=LINESTYLES["coriolis"], label="Coriolis"),
+        plt.Line2D([], [], color=COLORS["normal"], label="normal (centripetal)"),
+    ],
+    loc="lower left",
+    fontsize=8,
+)
 radius = abs(R)
-ax2.plot(radius, in_g(walk.A_coriolis), color=COLORS["coriolis"], ls=LINESTYLES["coriolis"], lw=2,
-         label=r"Coriolis $2\dot p\omega_2$")
+ax2.plot(
+    radius,
+    in_g(walk.A_coriolis),
+    color=COLORS["coriolis"],
+    ls=LINESTYLES["coriolis"],
+    lw=2,
+    label=r"Coriolis $2\dot p\omega_2$",
+)
 ax2.plot(radius, in_g(walk.A_n), color=COLORS["normal"], lw=2, label=r"normal $p\omega_2^2$")
 ax2.plot(radius, in_g(walk.A), color="black", lw=2.4, label=r"total $|\mathbf{A}_P|$")
 ax2.invert_xaxis()
@@ -234,7 +284,7 @@ plt.show()
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 stated(in_g(walk.A_coriolis[0]), "0.15")
-assert np.ptp(in_g(walk.A_coriolis)) < 1e-12                     # the same all the way
+assert np.ptp(in_g(walk.A_coriolis)) < 1e-12  # the same all the way
 
 # %% [markdown]
 # At the rim the floor must supply both parts; near the centre only the Coriolis part is left,
@@ -305,8 +355,10 @@ assert np.ptp(in_g(walk.A_coriolis)) < 1e-12                     # the same all 
 # %%
 isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg")
 r = isc.solve(theta2="60 deg", omega2="-10 rad/s", alpha2="25 rad/s^2")
-print(f"theta3 = {r.theta3.to('deg'):.2f~P}, theta4 = {r.theta4.to('deg'):.2f~P}, "
-      f"b = {r.b.to('in'):.3f~P}")
+print(
+    f"theta3 = {r.theta3.to('deg'):.2f~P}, theta4 = {r.theta4.to('deg'):.2f~P}, "
+    f"b = {r.b.to('in'):.3f~P}"
+)
 print(f"omega3 = omega4 = {r.omega4:.3f~P}, b' = {r.b_dot.to('in/s'):.2f~P}")
 print(f"alpha3 = alpha4 = {r.alpha4:.2f~P}, b'' = {r.b_ddot.to('in/s^2'):.2f~P}")
 for name in ("A_A", "A_B", "A_coriolis", "A_slip"):
@@ -318,38 +370,52 @@ for name in ("A_A", "A_B", "A_coriolis", "A_slip"):
 # $b e^{j\theta_3}$ differentiated twice, Coriolis and slip included.
 
 # %%
-a, c = 4.0, 3.0                                         # in
+a, c = 4.0, 3.0  # in
 t2, w2, al2 = np.radians(60), -10.0, 25.0
 t3, t4 = r.theta3.magnitude, r.theta4.magnitude
 w3 = w4 = r.omega4.magnitude
 b, bd = r.b.to("in").magnitude, r.b_dot.to("in/s").magnitude
 den = b + c * np.cos(t3 - t4)
-alpha4 = (a * (al2 * np.cos(t3 - t2) + w2**2 * np.sin(t3 - t2)) + c * w4**2 * np.sin(t4 - t3)
-          - 2 * bd * w3) / den
+alpha4 = (
+    a * (al2 * np.cos(t3 - t2) + w2**2 * np.sin(t3 - t2))
+    + c * w4**2 * np.sin(t4 - t3)
+    - 2 * bd * w3
+) / den
 
 
 def b_ddot(sign):  # sign = -1: eq. 7.26b as corrected; +1: as printed
-    return -(a * w2**2 * (b * np.cos(t3 - t2) + c * np.cos(t4 - t2))
-             + a * al2 * (b * np.sin(t2 - t3) - c * np.sin(t4 + sign * t2))
-             + 2 * bd * c * w4 * np.sin(t4 - t3)
-             - w4**2 * (b * b + c * c + 2 * b * c * np.cos(t4 - t3))) / den
+    return (
+        -(
+            a * w2**2 * (b * np.cos(t3 - t2) + c * np.cos(t4 - t2))
+            + a * al2 * (b * np.sin(t2 - t3) - c * np.sin(t4 + sign * t2))
+            + 2 * bd * c * w4 * np.sin(t4 - t3)
+            - w4**2 * (b * b + c * c + 2 * b * c * np.cos(t4 - t3))
+        )
+        / den
+    )
 
 
 solver_bdd = r.b_ddot.to("in/s^2").magnitude
 assert np.isclose(alpha4, r.alpha4.magnitude, rtol=1e-12)
 assert np.isclose(b_ddot(-1), solver_bdd, rtol=1e-12)
-print(f"eq. 7.26a: {alpha4:.6f} rad/s^2; eq. 7.26b: {b_ddot(-1):.4f} in/s^2 (solver {solver_bdd:.4f}); "
-      f"as printed: {b_ddot(+1):.4f} in/s^2")
+print(
+    f"eq. 7.26a: {alpha4:.6f} rad/s^2; eq. 7.26b: {b_ddot(-1):.4f} in/s^2 (solver {solver_bdd:.4f}); "
+    f"as printed: {b_ddot(+1):.4f} in/s^2"
+)
 e3 = np.exp(1j * t3)
 bdd = solver_bdd
-A_AB = (b * (1j * r.alpha3.magnitude - w3**2) + 2j * bd * w3 + bdd) * e3   # eq. 7.21c, in/s^2
+A_AB = (b * (1j * r.alpha3.magnitude - w3**2) + 2j * bd * w3 + bdd) * e3  # eq. 7.21c, in/s^2
 assert np.isclose(A_AB, (r.A_A - r.A_B).to("in/s^2").magnitude, rtol=1e-12)
 # the solver also splits A_A into the point of link 4 under A, the slip and the Coriolis parts
 assert np.isclose((r.A_A4 + r.A_slip + r.A_coriolis - r.A_A).to("in/s^2").magnitude, 0, atol=1e-9)
 # eq. 7.27b with its dots restored: A_BA in cartesian form
 s3, c3 = np.sin(t3), np.cos(t3)
-A_BA_727b = (b * r.alpha3.magnitude * (s3 - 1j * c3) + b * w3**2 * (c3 + 1j * s3)
-             + 2 * bd * w3 * (s3 - 1j * c3) - bdd * (c3 + 1j * s3))
+A_BA_727b = (
+    b * r.alpha3.magnitude * (s3 - 1j * c3)
+    + b * w3**2 * (c3 + 1j * s3)
+    + 2 * bd * w3 * (s3 - 1j * c3)
+    - bdd * (c3 + 1j * s3)
+)
 assert np.isclose(A_BA_727b, r.A_BA.to("in/s^2").magnitude, rtol=1e-12)
 
 # %% [markdown]
@@ -361,11 +427,12 @@ assert np.isclose(A_BA_727b, r.A_BA.to("in/s^2").magnitude, rtol=1e-12)
 
 # %% mystnb={"figure": {"caption": "The inverted slider-crank and its acceleration polygon, with the Coriolis component included."}, "image": {"alt": "Inverted slider-crank linkage beside its acceleration polygon."}}
 a_m, c_m, d_m = (Q_(x, "in").to("m").magnitude for x in (4, 3, 8))
-con = invertedslidercrank.construct(a=a_m, c=c_m, d=d_m, gamma=np.pi / 2, theta2=t2,
-                                    omega2=w2, alpha2=al2)
+con = invertedslidercrank.construct(
+    a=a_m, c=c_m, d=d_m, gamma=np.pi / 2, theta2=t2, omega2=w2, alpha2=al2
+)
 assert np.isclose(con.values["alpha4"], r.alpha4.magnitude, rtol=1e-9)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.4), gridspec_kw={"width_ratios": [1.3, 1]})
-draw_linkage(con, ax=ax1, units="US", legend=False)   # the linkage was given in inches
+draw_linkage(con, ax=ax1, units="US", legend=False)  # the linkage was given in inches
 draw_polygon(con, "acceleration", ax=ax2, units="US")
 legend_of(ax2, ("tangential", "normal", "coriolis", "slip", "resultant"), lines=True)
 plt.show()
@@ -382,34 +449,48 @@ plt.show()
 # tip of $\mathbf{A}^n_{A_4} + \mathbf{A}_{coriolis}$. This is the wrong method on purpose; the
 # solver never does it.
 
+
 # %%
 def forgetful(con):
     """(alpha4, b_ddot, X) from the construction's polygon closed WITHOUT the Coriolis vector."""
     v = con.values
     e3 = np.exp(1j * v["theta3"])
-    radius = v["R_A"] - d_m                               # O4 -> A (theta1 = 0)
+    radius = v["R_A"] - d_m  # O4 -> A (theta1 = 0)
     X, b_dd, t = intersect_lines(v["A_A4_n"], e3, v["A_A"], 1j * radius)
     return -t, b_dd, X
 
 
 wrong_alpha4, wrong_bdd, X = forgetful(con)
-print(f"alpha4: right {con.values['alpha4']:8.2f} rad/s^2, without Coriolis {wrong_alpha4:8.2f} rad/s^2")
+print(
+    f"alpha4: right {con.values['alpha4']:8.2f} rad/s^2, without Coriolis {wrong_alpha4:8.2f} rad/s^2"
+)
 print(f"b'':    right {con.values['b_ddot']:8.3f} m/s^2,   without Coriolis {wrong_bdd:8.3f} m/s^2")
 
 # %% mystnb={"figure": {"caption": "The acceleration polygon with the Coriolis vector (right) and without it (wrong): the wrong polygon still closes."}, "image": {"alt": "Two acceleration polygons of the same position, one including the Coriolis vector and one leaving it out."}}
 v = con.values
-wrong = Construction("invertedslidercrank", con.linkage, [], {}, "open",
-                     title="Polygon closed without the Coriolis vector")
+wrong = Construction(
+    "invertedslidercrank",
+    con.linkage,
+    [],
+    {},
+    "open",
+    title="Polygon closed without the Coriolis vector",
+)
 step = Step("6", "acceleration", "the same polygon without A_coriolis")
 e3 = np.exp(1j * v["theta3"])
 pp = 1j * (v["R_A"] - d_m)
-step.arrows += [Arrow(r"\mathbf{A}_{A}^{t}", 0j, v["A_A_t"], "tangential", "acceleration"),
-                Arrow(r"\mathbf{A}_{A}^{n}", v["A_A_t"], v["A_A_n"], "normal", "acceleration"),
-                Arrow(r"\mathbf{A}_{A_4}^{n}", 0j, v["A_A4_n"], "normal", "acceleration"),
-                Arrow(r"\mathbf{A}_{slip}?", v["A_A4_n"], X - v["A_A4_n"], "slip", "acceleration"),
-                Arrow(r"\mathbf{A}_{A_4}^{t}?", X, v["A_A"] - X, "tangential", "acceleration"),
-                Arrow(r"\mathbf{A}_{A}", 0j, v["A_A"], "resultant", "acceleration")]
-step.lines += [Line("rr", v["A_A4_n"], e3, "acceleration"), Line("pp", v["A_A"], pp, "acceleration")]
+step.arrows += [
+    Arrow(r"\mathbf{A}_{A}^{t}", 0j, v["A_A_t"], "tangential", "acceleration"),
+    Arrow(r"\mathbf{A}_{A}^{n}", v["A_A_t"], v["A_A_n"], "normal", "acceleration"),
+    Arrow(r"\mathbf{A}_{A_4}^{n}", 0j, v["A_A4_n"], "normal", "acceleration"),
+    Arrow(r"\mathbf{A}_{slip}?", v["A_A4_n"], X - v["A_A4_n"], "slip", "acceleration"),
+    Arrow(r"\mathbf{A}_{A_4}^{t}?", X, v["A_A"] - X, "tangential", "acceleration"),
+    Arrow(r"\mathbf{A}_{A}", 0j, v["A_A"], "resultant", "acceleration"),
+]
+step.lines += [
+    Line("rr", v["A_A4_n"], e3, "acceleration"),
+    Line("pp", v["A_A"], pp, "acceleration"),
+]
 wrong.steps.append(step)
 fig, axes = plt.subplots(1, 2, figsize=(11, 5))
 draw_polygon(con, "acceleration", ax=axes[0], units="US")
@@ -427,8 +508,12 @@ plt.show()
 theta_cycle = np.radians(np.arange(0, 360, 2.0))
 cycle = isc.solve(theta2=Q_(theta_cycle, "rad"), omega2="10 rad/s", alpha2=0)
 assert cycle.valid.all()
-forgot = np.array([forgetful(invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, th, 10.0, 0.0))[:2]
-                   for th in theta_cycle])
+forgot = np.array(
+    [
+        forgetful(invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, th, 10.0, 0.0))[:2]
+        for th in theta_cycle
+    ]
+)
 right_a4 = cycle.alpha4.magnitude
 err = forgot[:, 0] - right_a4
 deg = np.degrees(theta_cycle)
@@ -438,10 +523,22 @@ ax1.plot(deg, forgot[:, 0], color=COLORS["tangential"], lw=2, ls="--", label="Co
 ax1.set_ylabel(r"$\alpha_4$ [rad/s$^2$]")
 ax1.set_title(r"Angular acceleration of link 4, $\omega_2$ = 10 rad/s")
 ax1.legend()
-ax2.plot(deg, np.abs(cycle.A_coriolis.to("m/s^2").magnitude), color=COLORS["coriolis"], lw=2,
-         ls=LINESTYLES["coriolis"], label=r"$|\mathbf{A}_{coriolis}|$, the term forgotten")
-ax2.plot(deg, np.abs(forgot[:, 1] - cycle.b_ddot.to("m/s^2").magnitude), color=COLORS["slip"],
-         lw=2, ls=LINESTYLES["slip"], label=r"error in the slip acceleration $\ddot b$")
+ax2.plot(
+    deg,
+    np.abs(cycle.A_coriolis.to("m/s^2").magnitude),
+    color=COLORS["coriolis"],
+    lw=2,
+    ls=LINESTYLES["coriolis"],
+    label=r"$|\mathbf{A}_{coriolis}|$, the term forgotten",
+)
+ax2.plot(
+    deg,
+    np.abs(forgot[:, 1] - cycle.b_ddot.to("m/s^2").magnitude),
+    color=COLORS["slip"],
+    lw=2,
+    ls=LINESTYLES["slip"],
+    label=r"error in the slip acceleration $\ddot b$",
+)
 ax2.set_ylabel(r"acceleration [m/s$^2$]")
 ax2.set_title("The forgotten term and the error it makes")
 ax2.legend(fontsize=9)
@@ -450,16 +547,20 @@ for ax in (ax1, ax2):
     ax.set_xticks(range(0, 361, 60))
 plt.show()
 worst = np.argmax(np.abs(err))
-print(f"largest error in alpha4: {err[worst]:+.1f} rad/s^2 at theta2 = {deg[worst]:.0f} deg, "
-      f"{abs(err[worst]) / np.abs(right_a4).max():.0%} of the largest |alpha4| in the cycle")
-print(f"Coriolis term: up to {np.abs(cycle.A_coriolis.to('m/s^2').magnitude).max():.1f} m/s^2; "
-      f"|A_A| is {abs(cycle.A_A[0].to('m/s^2').magnitude):.1f} m/s^2 all the time")
+print(
+    f"largest error in alpha4: {err[worst]:+.1f} rad/s^2 at theta2 = {deg[worst]:.0f} deg, "
+    f"{abs(err[worst]) / np.abs(right_a4).max():.0%} of the largest |alpha4| in the cycle"
+)
+print(
+    f"Coriolis term: up to {np.abs(cycle.A_coriolis.to('m/s^2').magnitude).max():.1f} m/s^2; "
+    f"|A_A| is {abs(cycle.A_A[0].to('m/s^2').magnitude):.1f} m/s^2 all the time"
+)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 cor_max = np.abs(cycle.A_coriolis.to("m/s^2").magnitude).max()
 pin = abs(cycle.A_A[0].to("m/s^2").magnitude)
 stated(cor_max, "21"), stated(pin, "10"), stated(cor_max / pin, "2")
-assert np.abs(err).max() >= 0.9 * np.abs(right_a4).max()       # "as much as its own largest value"
+assert np.abs(err).max() >= 0.9 * np.abs(right_a4).max()  # "as much as its own largest value"
 
 # %% [markdown]
 # The forgotten Coriolis term is not a small correction: for this linkage it reaches twice the
@@ -474,9 +575,20 @@ assert np.abs(err).max() >= 0.9 * np.abs(right_a4).max()       # "as much as its
 # Coriolis arrow vanish twice as the block stops on the slide, and twice as link 4 stops.
 
 # %% mystnb={"figure": {"caption": "Animation: the inverted slider-crank through one turn at 10 rad/s with the accelerations of A and B and the Coriolis component at A, and a marker on alpha4 and the three sizes."}, "image": {"alt": "Animated inverted slider-crank with acceleration arrows and a green Coriolis arrow, beside plots with a moving marker."}}
-animate({"mechanism": "invertedslidercrank", "a": "4 in", "c": "3 in", "d": "8 in",
-         "gamma": "90 deg", "theta2": "0 deg", "omega2": "10 rad/s", "alpha2": "0 rad/s^2"},
-        kinds=("resultant", "coriolis"), title="Inverted slider-crank")
+animate(
+    {
+        "mechanism": "invertedslidercrank",
+        "a": "4 in",
+        "c": "3 in",
+        "d": "8 in",
+        "gamma": "90 deg",
+        "theta2": "0 deg",
+        "omega2": "10 rad/s",
+        "alpha2": "0 rad/s^2",
+    },
+    kinds=("resultant", "coriolis"),
+    title="Inverted slider-crank",
+)
 
 # %% [markdown]
 # ## Explore
@@ -489,34 +601,50 @@ animate({"mechanism": "invertedslidercrank", "a": "4 in", "c": "3 in", "d": "8 i
 # one frame at one scale (in/s$^2$, set for 10 rad/s).
 
 # %% mystnb={"figure": {"caption": "The inverted slider-crank at four crank angles, in one frame and at one scale: the Coriolis component at A nearly vanishes at 85 deg."}, "image": {"alt": "Four drawings of the inverted slider-crank with the acceleration of A, its Coriolis and slip parts, and the acceleration of B."}}
-frames = [invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, t, 10.0, 0.0)
-          for t in np.radians(np.arange(0, 360, 10))]
+frames = [
+    invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, t, 10.0, 0.0)
+    for t in np.radians(np.arange(0, 360, 10))
+]
 KINDS = ("resultant", "coriolis", "slip")
 shown = [a for f in frames for a in f.items("linkage")[0] if a.kind in KINDS]
-big = max(abs(a.vector) for a in shown) / 0.0254   # in/s^2
-SCALE = 4.0 / big                                  # the longest arrow at 10 rad/s: 4 in
+big = max(abs(a.vector) for a in shown) / 0.0254  # in/s^2
+SCALE = 4.0 / big  # the longest arrow at 10 rad/s: 4 in
 ends = [z / 0.0254 for f in frames for z in f.linkage.points.values()]
 ends += [a.start / 0.0254 + SCALE * a.vector / 0.0254 for a in shown]
-BOX = (min(z.real for z in ends) - 0.5, max(z.real for z in ends) + 0.5,
-       min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
+BOX = (
+    min(z.real for z in ends) - 0.5,
+    max(z.real for z in ends) + 0.5,
+    min(z.imag for z in ends) - 0.5,
+    max(z.imag for z in ends) + 0.5,
+)
 at85 = invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, np.radians(85), 10.0, 0.0)
-assert abs(at85.values["A_coriolis"]) < 0.02 * cor_max        # "nearly nothing" at 85 deg
+assert abs(at85.values["A_coriolis"]) < 0.02 * cor_max  # "nearly nothing" at 85 deg
 
 
 def draw(theta2=60, omega2=10):
     con = invertedslidercrank.construct(a_m, c_m, d_m, np.pi / 2, np.radians(theta2), omega2, 0.0)
     v = con.values
     fig, ax = plt.subplots(figsize=(4.4, 4.6))
-    draw_linkage(con, ax=ax, units="US", scale=SCALE, box=BOX, legend=False, lines=False,
-                 kinds=KINDS,
-                 title=rf"$|\mathbf{{A}}_{{cor}}|$ = {abs(v['A_coriolis']) / 0.0254:.0f} in/s$^2$"
-                       f"\n($\\dot b$ = {v['b_dot'] / 0.0254:.1f} in/s, "
-                       f"$\\omega_4$ = {v['omega4']:.2f} rad/s)")
+    draw_linkage(
+        con,
+        ax=ax,
+        units="US",
+        scale=SCALE,
+        box=BOX,
+        legend=False,
+        lines=False,
+        kinds=KINDS,
+        title=rf"$|\mathbf{{A}}_{{cor}}|$ = {abs(v['A_coriolis']) / 0.0254:.0f} in/s$^2$"
+        f"\n($\\dot b$ = {v['b_dot'] / 0.0254:.1f} in/s, "
+        f"$\\omega_4$ = {v['omega4']:.2f} rad/s)",
+    )
     ax.title.set_fontsize(10)
     return fig
 
 
-explore(draw, theta2=(0, 360, 5, 60, "deg"), omega2=(1, 20, 1, 10, "rad/s"), values=(25, 85, 150, 280))
+explore(
+    draw, theta2=(0, 360, 5, 60, "deg"), omega2=(1, 20, 1, 10, "rad/s"), values=(25, 85, 150, 280)
+)
 
 # %% [markdown]
 # ## Check yourself
@@ -577,7 +705,7 @@ explore(draw, theta2=(0, 360, 5, 60, "deg"), omega2=(1, 20, 1, 10, "rad/s"), val
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 q1 = slot.solve(theta2="0 deg", omega2="-30 rpm", alpha2=0, p="200 mm", p_dot="2 m/s", p_ddot=0)
 stated(abs(q1.A_coriolis), "12.6", "m/s^2"), stated(Q_(30, "rpm"), "3.1416", "rad/s")
-assert np.isclose(np.angle(q1.A_coriolis.magnitude, deg=True), -90)   # along -y
+assert np.isclose(np.angle(q1.A_coriolis.magnitude, deg=True), -90)  # along -y
 
 # %% [markdown]
 # ## Further problems
@@ -612,11 +740,23 @@ assert np.isclose(np.angle(q1.A_coriolis.magnitude, deg=True), -90)   # along -y
 # </details>
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-f1 = slot.solve(theta2="0 deg", omega2="60 rpm", alpha2=0, p="200 mm", p_dot="-2 m/s", p_ddot="-5 m/s^2")
-parts = {k: complex(getattr(f1, k).m_as("m/s^2")) for k in ("A_t", "A_n", "A_coriolis", "A_slip", "A")}
+f1 = slot.solve(
+    theta2="0 deg", omega2="60 rpm", alpha2=0, p="200 mm", p_dot="-2 m/s", p_ddot="-5 m/s^2"
+)
+parts = {
+    k: complex(getattr(f1, k).m_as("m/s^2")) for k in ("A_t", "A_n", "A_coriolis", "A_slip", "A")
+}
 assert abs(parts["A_t"]) < 1e-12
-stated(-parts["A_n"].real, "7.896"), stated(-parts["A_coriolis"].imag, "25.13"), stated(-parts["A_slip"].real, "5")
-stated(parts["A"].real, "-12.90"), stated(parts["A"].imag, "-25.13"), stated(abs(parts["A"]), "28.25")
+(
+    stated(-parts["A_n"].real, "7.896"),
+    stated(-parts["A_coriolis"].imag, "25.13"),
+    stated(-parts["A_slip"].real, "5"),
+)
+(
+    stated(parts["A"].real, "-12.90"),
+    stated(parts["A"].imag, "-25.13"),
+    stated(abs(parts["A"]), "28.25"),
+)
 stated(np.angle(parts["A"], deg=True), "-117.2")
 
 fine = Q_(np.linspace(0, 2 * np.pi, 7201), "rad")
@@ -625,8 +765,7 @@ stops = {}
 for name, rate in (("b_dot", turn.b_dot.magnitude), ("omega4", turn.omega4.magnitude)):
     stops[name] = np.degrees(fine.magnitude[np.flatnonzero(np.diff(np.sign(rate)))])
 stated(stops["b_dot"][0], "0"), stated(stops["b_dot"][1], "180")
-stated(stops["omega4"][0], "82.8"), stated(stops["omega4"][1], "331.0");
-
+stated(stops["omega4"][0], "82.8"), stated(stops["omega4"][1], "331.0")
 # %% [markdown]
 # ## Practice
 #
@@ -668,9 +807,9 @@ p = practice("coriolis", seed=5)
 g = p.given
 model = InvertedSliderCrank(a=g["a"], c=g["c"], d=g["d"], gamma=g["gamma"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("A_cor_mag", abs(res.A_coriolis)) # right
-assert not p.check("A_cor_mag", abs(res.A_coriolis) / 2) # the factor 2 of eq. 7.19b forgotten
-assert p.check("alpha4", res.alpha4)            # right
+assert p.check("A_cor_mag", abs(res.A_coriolis))  # right
+assert not p.check("A_cor_mag", abs(res.A_coriolis) / 2)  # the factor 2 of eq. 7.19b forgotten
+assert p.check("alpha4", res.alpha4)  # right
 
 # %% [markdown]
 # ## Common mistakes

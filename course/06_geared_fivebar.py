@@ -41,7 +41,7 @@ from matplotlib.colors import Normalize
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, GearedFiveBar, Q_
+from accelab.solver import Q_, FourBar, GearedFiveBar
 from accelab.solver.graphical import fivebar as fivebar_construction
 from accelab.solver.graphical.draw import draw_linkage
 
@@ -134,19 +134,33 @@ for name in ("A_A", "A_C", "A_B"):
 # the solver, and asserts that they agree with it; then it checks eq. 7.29f.
 
 # %%
-a, b, c, d = 1.5, 4.0, 4.0, 1.5                     # in
+a, b, c, d = 1.5, 4.0, 4.0, 1.5  # in
 t2, w2, al2 = np.radians(60), 20.0, -50.0
 t3, t4, t5 = (getattr(r, k).to("rad").magnitude for k in ("theta3", "theta4", "theta5"))
 w3, w4, w5 = (getattr(r, k).magnitude for k in ("omega3", "omega4", "omega5"))
-al5 = -2 * al2                                      # eq. 7.28c
-alpha3 = (-a * al2 * np.sin(t2 - t4) - a * w2**2 * np.cos(t2 - t4) - b * w3**2 * np.cos(t3 - t4)
-          + d * w5**2 * np.cos(t5 - t4) + d * al5 * np.sin(t5 - t4) + c * w4**2) / (b * np.sin(t3 - t4))
-alpha4 = (a * al2 * np.sin(t2 - t3) + a * w2**2 * np.cos(t2 - t3) - c * w4**2 * np.cos(t3 - t4)
-          - d * w5**2 * np.cos(t3 - t5) + d * al5 * np.sin(t3 - t5) + b * w3**2) / (c * np.sin(t4 - t3))
+al5 = -2 * al2  # eq. 7.28c
+alpha3 = (
+    -a * al2 * np.sin(t2 - t4)
+    - a * w2**2 * np.cos(t2 - t4)
+    - b * w3**2 * np.cos(t3 - t4)
+    + d * w5**2 * np.cos(t5 - t4)
+    + d * al5 * np.sin(t5 - t4)
+    + c * w4**2
+) / (b * np.sin(t3 - t4))
+alpha4 = (
+    a * al2 * np.sin(t2 - t3)
+    + a * w2**2 * np.cos(t2 - t3)
+    - c * w4**2 * np.cos(t3 - t4)
+    - d * w5**2 * np.cos(t3 - t5)
+    + d * al5 * np.sin(t3 - t5)
+    + b * w3**2
+) / (c * np.sin(t4 - t3))
 assert np.isclose(alpha3, r.alpha3.magnitude, rtol=1e-12)
 assert np.isclose(alpha4, r.alpha4.magnitude, rtol=1e-12)
 assert np.isclose((r.A_A + r.A_BA - r.A_B).to("in/s^2").magnitude, 0, atol=1e-9)
-print(f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both agree with the solver")
+print(
+    f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both agree with the solver"
+)
 
 # %% [markdown]
 # The graphical construction (section 7.2's method, with two moving "pivots" A and C) draws the
@@ -155,18 +169,19 @@ print(f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both a
 # pitch radius of 8/3 in and gear 5 of 4/3 in.
 
 # %% mystnb={"figure": {"caption": "The geared fivebar of example 1 drawn to scale with the accelerations at A, B and C and the gears' pitch circles (dotted)."}, "image": {"alt": "Geared fivebar linkage in inches with acceleration arrows at its pins and two dotted pitch circles."}}
-pitch2, pitch5 = 4 * 2 / 3, 4 * 1 / 3        # in: r2 + r5 = 4 in and r2 / r5 = |lambda| = 2
+pitch2, pitch5 = 4 * 2 / 3, 4 * 1 / 3  # in: r2 + r5 = 4 in and r2 / r5 = |lambda| = 2
 stated(pitch2, "2.667"), stated(pitch5, "1.333")
 m = Q_(1, "in").to("m").magnitude
-con = fivebar_construction.construct(a * m, b * m, c * m, d * m, 4 * m, -2, np.radians(30),
-                                     t2, w2, al2)
+con = fivebar_construction.construct(
+    a * m, b * m, c * m, d * m, 4 * m, -2, np.radians(30), t2, w2, al2
+)
 assert np.isclose(con.values["alpha3"], r.alpha3.magnitude, rtol=1e-9)
 fig, ax = plt.subplots(figsize=(9, 6))
-draw_linkage(con, ax=ax, units="US")           # the linkage was given in inches
-for centre, radius in ((0, pitch2), (4, pitch5)):             # drawn in inches
+draw_linkage(con, ax=ax, units="US")  # the linkage was given in inches
+for centre, radius in ((0, pitch2), (4, pitch5)):  # drawn in inches
     ax.add_patch(plt.Circle((centre, 0), radius, fill=False, color="#999999", ls=":", lw=1.2))
 (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-ax.set_xlim(min(x0, -pitch2 - 0.3), max(x1, 4 + pitch5 + 0.3))   # room for the pitch circles
+ax.set_xlim(min(x0, -pitch2 - 0.3), max(x1, 4 + pitch5 + 0.3))  # room for the pitch circles
 ax.set_ylim(min(y0, -pitch2 - 0.3), y1)
 plt.show()
 
@@ -179,17 +194,20 @@ plt.show()
 
 # %%
 phi = np.radians(30)
-C = 4 + d * np.exp(1j * phi)                         # fixed pivot, in
+C = 4 + d * np.exp(1j * phi)  # fixed pivot, in
 still = GearedFiveBar(**geometry, lam=0, phi="30 deg")
-as_fourbar = FourBar(a="1.5 in", b="4 in", c="4 in", d=f"{abs(C)} in",
-                     theta1=f"{np.degrees(np.angle(C))} deg")
+as_fourbar = FourBar(
+    a="1.5 in", b="4 in", c="4 in", d=f"{abs(C)} in", theta1=f"{np.degrees(np.angle(C))} deg"
+)
 theta = Q_(np.linspace(0, 2 * np.pi, 73), "rad")
 g = still.solve(theta2=theta, omega2="20 rad/s", alpha2="-50 rad/s^2")
 f4 = as_fourbar.solve(theta2=theta, omega2="20 rad/s", alpha2="-50 rad/s^2")
 both = g.valid & f4.valid
 assert both.sum() > 60
 assert np.allclose(g.alpha3.magnitude[both], f4.alpha3.magnitude[both], rtol=1e-9)
-assert np.allclose(g.A_B.to("in/s^2").magnitude[both], f4.A_B.to("in/s^2").magnitude[both], rtol=1e-9)
+assert np.allclose(
+    g.A_B.to("in/s^2").magnitude[both], f4.A_B.to("in/s^2").magnitude[both], rtol=1e-9
+)
 print(f"lambda = 0: alpha3 and A_B agree with the fourbar at {both.sum()} positions")
 
 # %% [markdown]
@@ -197,6 +215,7 @@ print(f"lambda = 0: alpha3 and A_B agree with the fourbar at {both.sum()} positi
 #
 # A steady 20 rad/s input ($\alpha_2 = 0$), the same phase $\phi = 30°$, three gear ratios. Each
 # curve is one solver call on an array of crank angles.
+
 
 # %% mystnb={"figure": {"caption": "Over a cycle for several gear ratios: the coupler's angular acceleration and the acceleration of pin B (phase 30 deg)."}, "image": {"alt": "Two line plots against crank angle, one curve per gear ratio."}}
 def cycle_turns(lam):
@@ -230,8 +249,7 @@ plt.show()
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 peak_of = {lam: np.nanmax(in_g(sweep(lam, 30)[1].A_B)) for lam in (-1, -2, 2)}
-stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3");
-
+stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3")
 # %% [markdown]
 # With $\lambda = -1$ the two cranks mirror each other and the coupler moves gently; at
 # $\lambda = \pm 2$ crank 5 turns twice per input turn and the couplers are whipped round twice as
@@ -249,8 +267,12 @@ stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3"
 # %% mystnb={"figure": {"caption": "The peak acceleration of B at omega2 = 20 rad/s against the phase angle phi, for several gear ratios: the phase matters."}, "image": {"alt": "Line plot of peak acceleration against phase angle from 0 to 360 degrees, one curve per gear ratio."}}
 phis = np.arange(0, 361, 10)
 fig, ax = plt.subplots(figsize=(8, 4.2))
-for lam, colour in ((-1, COLORS["normal"]), (-1.5, COLORS["slip"]), (-2, COLORS["tangential"]),
-                    (2, COLORS["coriolis"])):
+for lam, colour in (
+    (-1, COLORS["normal"]),
+    (-1.5, COLORS["slip"]),
+    (-2, COLORS["tangential"]),
+    (2, COLORS["coriolis"]),
+):
     peak = [np.nanmax(in_g(sweep(lam, p, points_per_turn=180)[1].A_B)) for p in phis]
     spread = {**globals().get("spread", {}), lam: max(peak) / min(peak)}
     ax.plot(phis, peak, "o-", ms=3, color=colour, label=rf"$\lambda$ = {lam:+g}")
@@ -263,8 +285,7 @@ ax.legend()
 plt.show()
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(spread[2], "6", sig=1), stated(spread[-2], "1.7");
-
+stated(spread[2], "6", sig=1), stated(spread[-2], "1.7")
 # %% [markdown]
 # For $\lambda = +2$ the worst phase gives six times the peak acceleration of the best one; for
 # $\lambda = -2$ about 1.7 times. A designer who picks the gear ratio for the coupler curve's shape
@@ -281,14 +302,32 @@ deg, s = sweep(-1.5, 30)
 B = s.R_B.to("in").magnitude
 half = len(deg) // 2
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2), gridspec_kw={"width_ratios": [1, 1.4]})
-ax1.plot(B.real[:half + 1], B.imag[:half + 1], color=COLORS["tangential"], lw=2.2, label="first input turn")
-ax1.plot(B.real[half:], B.imag[half:], color=COLORS["normal"], lw=2.2, ls="--", label="second input turn")
+ax1.plot(
+    B.real[: half + 1],
+    B.imag[: half + 1],
+    color=COLORS["tangential"],
+    lw=2.2,
+    label="first input turn",
+)
+ax1.plot(
+    B.real[half:], B.imag[half:], color=COLORS["normal"], lw=2.2, ls="--", label="second input turn"
+)
 ax1.plot(B.real[0], B.imag[0], "ko", ms=6)
-ax1.annotate(r"start, $\theta_2$ = 0", (B.real[0], B.imag[0]), textcoords="offset points",
-             xytext=(8, -14), fontsize=9)
+ax1.annotate(
+    r"start, $\theta_2$ = 0",
+    (B.real[0], B.imag[0]),
+    textcoords="offset points",
+    xytext=(8, -14),
+    fontsize=9,
+)
 ax1.plot(B.real[half], B.imag[half], "s", color="black", ms=6)
-ax1.annotate("after one turn", (B.real[half], B.imag[half]), textcoords="offset points",
-             xytext=(8, 6), fontsize=9)
+ax1.annotate(
+    "after one turn",
+    (B.real[half], B.imag[half]),
+    textcoords="offset points",
+    xytext=(8, 6),
+    fontsize=9,
+)
 ax1.set_aspect("equal")
 ax1.set_xlabel("x [in]")
 ax1.set_ylabel("y [in]")
@@ -311,7 +350,7 @@ print(f"lambda = -1.5 = {Fraction(-1.5)}: one cycle is {cycle_turns(-1.5)} turns
 # the peaks over the whole cycle, however many input turns it takes.
 
 # %% mystnb={"figure": {"caption": "The path of coupler pin B at four phase angles phi (lambda = -2), coloured by the size of its acceleration in g; the peak changes with the phase."}, "image": {"alt": "Four panels of the geared fivebar, each with the closed path of pin B coloured from dark (low) to yellow (high) acceleration."}}
-NORM = Normalize(vmin=0, vmax=30)   # g
+NORM = Normalize(vmin=0, vmax=30)  # g
 
 
 def draw(phi=30, lam=-2.0):
@@ -327,17 +366,28 @@ def draw(phi=30, lam=-2.0):
         lines.set_array(g[:-1][ok[:-1] & ok[1:]])
         ax.add_collection(lines)
         fig.colorbar(lines, ax=ax, label=r"$|\mathbf{A}_B|$ [g]", extend="max")
-        title = (rf"$\lambda$ = {lam:+g}: cycle of {cycle_turns(lam)} turn(s), "
-                 rf"peak $|\mathbf{{A}}_B|$ {np.nanmax(g):.0f} g, "
-                 rf"$|\alpha_3|$ {np.nanmax(np.abs(s.alpha3.magnitude)):.0f} rad/s$^2$")
+        title = (
+            rf"$\lambda$ = {lam:+g}: cycle of {cycle_turns(lam)} turn(s), "
+            rf"peak $|\mathbf{{A}}_B|$ {np.nanmax(g):.0f} g, "
+            rf"$|\alpha_3|$ {np.nanmax(np.abs(s.alpha3.magnitude)):.0f} rad/s$^2$"
+        )
     else:
         title = rf"$\lambda$ = {lam:+g}, $\phi$ = {phi}°: cannot be assembled"
     if not ok.all():
         title += f"\n({(~ok).sum()} of {ok.size} positions cannot be assembled)"
     if ok[0]:  # the linkage at theta2 = 0, for scale
         z = [0] + [getattr(s, k)[0].to("in").magnitude for k in ("R_A", "R_B", "R_C")] + [4]
-        ax.plot([p.real for p in z], [p.imag for p in z], "-o", color="#9a9a9a", lw=2, ms=4,
-                mfc="white", zorder=1, label=r"linkage at $\theta_2$ = 0")
+        ax.plot(
+            [p.real for p in z],
+            [p.imag for p in z],
+            "-o",
+            color="#9a9a9a",
+            lw=2,
+            ms=4,
+            mfc="white",
+            zorder=1,
+            label=r"linkage at $\theta_2$ = 0",
+        )
         ax.legend(loc="lower left", fontsize=8)
     for centre in (0, 4):
         ax.plot(centre, 0, "^", color="#333333", ms=9)
@@ -405,11 +455,17 @@ explore(draw, phi=(0, 360, 15, 30, "deg"), lam=(-3, 3, 0.5, -2.0))
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 assert Fraction(-2.5) == Fraction(-5, 2) and cycle_turns(-2.5) == 2
-steady, doubled = (fivebar.solve(theta2="60 deg", omega2=w, alpha2=0) for w in ("20 rad/s", "40 rad/s"))
+steady, doubled = (
+    fivebar.solve(theta2="60 deg", omega2=w, alpha2=0) for w in ("20 rad/s", "40 rad/s")
+)
 stated(doubled.alpha3 / steady.alpha3, "4"), stated(abs(doubled.A_B) / abs(steady.A_B), "4")
-stated(GearedFiveBar(**geometry, lam=-2, phi="30 deg").solve(
-    theta2="60 deg", omega2="20 rad/s", alpha2="10 rad/s^2").alpha5, "-20", "rad/s^2");
-
+stated(
+    GearedFiveBar(**geometry, lam=-2, phi="30 deg")
+    .solve(theta2="60 deg", omega2="20 rad/s", alpha2="10 rad/s^2")
+    .alpha5,
+    "-20",
+    "rad/s^2",
+)
 # %% [markdown]
 # **In motion.** Example 1's linkage ($\lambda = -2$, $\phi = 30^\circ$) through one input turn
 # at a steady 20 rad/s: crank 5 turns twice, the other way, and the coupler pin B is whipped
@@ -417,8 +473,18 @@ stated(GearedFiveBar(**geometry, lam=-2, phi="30 deg").solve(
 # the marker runs along the curves of $\alpha_3$, $\alpha_4$ and the three sizes.
 
 # %% mystnb={"figure": {"caption": "Animation: the geared fivebar (lambda = -2) through one input turn at 20 rad/s with the accelerations of A, B and C, and a marker on alpha3, alpha4 and the three sizes."}, "image": {"alt": "Animated geared fivebar with acceleration arrows at A, B and C, beside plots with a moving marker."}}
-animate({"mechanism": "fivebar", **geometry, "lam": -2, "phi": "30 deg", "theta2": "0 deg",
-         "omega2": "20 rad/s", "alpha2": "0 rad/s^2"}, title="Geared fivebar, $\\lambda$ = -2")
+animate(
+    {
+        "mechanism": "fivebar",
+        **geometry,
+        "lam": -2,
+        "phi": "30 deg",
+        "theta2": "0 deg",
+        "omega2": "20 rad/s",
+        "alpha2": "0 rad/s^2",
+    },
+    title="Geared fivebar, $\\lambda$ = -2",
+)
 
 # %% [markdown]
 # ## Further problems
@@ -449,8 +515,9 @@ animate({"mechanism": "fivebar", **geometry, "lam": -2, "phi": "30 deg", "theta2
 # </details>
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-r61 = GearedFiveBar(**geometry, lam=-3, phi="0 deg").solve(theta2="0 deg", omega2="15 rad/s",
-                                                          alpha2="40 rad/s^2")
+r61 = GearedFiveBar(**geometry, lam=-3, phi="0 deg").solve(
+    theta2="0 deg", omega2="15 rad/s", alpha2="40 rad/s^2"
+)
 stated(r61.theta5, "0", "deg"), stated(r61.alpha5, "-120", "rad/s^2")
 stated(r61.alpha3, "37.43", "rad/s^2"), stated(r61.alpha4, "-157.43", "rad/s^2")
 stated(abs(r61.A_B), "2193", "in/s^2"), stated(np.angle(r61.A_B.magnitude, deg=True), "-132.4")
@@ -495,12 +562,11 @@ p.answers()
 # %%
 p = practice("fivebar", seed=5)
 g = p.given
-model = GearedFiveBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"], f=g["f"], lam=g["lam"],
-                      phi=g["phi"])
+model = GearedFiveBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"], f=g["f"], lam=g["lam"], phi=g["phi"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("alpha3", res.alpha3)   # right
-assert not p.check("alpha4", res.alpha3) # link 3's, not link 4's
-assert p.check("alpha4", res.alpha4)   # right
+assert p.check("alpha3", res.alpha3)  # right
+assert not p.check("alpha4", res.alpha3)  # link 3's, not link 4's
+assert p.check("alpha4", res.alpha4)  # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -39,7 +39,7 @@ from matplotlib.colors import Normalize
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style, vector
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, Q_
+from accelab.solver import Q_, FourBar
 
 use_style()
 
@@ -97,10 +97,12 @@ print(f"A_P = {polar(r.A_P, 'in/s^2')} = {polar(r.A_P, 'm/s^2')}")
 # Eq. 7.32 written out by hand, checked against the solver:
 
 # %%
-p, delta3 = 3.0, np.radians(30)                                # in, rad
+p, delta3 = 3.0, np.radians(30)  # in, rad
 t3, w3, a3 = r.theta3.magnitude, r.omega3.magnitude, r.alpha3.magnitude
-A_PA = p * a3 * 1j * np.exp(1j * (t3 + delta3)) - p * w3**2 * np.exp(1j * (t3 + delta3))   # eq. 7.32b
-A_P = r.A_A.to("in/s^2").magnitude + A_PA                                                  # eq. 7.32a
+A_PA = p * a3 * 1j * np.exp(1j * (t3 + delta3)) - p * w3**2 * np.exp(
+    1j * (t3 + delta3)
+)  # eq. 7.32b
+A_P = r.A_A.to("in/s^2").magnitude + A_PA  # eq. 7.32a
 assert np.isclose(A_P, r.A_P.to("in/s^2").magnitude, rtol=1e-12)
 print(f"by hand: A_P = {A_P:.4f} in/s^2")
 
@@ -111,10 +113,12 @@ print(f"by hand: A_P = {A_P:.4f} in/s^2")
 # frame (A at the origin, B on the x axis), is $(0 + b + p e^{j\delta_3})/3$:
 
 # %%
-g3 = (0 + 6 + 3 * np.exp(1j * delta3)) / 3                      # in, from A, in link 3's frame
-cg = {"S = G2": (2, "1 in", "0 deg"),
-      "G3": (3, f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
-      "U = G4": (4, "4.5 in", "0 deg")}
+g3 = (0 + 6 + 3 * np.exp(1j * delta3)) / 3  # in, from A, in link 3's frame
+cg = {
+    "S = G2": (2, "1 in", "0 deg"),
+    "G3": (3, f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
+    "U = G4": (4, "4.5 in", "0 deg"),
+}
 points = {name: r.point(*spec) for name, spec in cg.items()}
 print(f"G3: {abs(g3):.4f} in from A at {np.degrees(np.angle(g3)):.3f} deg from AB")
 for name, pm in points.items():
@@ -126,6 +130,7 @@ assert np.isclose(r.point(3, "3 in", "30 deg").si("A"), r.si("A_P"))
 # The drawing puts each acceleration at its point (one scale for all). Points of one link
 # share $\alpha$ and $\omega$ but not their accelerations: the farther from the link's
 # instantaneous centre of zero acceleration, the larger.
+
 
 # %% mystnb={"figure": {"caption": "The accelerations of the crank pin, coupler point and centres of gravity at theta2 = 30 deg, drawn at their points."}, "image": {"alt": "Fourbar drawing with acceleration arrows at A, B, the coupler point and the three centres of gravity."}}
 def linkage_points(res, i=None):
@@ -147,11 +152,15 @@ def draw_fourbar(ax, pins, colour="#4d4d4d"):
 fig, ax = plt.subplots(figsize=(8.5, 5.5))
 pins = linkage_points(r)
 draw_fourbar(ax, pins)
-scale = 0.008                                                   # in of drawing per in/s^2
+scale = 0.008  # in of drawing per in/s^2
 ends = [0j, 7 + 0j]
 here = {"A": r.A_A, "P": r.A_P, "B": r.A_B, **{k: pm.A for k, pm in points.items()}}
-where = {"A": pins["A"], "P": pins["P"], "B": pins["B"],
-         **{k: pm.R.to("in").magnitude for k, pm in points.items()}}
+where = {
+    "A": pins["A"],
+    "P": pins["P"],
+    "B": pins["B"],
+    **{k: pm.R.to("in").magnitude for k, pm in points.items()},
+}
 for name, A in here.items():
     z0 = where[name]
     ax.plot(z0.real, z0.imag, "o", color="black", ms=4, zorder=6)
@@ -163,7 +172,9 @@ ax.set_ylim(min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
 ax.set_aspect("equal")
 ax.set_xlabel("x [in]")
 ax.set_ylabel("y [in]")
-ax.set_title(f"Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = {1 / scale:.0f} in/s$^2$)")
+ax.set_title(
+    f"Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = {1 / scale:.0f} in/s$^2$)"
+)
 plt.show()
 
 # %% [markdown]
@@ -180,24 +191,33 @@ plt.show()
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="30 deg")
 assert cycle.valid.all()
-choices = {r"P: $p$ = 3 in, $\delta_3$ = 30°": ("3 in", "30 deg"),
-           r"$G_3$, the centroid": (f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
-           r"$p$ = 8 in, $\delta_3$ = -30°": ("8 in", "-30 deg")}
+choices = {
+    r"P: $p$ = 3 in, $\delta_3$ = 30°": ("3 in", "30 deg"),
+    r"$G_3$, the centroid": (f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
+    r"$p$ = 8 in, $\delta_3$ = -30°": ("8 in", "-30 deg"),
+}
 norm = Normalize(0, 500)
 fig, axes = plt.subplots(1, 3, figsize=(13, 4.6), sharex=True, sharey=True)
 for ax, (label, (pp, dd)) in zip(axes, choices.items()):
     pm = cycle.point(3, pp, dd)
     z = pm.R.to("in").magnitude
     A = np.abs(pm.A.to("in/s^2").magnitude)
-    seg = np.stack([np.column_stack([z.real, z.imag])[:-1], np.column_stack([z.real, z.imag])[1:]], axis=1)
+    seg = np.stack(
+        [np.column_stack([z.real, z.imag])[:-1], np.column_stack([z.real, z.imag])[1:]], axis=1
+    )
     lc = LineCollection(seg, cmap="viridis", norm=norm, lw=3)
     lc.set_array(A[:-1])
     ax.add_collection(lc)
     k = np.argmax(A)
     ax.plot(z.real[k], z.imag[k], "o", mfc="none", mec="black", ms=10)
-    ax.annotate(f"max {A[k]:.0f} in/s²\n({in_g(pm.A[k]):.2f} g)", (z.real[k], z.imag[k]),
-                textcoords="offset points", xytext=(8, -24), fontsize=9)
-    draw_fourbar(ax, linkage_points(cycle, 60))               # the plate A, B, P at theta2 = 60 deg
+    ax.annotate(
+        f"max {A[k]:.0f} in/s²\n({in_g(pm.A[k]):.2f} g)",
+        (z.real[k], z.imag[k]),
+        textcoords="offset points",
+        xytext=(8, -24),
+        fontsize=9,
+    )
+    draw_fourbar(ax, linkage_points(cycle, 60))  # the plate A, B, P at theta2 = 60 deg
     A60 = cycle.R_A[60].to("in").magnitude
     ax.plot([A60.real, z[60].real], [A60.imag, z[60].imag], color="#4d4d4d", lw=1, ls="--")
     ax.plot(z[60].real, z[60].imag, "*", color="black", ms=11, zorder=7)
@@ -225,25 +245,36 @@ print(f"1 lb at 1 g needs {(Q_(1, 'lb') * Q_(1, 'standard_gravity')).to('lbf'):.
 fig, ax = plt.subplots(figsize=(8.5, 4))
 colour = {"S = G2": COLORS["normal"], "G3": "black", "U = G4": COLORS["tangential"]}
 for name, (link, pp, dd) in cg.items():
-    force = masses[name] * fast.point(link, pp, dd).A                  # m A_G, a complex Quantity
+    force = masses[name] * fast.point(link, pp, dd).A  # m A_G, a complex Quantity
     size = np.abs(force.to("lbf").magnitude)
-    ax.plot(np.degrees(theta.magnitude), size, color=colour[name],
-            label=f"{name}: m = {masses[name]:~P}")
+    ax.plot(
+        np.degrees(theta.magnitude),
+        size,
+        color=colour[name],
+        label=f"{name}: m = {masses[name]:~P}",
+    )
     k = np.argmax(size)
-    at = (f"at theta2 = {np.degrees(theta.magnitude[k]):.0f} deg" if np.ptp(size) > 1e-9 * size[k]
-          else "at every angle (s omega2^2, constant)")
+    at = (
+        f"at theta2 = {np.degrees(theta.magnitude[k]):.0f} deg"
+        if np.ptp(size) > 1e-9 * size[k]
+        else "at every angle (s omega2^2, constant)"
+    )
     print(f"{name:7} largest |m A| = {size[k]:5.2f} lbf = {Q_(size[k], 'lbf').to('N'):5.2f~P} {at}")
 ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
 ax.set_ylabel(r"$|m\,\mathbf{A}_G|$ [lbf]")
 ax.set_xticks(range(0, 361, 60))
-secondary = ax.secondary_yaxis("right", functions=(lambda f: f * 4.4482216, lambda n: n / 4.4482216))
+secondary = ax.secondary_yaxis(
+    "right", functions=(lambda f: f * 4.4482216, lambda n: n / 4.4482216)
+)
 secondary.set_ylabel("[N]")
 ax.set_title("Force needed to accelerate each link's mass, 300 rpm")
 ax.legend()
 plt.show()
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-force = {name: np.abs((masses[name] * fast.point(*spec).A).m_as("lbf")) for name, spec in cg.items()}
+force = {
+    name: np.abs((masses[name] * fast.point(*spec).A).m_as("lbf")) for name, spec in cg.items()
+}
 accel = {name: np.abs(fast.point(*spec).A.m_as("in/s^2")) for name, spec in cg.items()}
 stated(force["S = G2"].max(), "0.5", sig=1), stated(np.ptp(force["S = G2"]), "0")
 stated(force["G3"].max() / force["S = G2"].max(), "10", sig=1)
@@ -264,9 +295,22 @@ assert accel["U = G4"].max() < accel["G3"].max() and masses["U = G4"] > masses["
 # curves of $\alpha_3$, $\alpha_4$ and of the three sizes.
 
 # %% mystnb={"figure": {"caption": "Animation: the coupler point P of Example 7-1 tracing its coupler curve (dashed) at 10 rad/s, with the accelerations of A, B and P and a marker on the curves."}, "image": {"alt": "Animated fourbar with its coupler curve dashed and acceleration arrows at A, B and P, beside plots with a moving marker."}}
-animate({"mechanism": "fourbar", "a": "2 in", "b": "6 in", "c": "9 in", "d": "7 in",
-         "p": "3 in", "delta3": "30 deg", "theta2": "0 deg", "omega2": "10 rad/s",
-         "alpha2": "0 rad/s^2"}, trace=("P",), title="Coupler point P")
+animate(
+    {
+        "mechanism": "fourbar",
+        "a": "2 in",
+        "b": "6 in",
+        "c": "9 in",
+        "d": "7 in",
+        "p": "3 in",
+        "delta3": "30 deg",
+        "theta2": "0 deg",
+        "omega2": "10 rad/s",
+        "alpha2": "0 rad/s^2",
+    },
+    trace=("P",),
+    title="Coupler point P",
+)
 
 # %% [markdown]
 # ## Explore
@@ -290,13 +334,17 @@ def draw(delta3=30, p=3.0):
     ax.add_collection(lc)
     fig.colorbar(lc, ax=ax, label=r"$|\mathbf{A}_P|$ [in/s$^2$]", extend="max")
     draw_fourbar(ax, linkage_points(res, 60))
-    ax.set_xlim(min(-6, z.real.min() - 1), max(10, z.real.max() + 1))   # one frame unless P leaves it
+    ax.set_xlim(
+        min(-6, z.real.min() - 1), max(10, z.real.max() + 1)
+    )  # one frame unless P leaves it
     ax.set_ylim(min(-6, z.imag.min() - 1), max(10, z.imag.max() + 1))
     ax.set_aspect("equal")
     ax.set_xlabel("x [in]")
     ax.set_ylabel("y [in]")
-    ax.set_title(rf"$p$ = {p:g} in, $\delta_3$ = {delta3}°: largest $|\mathbf{{A}}_P|$ {A.max():.0f} in/s²",
-                 fontsize=10)
+    ax.set_title(
+        rf"$p$ = {p:g} in, $\delta_3$ = {delta3}°: largest $|\mathbf{{A}}_P|$ {A.max():.0f} in/s²",
+        fontsize=10,
+    )
     return fig
 
 
@@ -358,9 +406,9 @@ explore(draw, delta3=(0, 360, 10, 30, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
 f4 = Q_(0.6, "lb") * Q_(2, "standard_gravity")
 stated(f4, "1.2", "lbf"), stated(f4, "5.3", "N"), stated(f4, "463", "lb*in/s^2")
 stated(Q_(1, "lbf"), "386", "lb*in/s^2"), stated(Q_(1, "lbf"), "386.09", "lb*in/s^2")
-assert np.isclose(r.point(3, "0 in", "0 deg").si("A"), r.si("A_A"))          # p = 0 is A
+assert np.isclose(r.point(3, "0 in", "0 deg").si("A"), r.si("A_A"))  # p = 0 is A
 crank_cg = fast.point(2, "1 in", "0 deg")
-assert np.allclose(np.abs(crank_cg.A_t.magnitude), 0, atol=1e-9)            # steady crank
+assert np.allclose(np.abs(crank_cg.A_t.magnitude), 0, atol=1e-9)  # steady crank
 
 # %% [markdown]
 # ## Further problems
@@ -398,10 +446,10 @@ stated(r.omega4, "-3.461", "rad/s"), stated(r.alpha4, "39.43", "rad/s^2")
 stated(abs(U.A), "247.2", "in/s^2"), stated(np.angle(U.A.magnitude, deg=True), "-104.0")
 A0 = complex(r.A_A.m_as("in/s^2"))
 k = (r.alpha3.magnitude * 1j - r.omega3.magnitude**2) * np.exp(1j * r.theta3.magnitude)
-p_min = -((A0 * np.conj(k)).real) / abs(k) ** 2                   # in
+p_min = -((A0 * np.conj(k)).real) / abs(k) ** 2  # in
 stated(p_min, "-4.12"), stated(abs(r.A_A), "200.2", "in/s^2"), stated(abs(r.A_B), "370.8", "in/s^2")
 along = np.abs(A0 + np.linspace(0, 6, 61) * k)
-assert np.all(np.diff(along) > 0)                              # grows from A to B
+assert np.all(np.diff(along) > 0)  # grows from A to B
 
 # %% [markdown]
 # ## Practice
@@ -444,11 +492,16 @@ p.answers()
 p = practice("coupler", seed=5)
 g = p.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
-    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"],
-    p=g["p"], delta3=g["delta3"])
-assert p.check("A_P_mag", abs(res.A_P))         # right
-assert not p.check("A_P_mag", abs(res.A_A))     # the pin's acceleration, not the point's
-assert p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True)) # right, a bare number in deg
+    theta2=g["theta2"],
+    omega2=g["omega2"],
+    alpha2=g["alpha2"],
+    circuit=g["circuit"],
+    p=g["p"],
+    delta3=g["delta3"],
+)
+assert p.check("A_P_mag", abs(res.A_P))  # right
+assert not p.check("A_P_mag", abs(res.A_A))  # the pin's acceleration, not the point's
+assert p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))  # right, a bare number in deg
 
 # %% [markdown]
 # ## Common mistakes

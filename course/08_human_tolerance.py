@@ -37,7 +37,7 @@ import numpy as np
 
 from accelab.course.kit import COLORS, G0, explore, in_g, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, Q_
+from accelab.solver import Q_, FourBar
 
 use_style()
 
@@ -92,9 +92,15 @@ use_style()
 # and about 2000 g at 6000 rpm.
 
 # %%
-table = {"gentle acceleration, car": 0.1, "jet takeoff": 0.3, "hard acceleration, car": 0.5,
-         "panic stop, car": 0.7, "fast cornering, car": 0.8, "roller coaster": 3.5,
-         "F-16 fighter jet": 9.0}
+table = {
+    "gentle acceleration, car": 0.1,
+    "jet takeoff": 0.3,
+    "hard acceleration, car": 0.5,
+    "panic stop, car": 0.7,
+    "fast cornering, car": 0.8,
+    "roller coaster": 3.5,
+    "F-16 fighter jet": 9.0,
+}
 for what, level in table.items():
     a = level * G0
     print(f"{what:24} {level:4.1f} g = {a.to('m/s^2'):6.2f~P} = {a.to('in/s^2'):7.0f~P}")
@@ -123,12 +129,12 @@ def ride_cycle(rpm):
     r = ride.solve(theta2=theta, omega2=Q_(rpm, "rpm"), alpha2=0, **car)
     assert r.valid.all()
     t = (theta / Q_(rpm, "rpm")).to("s").magnitude
-    A = r.A_P.to("standard_gravity").magnitude               # complex, in g
-    felt = A + 1j                                              # f = A - g, g pointing down, in g
+    A = r.A_P.to("standard_gravity").magnitude  # complex, in g
+    felt = A + 1j  # f = A - g, g pointing down, in g
     t3 = r.theta3.magnitude
-    up = 1j * np.exp(1j * (t3 - t3.mean()))                    # the car's "up", tilting with link 3
-    headward = (felt * np.conj(up)).real                       # along the spine, seat to head
-    forward = (felt * np.conj(up * -1j)).real                  # chest to back (eyeballs in), the rider faces +x
+    up = 1j * np.exp(1j * (t3 - t3.mean()))  # the car's "up", tilting with link 3
+    headward = (felt * np.conj(up)).real  # along the spine, seat to head
+    forward = (felt * np.conj(up * -1j)).real  # chest to back (eyeballs in), the rider faces +x
     return t, r, A, felt, headward, forward
 
 
@@ -153,15 +159,31 @@ fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8), gridspec_kw={"width_rati
 ax1.plot(R.real, R.imag, color="#555555", lw=1.5)
 for i in range(0, N - 1, 60):
     z, f = R[i], felt[i]
-    ax1.annotate("", xy=(z.real + f.real, z.imag + f.imag), xytext=(z.real, z.imag),
-                 arrowprops=dict(arrowstyle="-|>", color=COLORS["resultant"], lw=1.8))
+    ax1.annotate(
+        "",
+        xy=(z.real + f.real, z.imag + f.imag),
+        xytext=(z.real, z.imag),
+        arrowprops=dict(arrowstyle="-|>", color=COLORS["resultant"], lw=1.8),
+    )
     ax1.plot(z.real, z.imag, "o", color="black", ms=3)
 i = 90
 pins = [0, r.R_A[i].to("m").magnitude, r.R_B[i].to("m").magnitude, 8]
-ax1.plot([z.real for z in pins], [z.imag for z in pins], "-o", color="#9a9a9a", lw=3, ms=5,
-         mfc="white", zorder=0)
-ax1.fill([pins[1].real, pins[2].real, R[i].real], [pins[1].imag, pins[2].imag, R[i].imag],
-         color="#e0e0e0", zorder=0)
+ax1.plot(
+    [z.real for z in pins],
+    [z.imag for z in pins],
+    "-o",
+    color="#9a9a9a",
+    lw=3,
+    ms=5,
+    mfc="white",
+    zorder=0,
+)
+ax1.fill(
+    [pins[1].real, pins[2].real, R[i].real],
+    [pins[1].imag, pins[2].imag, R[i].imag],
+    color="#e0e0e0",
+    zorder=0,
+)
 ax1.set_aspect("equal")
 ax1.set_xlabel("x [m]")
 ax1.set_ylabel("y [m]")
@@ -181,7 +203,7 @@ plt.show()
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 stated(np.abs(A).max(), "0.8"), stated(np.abs(felt).min(), "0.5"), stated(np.abs(felt).max(), "1.7")
 stated(heavy.mean() * t[-1], "1")
-assert np.abs(A).max() < 3.5 and head.mean() > np.abs(fore).mean()     # mostly along the spine
+assert np.abs(A).max() < 3.5 and head.mean() > np.abs(fore).mean()  # mostly along the spine
 
 # %% [markdown]
 # **Is it tolerable?** At 12 rpm the car's acceleration peaks at about 0.8 g, the level of fast
@@ -200,12 +222,16 @@ rows = []
 for rpm in speeds:
     t_, _, A_, felt_, head_, _ = ride_cycle(rpm)
     dt = t_[-1] / (N - 1)
-    rows.append((np.abs(A_).max(), np.abs(felt_).max(), head_.min(), (np.abs(felt_) > 2).sum() * dt))
+    rows.append(
+        (np.abs(A_).max(), np.abs(felt_).max(), head_.min(), (np.abs(felt_) > 2).sum() * dt)
+    )
 rows = np.array(rows)
 fig, ax = plt.subplots(figsize=(8, 4))
 ax.plot(speeds, rows[:, 0], "o-", color="black", label=r"peak $|\mathbf{A}_P|$")
 ax.plot(speeds, rows[:, 1], "s-", color=COLORS["normal"], label="peak felt load")
-ax.plot(speeds, rows[:, 2], "v-", color=COLORS["tangential"], label="least felt load along the spine")
+ax.plot(
+    speeds, rows[:, 2], "v-", color=COLORS["tangential"], label="least felt load along the spine"
+)
 ax.axhline(3.5, color="#999999", ls=":")
 ax.text(6, 3.55, "roller coaster, Table 7-1", fontsize=8, color="#555555", va="bottom")
 ax.axhline(0, color="#999999", lw=0.8)
@@ -216,8 +242,10 @@ ax.legend(fontsize=9)
 plt.show()
 for rpm, (peak, fmax, hmin, above) in zip(speeds, rows):
     if rpm in (12, 16, 20, 24):
-        print(f"{rpm:2d} rpm: peak |A| {peak:.2f} g, felt up to {fmax:.2f} g, spine load down to "
-              f"{hmin:+.2f} g, above 2 g for {above:.2f} s per cycle")
+        print(
+            f"{rpm:2d} rpm: peak |A| {peak:.2f} g, felt up to {fmax:.2f} g, spine load down to "
+            f"{hmin:+.2f} g, above 2 g for {above:.2f} s per cycle"
+        )
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 peak_of = dict(zip(speeds, rows[:, 0]))
@@ -228,7 +256,7 @@ def least_spine(rpm):
     return ride_cycle(rpm)[4].min()
 
 
-lo, hi = 12.0, 24.0                                   # the speed where the spine load reaches 0
+lo, hi = 12.0, 24.0  # the speed where the spine load reaches 0
 for _ in range(30):
     mid = 0.5 * (lo + hi)
     lo, hi = (mid, hi) if least_spine(mid) > 0 else (lo, mid)
@@ -253,8 +281,10 @@ swing = FourBar(a="30 mm", b="200 mm", c="100 mm", d="200 mm")
 s = swing.solve(theta2=theta, omega2="30 rpm", alpha2=0)
 seat = s.point(4, "600 mm", "165 deg")
 print(f"swing arc: {np.degrees(np.ptp(s.theta4.magnitude)):.0f} deg")
-print(f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
-      f"(tangential up to {in_g(seat.A_t).max():.2f} g, normal up to {in_g(seat.A_n).max():.2f} g)")
+print(
+    f"seat acceleration: up to {in_g(seat.A).max():.2f} g "
+    f"(tangential up to {in_g(seat.A_t).max():.2f} g, normal up to {in_g(seat.A_n).max():.2f} g)"
+)
 stated(np.degrees(np.ptp(s.theta4.magnitude)), "36"), stated(in_g(seat.A).max(), "0.25", sig=1)
 
 # %% [markdown]
@@ -282,13 +312,14 @@ stated(np.degrees(np.ptp(s.theta4.magnitude)), "36"), stated(in_g(seat.A).max(),
 # the square of the speed while the cycles come faster, and watch for the moment the spine load
 # crosses zero.
 
+
 # %% mystnb={"figure": {"caption": "The ride at four crank speeds: the size of the car's acceleration and the two components of the felt load over 10 s."}, "image": {"alt": "Four plots of acceleration and felt load in g against time, one per crank speed from 6 to 24 rpm."}}
 def draw(speed=12):
     rpm = speed
     t, _, A, felt, head, fore = ride_cycle(rpm)
-    turns = int(np.ceil(10 / t[-1]))                  # repeat the cycle to fill 10 s
+    turns = int(np.ceil(10 / t[-1]))  # repeat the cycle to fill 10 s
     T = np.concatenate([t[:-1] + k * t[-1] for k in range(turns)])
-    rep = lambda x: np.tile(x[:-1], turns)            # noqa: E731
+    rep = lambda x: np.tile(x[:-1], turns)  # noqa: E731
     fig, ax = plt.subplots(figsize=(6.4, 4))
     ax.plot(T, rep(np.abs(A)), color="black", lw=2, label=r"$|\mathbf{A}_P|$")
     ax.plot(T, rep(head), color=COLORS["normal"], lw=2, label="felt, along the spine")
@@ -299,7 +330,9 @@ def draw(speed=12):
     ax.set_xlim(0, 10)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("[g]")
-    ax.set_title(f"{rpm} rpm: a cycle every {60 / rpm:.1f} s, peak {np.abs(A).max():.2f} g", fontsize=11)
+    ax.set_title(
+        f"{rpm} rpm: a cycle every {60 / rpm:.1f} s, peak {np.abs(A).max():.2f} g", fontsize=11
+    )
     ax.legend(fontsize=8, loc="upper right", ncol=3)
     return fig
 
@@ -443,8 +476,8 @@ from accelab.solver import RotatingPoint
 p = practice("tolerance", seed=5)
 g = p.given
 A = RotatingPoint(p=g["R"]).solve(theta2="0 deg", omega2=g["omega"], alpha2=g["alpha"]).A
-assert p.check("A_g", abs(A).to("standard_gravity")) # right
-assert not p.check("A_g", abs(A).to("m/s^2").magnitude) # m/s^2 handed in where g was asked
+assert p.check("A_g", abs(A).to("standard_gravity"))  # right
+assert not p.check("A_g", abs(A).to("m/s^2").magnitude)  # m/s^2 handed in where g was asked
 
 # %% [markdown]
 # ## Common mistakes

@@ -35,7 +35,7 @@ import numpy as np
 
 from accelab.course.kit import COLORS, explore, polar, stated, use_style
 from accelab.exercises.practice import practice
-from accelab.solver import FourBar, GearedFiveBar, InvertedSliderCrank, Q_, SliderCrank
+from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
 
 use_style()
 
@@ -117,8 +117,14 @@ use_style()
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
-r = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="20 rad/s^3",
-                  p="3 in", delta3="30 deg")
+r = fourbar.solve(
+    theta2="30 deg",
+    omega2="10 rad/s",
+    alpha2="-5 rad/s^2",
+    jerk2="20 rad/s^3",
+    p="3 in",
+    delta3="30 deg",
+)
 print(f"phi3 = jerk3 = {r.jerk3:.2f~P}, phi4 = jerk4 = {r.jerk4:.2f~P}")
 for name in ("J_A", "J_B", "J_P"):
     z = getattr(r, name)
@@ -129,26 +135,40 @@ for name in ("J_A", "J_B", "J_P"):
 # solver; then eq. 7.40 for $\mathbf{J}_B$ and eq. 7.41 for the coupler point.
 
 # %%
-a, b, c = 2.0, 6.0, 9.0                                        # in
+a, b, c = 2.0, 6.0, 9.0  # in
 t2, w2, al2, ph2 = np.radians(30), 10.0, -5.0, 20.0
 t3, t4 = r.theta3.magnitude, r.theta4.magnitude
 w3, w4, al3, al4 = (getattr(r, k).magnitude for k in ("omega3", "omega4", "alpha3", "alpha4"))
-A, B, C = a * w2**3 * np.sin(t2), 3 * a * w2 * al2 * np.cos(t2), a * ph2 * np.sin(t2)   # eq. 7.36a
+A, B, C = a * w2**3 * np.sin(t2), 3 * a * w2 * al2 * np.cos(t2), a * ph2 * np.sin(t2)  # eq. 7.36a
 D, E, F = b * w3**3 * np.sin(t3), 3 * b * w3 * al3 * np.cos(t3), c * w4**3 * np.sin(t4)
 G, H, K = 3 * c * w4 * al4 * np.cos(t4), c * np.sin(t4), b * np.sin(t3)
-L, M, N = a * w2**3 * np.cos(t2), 3 * a * w2 * al2 * np.sin(t2), a * ph2 * np.cos(t2)   # eq. 7.37a
+L, M, N = a * w2**3 * np.cos(t2), 3 * a * w2 * al2 * np.sin(t2), a * ph2 * np.cos(t2)  # eq. 7.37a
 P, Q, R = b * w3**3 * np.cos(t3), 3 * b * w3 * al3 * np.sin(t3), b * np.cos(t3)
 S, T, U = c * w4**3 * np.cos(t4), 3 * c * w4 * al4 * np.sin(t4), c * np.cos(t4)
-phi4 = (K * N - K * L - K * M - K * P - K * Q + A * R - B * R - C * R + D * R - E * R - F * R
-        + G * R + K * S + K * T) / (K * U - H * R)                                    # eq. 7.39
-phi3 = (A - B - C + D - E - F + G + H * phi4) / K                                      # eq. 7.36b
-assert np.isclose(K * U - H * R, b * c * np.sin(t3 - t4), rtol=1e-12)                 # KU - HR
+phi4 = (
+    K * N
+    - K * L
+    - K * M
+    - K * P
+    - K * Q
+    + A * R
+    - B * R
+    - C * R
+    + D * R
+    - E * R
+    - F * R
+    + G * R
+    + K * S
+    + K * T
+) / (K * U - H * R)  # eq. 7.39
+phi3 = (A - B - C + D - E - F + G + H * phi4) / K  # eq. 7.36b
+assert np.isclose(K * U - H * R, b * c * np.sin(t3 - t4), rtol=1e-12)  # KU - HR
 assert np.isclose(phi3, r.jerk3.magnitude, rtol=1e-12)
 assert np.isclose(phi4, r.jerk4.magnitude, rtol=1e-12)
 e4 = np.exp(1j * t4)
-J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4                # eq. 7.40
+J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4  # eq. 7.40
 assert np.isclose(J_B, r.J_B.to("in/s^3").magnitude, rtol=1e-12)
-J_PA = r.point(3, "3 in", "30 deg").J - r.J_A                                          # eq. 7.41
+J_PA = r.point(3, "3 in", "30 deg").J - r.J_A  # eq. 7.41
 assert np.isclose((r.J_A + J_PA - r.J_P).to("in/s^3").magnitude, 0, atol=1e-9)
 print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as the solver says")
 
@@ -161,19 +181,25 @@ print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as th
 # (central differences) and lay the result over the solver's `jerk3`.
 
 # %% mystnb={"figure": {"caption": "The coupler's angular jerk from the solver and by numerical differentiation of its acceleration (left); they differ by the finite-difference error (right)."}, "image": {"alt": "Left, two overlapping curves of jerk against crank angle; right, their small difference."}}
-h = np.radians(0.5)                                              # grid step of theta2
+h = np.radians(0.5)  # grid step of theta2
 grid = np.arange(0, 2 * np.pi + h / 2, h)
 cyc = fourbar.solve(theta2=Q_(grid, "rad"), omega2="10 rad/s", alpha2=0)
 alpha3 = cyc.alpha3.magnitude
-numeric = 10.0 * (np.roll(alpha3, -1) - np.roll(alpha3, 1)) / (2 * h)   # periodic central difference
-numeric[[0, -1]] = 10.0 * (alpha3[1] - alpha3[-2]) / (2 * h)            # 0 and 360 deg are one point
+numeric = 10.0 * (np.roll(alpha3, -1) - np.roll(alpha3, 1)) / (2 * h)  # periodic central difference
+numeric[[0, -1]] = 10.0 * (alpha3[1] - alpha3[-2]) / (2 * h)  # 0 and 360 deg are one point
 jerk3 = cyc.jerk3.magnitude
 error = np.abs(numeric - jerk3)
 deg = np.degrees(grid)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
 ax1.plot(deg, jerk3, color="black", lw=2, label=r"$\varphi_3$, solver (eq. 7.39)")
-ax1.plot(deg[::12], numeric[::12], "o", color=COLORS["tangential"], ms=5,
-         label=r"$\omega_2\,\Delta\alpha_3/\Delta\theta_2$ (central differences)")
+ax1.plot(
+    deg[::12],
+    numeric[::12],
+    "o",
+    color=COLORS["tangential"],
+    ms=5,
+    label=r"$\omega_2\,\Delta\alpha_3/\Delta\theta_2$ (central differences)",
+)
 ax1.set_ylabel(r"$\varphi_3$ [rad/s$^3$]")
 ax1.set_title("Jerk of the coupler at 10 rad/s")
 ax1.legend(fontsize=9)
@@ -184,10 +210,12 @@ for ax in (ax1, ax2):
     ax.set_xlabel(r"$\theta_2$ [deg]")
     ax.set_xticks(range(0, 361, 60))
 plt.show()
-print(f"largest difference: {error.max() / np.abs(jerk3).max():.1e} of the largest jerk "
-      f"(step {np.degrees(h)} deg); halving the step divides it by about 4")
+print(
+    f"largest difference: {error.max() / np.abs(jerk3).max():.1e} of the largest jerk "
+    f"(step {np.degrees(h)} deg); halving the step divides it by about 4"
+)
 assert error.max() < 1e-3 * np.abs(jerk3).max()
-coarse = cyc.alpha3.magnitude[::2]                                 # the same check at step 2h
+coarse = cyc.alpha3.magnitude[::2]  # the same check at step 2h
 numeric2 = 10.0 * (np.roll(coarse, -1) - np.roll(coarse, 1)) / (4 * h)
 numeric2[[0, -1]] = 10.0 * (coarse[1] - coarse[-2]) / (4 * h)
 stated(np.abs(numeric2 - jerk3[::2]).max() / error.max(), "4", sig=1)
@@ -199,23 +227,34 @@ stated(np.abs(numeric2 - jerk3[::2]).max() / error.max(), "4", sig=1)
 # speed and acceleration follow from a Taylor expansion, so we can solve both instants and take
 # $(\alpha_3(\Delta t) - \alpha_3(-\Delta t))/2\Delta t$.
 
+
 # %%
 def crank_at(dt):
     """theta2, omega2, alpha2 at time dt for a motion with constant jerk 20 rad/s^3."""
-    return (np.radians(30) + 10 * dt - 5 * dt**2 / 2 + 20 * dt**3 / 6,
-            10 - 5 * dt + 20 * dt**2 / 2, -5 + 20 * dt)
+    return (
+        np.radians(30) + 10 * dt - 5 * dt**2 / 2 + 20 * dt**3 / 6,
+        10 - 5 * dt + 20 * dt**2 / 2,
+        -5 + 20 * dt,
+    )
 
 
 dt = 1e-4
-later, earlier = (fourbar.solve(theta2=Q_(th, "rad"), omega2=Q_(w, "rad/s"),
-                                alpha2=Q_(al, "rad/s^2"), jerk2="20 rad/s^3")
-                  for th, w, al in (crank_at(dt), crank_at(-dt)))
+later, earlier = (
+    fourbar.solve(
+        theta2=Q_(th, "rad"), omega2=Q_(w, "rad/s"), alpha2=Q_(al, "rad/s^2"), jerk2="20 rad/s^3"
+    )
+    for th, w, al in (crank_at(dt), crank_at(-dt))
+)
 fd = (later.alpha3 - earlier.alpha3).magnitude / (2 * dt)
 fdJ = (later.A_B - earlier.A_B).to("in/s^2").magnitude / (2 * dt)
 J_B = r.J_B.to("in/s^3").magnitude
-print(f"(alpha3(+dt) - alpha3(-dt)) / 2dt = {fd:.4f} rad/s^3, solver jerk3 = {r.jerk3.magnitude:.4f}")
+print(
+    f"(alpha3(+dt) - alpha3(-dt)) / 2dt = {fd:.4f} rad/s^3, solver jerk3 = {r.jerk3.magnitude:.4f}"
+)
 print(f"(A_B(+dt) - A_B(-dt)) / 2dt = {fdJ:.2f} in/s^3, solver J_B = {J_B:.2f} in/s^3")
-print(f"relative differences: {abs(fd / r.jerk3.magnitude - 1):.1e} and {abs(fdJ - J_B) / abs(J_B):.1e}")
+print(
+    f"relative differences: {abs(fd / r.jerk3.magnitude - 1):.1e} and {abs(fdJ - J_B) / abs(J_B):.1e}"
+)
 assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_B)
 
 # %% [markdown]
@@ -233,14 +272,20 @@ deg = np.degrees(theta.magnitude)
 cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="30 deg")
 engine = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="3000 rpm", alpha2=0)
 isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg").solve(
-    theta2=theta, omega2="10 rad/s", alpha2=0)
-fivebar = GearedFiveBar(a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in", lam=-2,
-                        phi="30 deg").solve(theta2=theta, omega2="20 rad/s", alpha2=0)
+    theta2=theta, omega2="10 rad/s", alpha2=0
+)
+fivebar = GearedFiveBar(
+    a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in", lam=-2, phi="30 deg"
+).solve(theta2=theta, omega2="20 rad/s", alpha2=0)
 fig, axes = plt.subplots(2, 2, figsize=(11, 7))
 ax = axes[0, 0]
 for name, colour in (("J_A", COLORS["normal"]), ("J_B", COLORS["tangential"]), ("J_P", "black")):
-    ax.plot(deg, np.abs(getattr(cyc, name).to("in/s^3").magnitude), color=colour,
-            label=rf"$|\mathbf{{J}}_{name[-1]}|$")
+    ax.plot(
+        deg,
+        np.abs(getattr(cyc, name).to("in/s^3").magnitude),
+        color=colour,
+        label=rf"$|\mathbf{{J}}_{name[-1]}|$",
+    )
 ax.set_ylabel(r"[in/s$^3$]")
 ax.set_title("Fourbar at 10 rad/s: linear jerk of A, B, P")
 ax.legend(fontsize=9)
@@ -260,8 +305,10 @@ for ax in axes.flat:
     ax.set_xlabel(r"$\theta_2$ [deg]")
     ax.set_xticks(range(0, 361, 60))
 plt.show()
-print(f"piston: largest |d'''| = {np.abs(engine.d_dddot.to('m/s^3').magnitude).max():.3g} m/s^3 "
-      f"at 3000 rpm; at 6000 rpm it would be 8 times that")
+print(
+    f"piston: largest |d'''| = {np.abs(engine.d_dddot.to('m/s^3').magnitude).max():.3g} m/s^3 "
+    f"at 3000 rpm; at 6000 rpm it would be 8 times that"
+)
 twice = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
 stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).max(), "8")
 
@@ -285,27 +332,29 @@ stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).
 # checks the formula.
 
 # %% mystnb={"figure": {"caption": "A spring and mass answering a change of acceleration: the less jerk, the less vibration (mostly)."}, "image": {"alt": "Line plots of the response of a spring-mass system to acceleration ramps of different steepness."}}
-wn = 2 * np.pi                                                    # natural period T_n = 1 s
+wn = 2 * np.pi  # natural period T_n = 1 s
 dt = 1e-3
 t = np.arange(0, 6, dt)
-impulse = np.sin(wn * t) / wn * dt                                # response to a unit impulse
+impulse = np.sin(wn * t) / wn * dt  # response to a unit impulse
 
 
 def leftover(tau):
     """Amplitude of the vibration left after a base acceleration ramps 0 -> 1 in time tau."""
     A = np.clip(t / tau, 0, 1) if tau > 0 else np.ones_like(t)
-    x = -np.convolve(A, impulse)[: len(t)]                        # x'' + wn^2 x = -A(t)
+    x = -np.convolve(A, impulse)[: len(t)]  # x'' + wn^2 x = -A(t)
     tail = t > tau + 1e-9
-    return x, np.abs(x[tail] + 1 / wn**2).max() * wn**2           # in units of A0/wn^2
+    return x, np.abs(x[tail] + 1 / wn**2).max() * wn**2  # in units of A0/wn^2
 
 
 taus = np.linspace(0, 3, 61)
 simulated = np.array([leftover(tau)[1] for tau in taus])
-formula = np.abs(np.sinc(taus))                                   # sin(pi tau)/(pi tau), T_n = 1 s
+formula = np.abs(np.sinc(taus))  # sin(pi tau)/(pi tau), T_n = 1 s
 assert np.allclose(simulated, formula, atol=5e-3)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
-for tau, colour, label in ((0, COLORS["tangential"], "step: infinite jerk"),
-                           (1.5, COLORS["normal"], r"ramp over $\tau$ = 1.5 $T_n$")):
+for tau, colour, label in (
+    (0, COLORS["tangential"], "step: infinite jerk"),
+    (1.5, COLORS["normal"], r"ramp over $\tau$ = 1.5 $T_n$"),
+):
     x, _ = leftover(tau)
     ax1.plot(t, -x * wn**2, color=colour, label=label)
 ax1.set_xlabel(r"time [$T_n$]")
@@ -342,7 +391,7 @@ def draw(theta2=60):
     i = int(round(theta2))
     al = steady.alpha3.magnitude
     phi3 = steady.jerk3.magnitude[i]
-    slope = phi3 / 10.0 * np.pi / 180                            # d(alpha3)/d(theta2) per degree
+    slope = phi3 / 10.0 * np.pi / 180  # d(alpha3)/d(theta2) per degree
     fig, ax = plt.subplots(figsize=(6.4, 4))
     ax.plot(deg, al, color="black", lw=2)
     span = np.array([-25, 25])
@@ -351,7 +400,9 @@ def draw(theta2=60):
     ax.set_xlabel(r"$\theta_2$ [deg]")
     ax.set_ylabel(r"$\alpha_3$ [rad/s$^2$]")
     ax.set_xticks(range(0, 361, 60))
-    ax.set_title(rf"$\theta_2$ = {theta2}°: $\varphi_3$ = {phi3:.0f} rad/s$^3$ (the slope)", fontsize=11)
+    ax.set_title(
+        rf"$\theta_2$ = {theta2}°: $\varphi_3$ = {phi3:.0f} rad/s$^3$ (the slope)", fontsize=11
+    )
     return fig
 
 
@@ -403,11 +454,20 @@ explore(draw, theta2=(0, 360, 5, 60, "deg"), values=(30, 100, 200, 300))
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 steady = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2=0)
 J_A = steady.J_A.to("in/s^3").magnitude
-assert np.isclose(J_A, -2 * 10**3 * 1j * np.exp(1j * np.radians(30)))     # -a omega2^3 j e^{j theta2}
-assert np.isclose(np.angle(J_A / steady.V_A.magnitude, deg=True) % 360, 180)  # opposite the velocity
+assert np.isclose(J_A, -2 * 10**3 * 1j * np.exp(1j * np.radians(30)))  # -a omega2^3 j e^{j theta2}
+assert np.isclose(
+    np.angle(J_A / steady.V_A.magnitude, deg=True) % 360, 180
+)  # opposite the velocity
 e2 = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
-stated(np.abs(e2.d_ddot.magnitude).max() / np.abs(SliderCrank(a="40 mm", b="130 mm").solve(
-    theta2=theta, omega2="3000 rpm", alpha2=0).d_ddot.magnitude).max(), "4")
+stated(
+    np.abs(e2.d_ddot.magnitude).max()
+    / np.abs(
+        SliderCrank(a="40 mm", b="130 mm")
+        .solve(theta2=theta, omega2="3000 rpm", alpha2=0)
+        .d_ddot.magnitude
+    ).max(),
+    "4",
+)
 
 # %% [markdown]
 # ## Further problems
@@ -488,10 +548,11 @@ p.answers()
 p = practice("jerk", seed=5)
 g = p.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
-    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("jerk4", res.jerk4)              # right
-assert not p.check("jerk4", res.alpha4)         # an angular acceleration, not a jerk
-assert p.check("J_B_mag", abs(res.J_B))         # right
+    theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"]
+)
+assert p.check("jerk4", res.jerk4)  # right
+assert not p.check("jerk4", res.alpha4)  # an angular acceleration, not a jerk
+assert p.check("J_B_mag", abs(res.J_B))  # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -39,7 +39,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.kit import COLORS, explore, stated, use_style, vector
-from accelab.solver import AccelabError, FourBar, Q_, VectorLoopLinkage
+from accelab.solver import Q_, AccelabError, FourBar, VectorLoopLinkage
 from accelab.solver.vectorloops.examples import sixbar_slider, watt2_sixbar
 
 use_style()
@@ -96,7 +96,7 @@ use_style()
 # residual at each step and checks the result against the closed form of notebook 3.
 
 # %%
-a, b, c, d = 2.0, 6.0, 9.0, 7.0                                 # in
+a, b, c, d = 2.0, 6.0, 9.0, 7.0  # in
 theta2 = np.radians(30)
 
 
@@ -107,24 +107,27 @@ def loop(q):
 
 
 def jacobian(q):
-    return np.array([[-b * np.sin(q[0]), c * np.sin(q[1])],
-                     [b * np.cos(q[0]), -c * np.cos(q[1])]])
+    return np.array([[-b * np.sin(q[0]), c * np.sin(q[1])], [b * np.cos(q[0]), -c * np.cos(q[1])]])
 
 
 q = np.radians([90.0, 130.0])
 history = [np.linalg.norm(loop(q))]
 for i in range(6):
-    q = q + np.linalg.solve(jacobian(q), -loop(q))              # one Newton-Raphson step
+    q = q + np.linalg.solve(jacobian(q), -loop(q))  # one Newton-Raphson step
     history.append(np.linalg.norm(loop(q)))
 for i, res in enumerate(history):
     print(f"step {i}: |F| = {res:.2e} in")
 closed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", omega2="10 rad/s")
-assert np.allclose(np.exp(1j * q), np.exp(1j * np.array([closed.theta3.magnitude, closed.theta4.magnitude])))
-print(f"theta3 = {np.degrees(q[0]) % 360:.6f} deg, theta4 = {np.degrees(q[1]) % 360:.6f} deg "
-      f"(closed form: {closed.theta3.to('deg').magnitude:.6f}, {closed.theta4.to('deg').magnitude:.6f})")
+assert np.allclose(
+    np.exp(1j * q), np.exp(1j * np.array([closed.theta3.magnitude, closed.theta4.magnitude]))
+)
+print(
+    f"theta3 = {np.degrees(q[0]) % 360:.6f} deg, theta4 = {np.degrees(q[1]) % 360:.6f} deg "
+    f"(closed form: {closed.theta3.to('deg').magnitude:.6f}, {closed.theta4.to('deg').magnitude:.6f})"
+)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
-assert history[4] < 1e-12 < history[3] and history[0] > 0.1        # round-off after four steps
+assert history[4] < 1e-12 < history[3] and history[0] > 0.1  # round-off after four steps
 assert all(history[k + 1] < 10 * history[k] ** 2 for k in range(3))  # each about squaring
 
 # %% [markdown]
@@ -146,20 +149,23 @@ print(f"omega3 = {omega34[0]:.6f} rad/s, omega4 = {omega34[1]:.6f} rad/s, as the
 # sensible, but their boundaries are ragged: a guess near a boundary can land anywhere.
 
 # %% mystnb={"figure": {"caption": "Where plain Newton-Raphson ends from each starting guess: the open circuit, the crossed circuit, or no solution."}, "image": {"alt": "Map of starting guesses for the two unknown angles, coloured by the assembly Newton-Raphson converges to."}}
-crossed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", omega2="10 rad/s",
-                                                                  circuit="crossed")
-g3, g4 = np.meshgrid(np.radians(np.linspace(-180, 180, 200)), np.radians(np.linspace(-180, 180, 200)))
+crossed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
+    theta2="30 deg", omega2="10 rad/s", circuit="crossed"
+)
+g3, g4 = np.meshgrid(
+    np.radians(np.linspace(-180, 180, 200)), np.radians(np.linspace(-180, 180, 200))
+)
 t3, t4 = g3.copy(), g4.copy()
 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-    for i in range(30):                                         # Newton on all guesses at once
+    for i in range(30):  # Newton on all guesses at once
         z = a * np.exp(1j * theta2) + b * np.exp(1j * t3) - c * np.exp(1j * t4) - d
         j11, j12, j21, j22 = -b * np.sin(t3), c * np.sin(t4), b * np.cos(t3), -c * np.cos(t4)
         det = j11 * j22 - j12 * j21
         t3, t4 = t3 - (j22 * z.real - j12 * z.imag) / det, t4 - (-j21 * z.real + j11 * z.imag) / det
-        t3, t4 = np.angle(np.exp(1j * t3)), np.angle(np.exp(1j * t4))   # angles are periodic
+        t3, t4 = np.angle(np.exp(1j * t3)), np.angle(np.exp(1j * t4))  # angles are periodic
 res = np.abs(a * np.exp(1j * theta2) + b * np.exp(1j * t3) - c * np.exp(1j * t4) - d)
 res[~np.isfinite(res)] = np.inf
-ended = np.full(g3.shape, 2)                                     # 2: did not converge
+ended = np.full(g3.shape, 2)  # 2: did not converge
 for k, sol in enumerate((closed, crossed)):
     near = np.abs(np.exp(1j * t3) - np.exp(1j * sol.theta3.magnitude)) < 1e-6
     ended[(res < 1e-9) & near] = k
@@ -167,18 +173,30 @@ fig, ax = plt.subplots(figsize=(6.2, 5))
 cmap = plt.matplotlib.colors.ListedColormap([COLORS["normal"], COLORS["tangential"], "#dddddd"])
 ax.pcolormesh(np.degrees(g3), np.degrees(g4), ended, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto")
 for k, (sol, name) in enumerate(((closed, "open"), (crossed, "crossed"))):
-    ax.plot(*np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
-            "o", mec="black", mfc="white", ms=9)
-    ax.annotate(name, np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude,
-                                                                   sol.theta4.magnitude])))),
-                textcoords="offset points", xytext=(8, 6), fontsize=11, fontweight="bold")
+    ax.plot(
+        *np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
+        "o",
+        mec="black",
+        mfc="white",
+        ms=9,
+    )
+    ax.annotate(
+        name,
+        np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
+        textcoords="offset points",
+        xytext=(8, 6),
+        fontsize=11,
+        fontweight="bold",
+    )
 ax.plot(90, 130, "k+", ms=12, mew=2)
 ax.set_xlabel(r"guess for $\theta_3$ [deg]")
 ax.set_ylabel(r"guess for $\theta_4$ [deg]")
 ax.set_title("Where plain Newton-Raphson ends:\nopen (blue), crossed (vermillion), nowhere (grey)")
 plt.show()
-print(f"open: {np.mean(ended == 0):.0%} of the guesses, crossed: {np.mean(ended == 1):.0%}, "
-      f"neither after 30 steps: {np.mean(ended == 2):.1%}")
+print(
+    f"open: {np.mean(ended == 0):.0%} of the guesses, crossed: {np.mean(ended == 1):.0%}, "
+    f"neither after 30 steps: {np.mean(ended == 2):.1%}"
+)
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 assert g3.size == 40_000
@@ -196,23 +214,30 @@ stated(np.mean(ended == 2), "0.3", sig=1)
 q = np.radians([-73.4, -14.9])
 for i in range(4):
     step = np.linalg.solve(jacobian(q), -loop(q))
-    print(f"plain Newton step {i}: theta3, theta4 = {np.degrees(q[0]):7.2f}, {np.degrees(q[1]):7.2f} deg, "
-          f"|F| = {np.linalg.norm(loop(q)):.3f} in")
+    print(
+        f"plain Newton step {i}: theta3, theta4 = {np.degrees(q[0]):7.2f}, {np.degrees(q[1]):7.2f} deg, "
+        f"|F| = {np.linalg.norm(loop(q)):.3f} in"
+    )
     q = q + step
 
 
 def fourbar_loops(guess3, guess4):
     return VectorLoopLinkage(
-        vectors={"R1": {"length": "7 in", "angle": "0 deg"},
-                 "R2": {"length": "2 in", "angle": "input"},
-                 "R3": {"length": "6 in", "angle": "unknown", "guess": guess3},
-                 "R4": {"length": "9 in", "angle": "unknown", "guess": guess4}},
-        loops=["R2 + R3 - R4 - R1"])
+        vectors={
+            "R1": {"length": "7 in", "angle": "0 deg"},
+            "R2": {"length": "2 in", "angle": "input"},
+            "R3": {"length": "6 in", "angle": "unknown", "guess": guess3},
+            "R4": {"length": "9 in", "angle": "unknown", "guess": guess4},
+        },
+        loops=["R2 + R3 - R4 - R1"],
+    )
 
 
 s = fourbar_loops("-73.4 deg", "-14.9 deg").solve(theta2="30 deg", omega2="10 rad/s")
-print(f"solver from the same guess: theta3 = {s.vectors['R3'].angle.to('deg'):.4f~P}, "
-      f"theta4 = {s.vectors['R4'].angle.to('deg'):.4f~P} after {s.iterations} (damped) iterations")
+print(
+    f"solver from the same guess: theta3 = {s.vectors['R3'].angle.to('deg'):.4f~P}, "
+    f"theta4 = {s.vectors['R4'].angle.to('deg'):.4f~P} after {s.iterations} (damped) iterations"
+)
 try:
     fourbar_loops("180 deg", "180 deg").solve(theta2="30 deg", omega2="10 rad/s")
 except AccelabError as err:
@@ -244,17 +269,21 @@ linkage = VectorLoopLinkage(**slider_six)
 r = linkage.solve(theta2="57 deg", omega2="12 rad/s", alpha2="-30 rad/s^2")
 S = r.vectors["S"]
 print(f"\nNewton-Raphson: {r.iterations} iterations from the guesses")
-print(f"theta5 = {r.vectors['R5'].angle.to('deg'):.3f~P}; slider S = {S.length.to('in'):.4f~P}, "
-      f"S' = {S.length_dot.to('in/s'):.3f~P}, S'' = {S.length_ddot.to('in/s^2'):.2f~P}")
+print(
+    f"theta5 = {r.vectors['R5'].angle.to('deg'):.3f~P}; slider S = {S.length.to('in'):.4f~P}, "
+    f"S' = {S.length_dot.to('in/s'):.3f~P}, S'' = {S.length_ddot.to('in/s^2'):.2f~P}"
+)
 print(f"A_D = {r.points['D'].A.to('in/s^2'):.2f~P}")
 # the first loop is the fourbar: it must agree with the closed form
-fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="57 deg", omega2="12 rad/s",
-                                                            alpha2="-30 rad/s^2")
+fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
+    theta2="57 deg", omega2="12 rad/s", alpha2="-30 rad/s^2"
+)
 assert np.isclose(r.vectors["R4"].alpha.magnitude, fb.alpha4.magnitude, rtol=1e-9)
 
 # %% [markdown]
 # Drawing the vectors makes the loops visible: each loop is a closed chain of arrows (the
 # signs say which way round each arrow is walked). The second loop starts at $O_4$.
+
 
 # %% mystnb={"figure": {"caption": "The sixbar with a slider at theta2 = 57 deg, drawn as its two vector loops."}, "image": {"alt": "Drawing of a sixbar linkage with the vectors of loop 1 in blue and loop 2 in vermillion."}}
 def draw_loops(ax, description, result, starts, i=None, show_names=True):
@@ -272,7 +301,7 @@ def draw_loops(ax, description, result, starts, i=None, show_names=True):
         here = start
         for term in (t.strip() for t in text.replace("-", "+ -").split("+") if t.strip()):
             name = term.lstrip("- ").strip()
-            if term.startswith("-"):                 # walked backwards: the arrow ends here
+            if term.startswith("-"):  # walked backwards: the arrow ends here
                 tail = here = here - z[name]
             else:
                 tail, here = here, here + z[name]
@@ -281,11 +310,23 @@ def draw_loops(ax, description, result, starts, i=None, show_names=True):
             drawn.add(name)
             tip = tail + z[name]
             ends += [tail, tip]
-            ax.annotate("", xy=(tip.real, tip.imag), xytext=(tail.real, tail.imag),
-                        arrowprops=dict(arrowstyle="-|>", color=colours[k], lw=2.2, shrinkA=0, shrinkB=0))
+            ax.annotate(
+                "",
+                xy=(tip.real, tip.imag),
+                xytext=(tail.real, tail.imag),
+                arrowprops=dict(arrowstyle="-|>", color=colours[k], lw=2.2, shrinkA=0, shrinkB=0),
+            )
             if show_names:
                 mid = tail + 0.5 * z[name] + 0.6 * 1j * z[name] / max(abs(z[name]), 1e-9)
-                ax.text(mid.real, mid.imag, name, color=colours[k], fontsize=10, ha="center", va="center")
+                ax.text(
+                    mid.real,
+                    mid.imag,
+                    name,
+                    color=colours[k],
+                    fontsize=10,
+                    ha="center",
+                    va="center",
+                )
     ends = np.array(ends)
     ax.set_xlim(ends.real.min() - 1.5, ends.real.max() + 1.5)
     ax.set_ylim(ends.imag.min() - 1.5, ends.imag.max() + 1.5)
@@ -339,8 +380,10 @@ for ax in axes[1]:
     ax.set_xticks(range(0, 361, 60))
 plt.show()
 its = np.asarray(cycle.iterations)
-print(f"{its.sum()} iterations for {its.size} positions (mean {its.mean():.2f}, most {its.max()}); "
-      f"S from {S.length.to('in').magnitude.min():.3f} to {S.length.to('in').magnitude.max():.3f} in")
+print(
+    f"{its.sum()} iterations for {its.size} positions (mean {its.mean():.2f}, most {its.max()}); "
+    f"S from {S.length.to('in').magnitude.min():.3f} to {S.length.to('in').magnitude.max():.3f} in"
+)
 
 # %% [markdown]
 # ### 3. A Watt II sixbar
@@ -364,8 +407,12 @@ ax1.set_xlabel("x [in]")
 ax1.set_ylabel("y [in]")
 ax1.set_title(r"Watt II at $\theta_2$ = 57°")
 for name, colour in (("R4", COLORS["normal"]), ("R6", COLORS["tangential"])):
-    ax2.plot(deg, w.vectors[name].alpha.magnitude, color=colour,
-             label=rf"$\alpha$ of {name} (link {name[1]})")
+    ax2.plot(
+        deg,
+        w.vectors[name].alpha.magnitude,
+        color=colour,
+        label=rf"$\alpha$ of {name} (link {name[1]})",
+    )
 ax2.set_xlabel(r"$\theta_2$ [deg]")
 ax2.set_ylabel(r"$\alpha$ [rad/s$^2$]")
 ax2.set_xticks(range(0, 361, 60))
@@ -381,6 +428,7 @@ plt.show()
 # you built. Guess the rod pointing left and the slider closes on the other side of C. Nothing
 # is "wrong" numerically, which is why the result must be looked at.
 
+
 # %%
 def with_guesses(description, **guesses):
     new = copy.deepcopy(description)
@@ -389,13 +437,17 @@ def with_guesses(description, **guesses):
     return new
 
 
-for label, desc in (("as designed", slider_six),
-                    ("fourbar guessed crossed", with_guesses(slider_six, R3="-60 deg", R4="-120 deg")),
-                    ("rod guessed pointing left", with_guesses(slider_six, R5="170 deg"))):
+for label, desc in (
+    ("as designed", slider_six),
+    ("fourbar guessed crossed", with_guesses(slider_six, R3="-60 deg", R4="-120 deg")),
+    ("rod guessed pointing left", with_guesses(slider_six, R5="170 deg")),
+):
     s = VectorLoopLinkage(**desc).solve(theta2="57 deg", omega2="12 rad/s")
-    print(f"{label:26} theta3 = {s.vectors['R3'].angle.to('deg').magnitude % 360:7.2f} deg, "
-          f"theta5 = {s.vectors['R5'].angle.to('deg').magnitude % 360:7.2f} deg, "
-          f"S = {s.vectors['S'].length.to('in').magnitude:7.3f} in")
+    print(
+        f"{label:26} theta3 = {s.vectors['R3'].angle.to('deg').magnitude % 360:7.2f} deg, "
+        f"theta5 = {s.vectors['R5'].angle.to('deg').magnitude % 360:7.2f} deg, "
+        f"S = {s.vectors['S'].length.to('in').magnitude:7.3f} in"
+    )
 
 # %% [markdown]
 # **A position the linkage cannot reach, and the limit before it.** Move the slide line up, to
@@ -418,14 +470,18 @@ fdeg = np.degrees(fine.magnitude)
 sw = reach.solve(theta2=fine, omega2="12 rad/s", alpha2=0)
 ok = sw.valid
 C_y = linkage.solve(theta2=fine, omega2="12 rad/s").points["C"].R.to("in").magnitude.imag
-can = np.abs(1.0 - C_y) <= 4.0                                   # the geometric check
-stated(-C_y.max(), "1.7"), stated(-C_y.min(), "3.4")                # C below the ground line
+can = np.abs(1.0 - C_y) <= 4.0  # the geometric check
+stated(-C_y.max(), "1.7"), stated(-C_y.min(), "3.4")  # C below the ground line
 limits = fdeg[np.flatnonzero(np.diff(can.astype(int)))]
 print(f"geometry: the rod reaches the slide except between {limits[0]:.1f} and {limits[1]:.1f} deg")
-print(f"sweep:    valid at {ok.sum()} of {ok.size} positions, status names {sorted(set(sw.status))}")
+print(
+    f"sweep:    valid at {ok.sum()} of {ok.size} positions, status names {sorted(set(sw.status))}"
+)
 missed = int(np.sum(can & ~ok))
-print(f"          positions the sweep does not return although geometry allows them: {missed}"
-      + (" (it picks the linkage up again where geometry allows)" if missed == 0 else ""))
+print(
+    f"          positions the sweep does not return although geometry allows them: {missed}"
+    + (" (it picks the linkage up again where geometry allows)" if missed == 0 else "")
+)
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8), sharex=True)
 ax1.plot(fdeg, sw.condition, color=COLORS["tangential"])
 top = 1.1 * np.nanmax(sw.condition)
@@ -470,8 +526,10 @@ for angle, guess in ((limits[0] - 0.5, None), (100.0, None), (after, "60 deg")):
     solver_ = reach if guess is None else VectorLoopLinkage(**with_guesses(short, R5=guess))
     try:
         s = solver_.solve(theta2=f"{angle} deg", omega2="12 rad/s")
-        print(f"{angle:6.1f} deg: ok, condition {s.condition:.3f}, theta5 = "
-              f"{s.vectors['R5'].angle.to('deg'):.1f~P}, S'' = {s.vectors['S'].length_ddot.to('in/s^2'):.4g~P}")
+        print(
+            f"{angle:6.1f} deg: ok, condition {s.condition:.3f}, theta5 = "
+            f"{s.vectors['R5'].angle.to('deg'):.1f~P}, S'' = {s.vectors['S'].length_ddot.to('in/s^2'):.4g~P}"
+        )
     except AccelabError as err:
         print(f"{angle:6.1f} deg: {type(err).__name__}: {str(err)[:150]}...")
 k = int(np.argmin(np.abs(fdeg - after)))
@@ -482,6 +540,7 @@ print(f"(the sweep said {sw.status[k]!r} at {fdeg[k]:.1f} deg)")
 #
 # Turn the crank of the sixbar and watch the two loops close; the arrow at D is the slider's
 # acceleration (1 in of arrow = 50 in/s²).
+
 
 # %% mystnb={"figure": {"caption": "The sixbar with a slider at several crank angles, with the slider's acceleration."}, "image": {"alt": "Small multiples of the sixbar drawing with acceleration arrows."}}
 def draw(theta2=57):
@@ -497,8 +556,11 @@ def draw(theta2=57):
     ax.set_ylim(-5, 9)
     ax.set_aspect("equal")
     ax.set_xlabel("x [in]")
-    ax.set_title(rf"$\theta_2$ = {theta2}°: S'' = {A_D.real:.0f} in/s², "
-                 f"{cycle.iterations[i]} Newton steps", fontsize=10)
+    ax.set_title(
+        rf"$\theta_2$ = {theta2}°: S'' = {A_D.real:.0f} in/s², "
+        f"{cycle.iterations[i]} Newton steps",
+        fontsize=10,
+    )
     return fig
 
 
@@ -590,7 +652,7 @@ assert len(watt["loops"]) == 2 and len(slider_six["loops"]) == 2
 r101 = linkage.solve(theta2="120 deg", omega2="12 rad/s", alpha2="0 rad/s^2")
 S101 = r101.vectors["S"]
 stated(S101.length, "12.42", "in"), stated(S101.length_dot, "7.97", "in/s")
-stated(S101.length_ddot, "39.1", "in/s^2"), stated(r101.vectors["R5"].angle, "1.05", "deg");
+stated(S101.length_ddot, "39.1", "in/s^2"), stated(r101.vectors["R5"].angle, "1.05", "deg")
 
 # %% [markdown]
 # ## Common mistakes

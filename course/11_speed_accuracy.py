@@ -44,26 +44,33 @@ import numpy as np
 from IPython.display import Markdown, display
 
 from accelab.course.kit import explore, measure, stated, use_style
-from accelab.solver import FourBar, Q_, Singular, VectorLoopLinkage
+from accelab.solver import Q_, FourBar, Singular, VectorLoopLinkage
 from accelab.solver.graphical import construct
 from accelab.solver.kernels import MAX_ROUNDOFF
 from accelab.solver.kernels import fourbar as closed_form
 
 try:  # the reference needs mpmath (installed with the test extra: pip install -e ".[test]")
     import mpmath
+
     HAVE_MPMATH = True
 except ImportError:
     HAVE_MPMATH = False
 
 use_style()
-EPS = np.finfo(float).eps                   # 2.2e-16: the spacing of float64 numbers near 1
+EPS = np.finfo(float).eps  # 2.2e-16: the spacing of float64 numbers near 1
 #: colour and marker of each family of methods on the charts
-STYLE = {"kernels": ("#0072B2", "o"), "units": ("#56B4E9", "s"), "scalar": ("#009E73", "D"),
-         "loops": ("#E69F00", "^"), "fd": ("#D55E00", "v"), "graphical": ("#CC79A7", "P")}
+STYLE = {
+    "kernels": ("#0072B2", "o"),
+    "units": ("#56B4E9", "s"),
+    "scalar": ("#009E73", "D"),
+    "loops": ("#E69F00", "^"),
+    "fd": ("#D55E00", "v"),
+    "graphical": ("#CC79A7", "P"),
+}
 stated(EPS, "2.2e-16")
 for n, (step, err) in {1: ("6e-6", "1e-11"), 2: ("1e-4", "1e-8"), 3: ("7e-4", "1e-6")}.items():
-    stated(EPS ** (1 / (n + 2)), step, sig=1)                  # h*, quoted below
-    assert 0.1 < EPS ** (2 / (n + 2)) / float(err) < 10        # its error, to an order
+    stated(EPS ** (1 / (n + 2)), step, sig=1)  # h*, quoted below
+    assert 0.1 < EPS ** (2 / (n + 2)) / float(err) < 10  # its error, to an order
 
 # %% [markdown]
 # ## The idea and its equations
@@ -157,11 +164,11 @@ for n, (step, err) in {1: ("6e-6", "1e-11"), 2: ("1e-4", "1e-8"), 3: ("7e-4", "1
 # order, a 2 by 2 solve. Writing it here keeps it apart from the solver's own code.
 
 # %%
-IN = 0.0254                                                     # m per inch
-geometry = dict(a=2 * IN, b=6 * IN, c=9 * IN, d=7 * IN)          # [m]
-motion = dict(omega2=10.0, alpha2=-5.0, jerk2=20.0)            # [rad/s, rad/s^2, rad/s^3]
-theta2 = np.radians(np.arange(0.0, 360.0))                      # [rad], 360 positions
-picked = slice(0, None, 10)                                     # where the reference is computed
+IN = 0.0254  # m per inch
+geometry = dict(a=2 * IN, b=6 * IN, c=9 * IN, d=7 * IN)  # [m]
+motion = dict(omega2=10.0, alpha2=-5.0, jerk2=20.0)  # [rad/s, rad/s^2, rad/s^3]
+theta2 = np.radians(np.arange(0.0, 360.0))  # [rad], 360 positions
+picked = slice(0, None, 10)  # where the reference is computed
 OUTPUTS = ["theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4"]
 ORDER = {"theta": 0, "omega": 1, "alpha": 2, "jerk": 3}
 
@@ -179,19 +186,23 @@ def reference(geometry, angles, motion, circuit="open", dps=30):
         a, b, c, d = (mpmath.mpf(geometry[k]) for k in "abcd")
         side = 1 if circuit == "open" else -1
         for t2 in angles:
-            q2 = [mpmath.mpf(float(t2))] + [mpmath.mpf(motion[k]) for k in ("omega2", "alpha2",
-                                                                           "jerk2")]
+            q2 = [mpmath.mpf(float(t2))] + [
+                mpmath.mpf(motion[k]) for k in ("omega2", "alpha2", "jerk2")
+            ]
             A = a * mpmath.expj(q2[0])
-            s = d - A                                         # from A to O4
+            s = d - A  # from A to O4
             L = abs(s)
-            x = (L ** 2 + b ** 2 - c ** 2) / (2 * L)
-            B = A + (x + 1j * side * mpmath.sqrt(b ** 2 - x ** 2)) * s / L
+            x = (L**2 + b**2 - c**2) / (2 * L)
+            B = A + (x + 1j * side * mpmath.sqrt(b**2 - x**2)) * s / L
             q3, q4 = [mpmath.arg(B - A)], [mpmath.arg(B - d)]
             e2, e3, e4 = mpmath.expj(q2[0]), mpmath.expj(q3[0]), mpmath.expj(q4[0])
-            k3, k4 = 1j * b * e3, -1j * c * e4                  # what multiplies the unknowns
+            k3, k4 = 1j * b * e3, -1j * c * e4  # what multiplies the unknowns
             for n in (1, 2, 3):
-                rest = (a * e2 * _rates(n, q2) + b * e3 * _rates(n, q3 + [0] * (4 - len(q3)))
-                        - c * e4 * _rates(n, q4 + [0] * (4 - len(q4))))
+                rest = (
+                    a * e2 * _rates(n, q2)
+                    + b * e3 * _rates(n, q3 + [0] * (4 - len(q3)))
+                    - c * e4 * _rates(n, q4 + [0] * (4 - len(q4)))
+                )
                 det = k3.real * k4.imag - k3.imag * k4.real
                 q3.append((-rest.real * k4.imag + rest.imag * k4.real) / det)
                 q4.append((-k3.real * rest.imag + k3.imag * rest.real) / det)
@@ -237,28 +248,30 @@ print(f"reference: {REFERENCE}, at {len(ref['alpha4'])} positions")
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
-loops = VectorLoopLinkage(                                     # the same fourbar as one loop
-    vectors={"R1": {"length": "7 in", "angle": "0 deg"},
-             "R2": {"length": "2 in", "angle": "input"},
-             "R3": {"length": "6 in", "angle": "unknown", "guess": "110 deg"},
-             "R4": {"length": "9 in", "angle": "unknown", "guess": "140 deg"}},
-    loops=["R2 + R3 - R4 - R1"])
-angles = Q_(theta2, "rad")                                      # one Quantity, 360 angles
+loops = VectorLoopLinkage(  # the same fourbar as one loop
+    vectors={
+        "R1": {"length": "7 in", "angle": "0 deg"},
+        "R2": {"length": "2 in", "angle": "input"},
+        "R3": {"length": "6 in", "angle": "unknown", "guess": "110 deg"},
+        "R4": {"length": "9 in", "angle": "unknown", "guess": "140 deg"},
+    },
+    loops=["R2 + R3 - R4 - R1"],
+)
+angles = Q_(theta2, "rad")  # one Quantity, 360 angles
 inputs = dict(omega2=Q_(10.0, "rad/s"), alpha2=Q_(-5.0, "rad/s^2"), jerk2=Q_(20.0, "rad/s^3"))
 as_floats = theta2.tolist()
 SI = {"theta": "rad", "omega": "rad/s", "alpha": "rad/s^2", "jerk": "rad/s^3"}
 
 
-def finite_differences(h, angles=theta2, geometry=geometry, omega2=10.0, alpha2=-5.0,
-                       jerk2=20.0):
+def finite_differences(h, angles=theta2, geometry=geometry, omega2=10.0, alpha2=-5.0, jerk2=20.0):
     """theta3, theta4 and their time derivatives from the closed-form *position* alone:
     central differences of step h [rad] in theta2, then the chain rule."""
-    stencil = angles + h * np.arange(-2, 3)[:, None]            # 5 rows: theta2 - 2h .. + 2h
+    stencil = angles + h * np.arange(-2, 3)[:, None]  # 5 rows: theta2 - 2h .. + 2h
     position = closed_form.solve(**geometry, theta2=stencil, omega2=0.0, order=0)
     out = {}
     for k in "34":
         f = getattr(position, "theta" + k)
-        f = f[2] + np.angle(np.exp(1j * (f - f[2])))             # no 2 pi jumps in a stencil
+        f = f[2] + np.angle(np.exp(1j * (f - f[2])))  # no 2 pi jumps in a stencil
         d1 = (f[3] - f[1]) / (2 * h)
         d2 = (f[3] - 2 * f[2] + f[1]) / h**2
         d3 = (f[4] - 2 * f[3] + 2 * f[1] - f[0]) / (2 * h**3)
@@ -269,21 +282,21 @@ def finite_differences(h, angles=theta2, geometry=geometry, omega2=10.0, alpha2=
     return out
 
 
-def from_motion(m):            # a kernel Motion
+def from_motion(m):  # a kernel Motion
     return {k: getattr(m, k) for k in OUTPUTS}
 
 
-def from_list(ms):             # one Motion, or one dict of values, per position
+def from_list(ms):  # one Motion, or one dict of values, per position
     if isinstance(ms[0], dict):
         return {k: np.array([float(m[k]) for m in ms]) for k in OUTPUTS if k in ms[0]}
     return {k: np.array([getattr(m, k) for m in ms]) for k in OUTPUTS}
 
 
-def from_result(r):            # a unit-aware Result
+def from_result(r):  # a unit-aware Result
     return {k: getattr(r, k).m_as(SI[k[:-1]]) for k in OUTPUTS}
 
 
-def from_loops(r):             # a VectorLoopLinkage result: the vectors R3 and R4
+def from_loops(r):  # a VectorLoopLinkage result: the vectors R3 and R4
     out = {}
     for k in "34":
         v = r.vectors["R" + k]
@@ -293,28 +306,49 @@ def from_loops(r):             # a VectorLoopLinkage result: the vectors R3 and 
     return out
 
 
-METHODS = {   # name: (run, read, family of the charts)
+METHODS = {  # name: (run, read, family of the charts)
     "closed forms, vectorised": (
-        lambda: closed_form.solve(**geometry, theta2=theta2, **motion), from_motion, "kernels"),
+        lambda: closed_form.solve(**geometry, theta2=theta2, **motion),
+        from_motion,
+        "kernels",
+    ),
     "closed forms, unit-aware API": (
-        lambda: fourbar.solve(theta2=angles, **inputs), from_result, "units"),
+        lambda: fourbar.solve(theta2=angles, **inputs),
+        from_result,
+        "units",
+    ),
     "closed forms, Python loop": (
         lambda: [closed_form.solve(**geometry, theta2=t, **motion) for t in as_floats],
-        from_list, "scalar"),
-    **{f"vector loops, tol {tol:g}": (
-        lambda tol=tol: loops.solve(theta2=angles, **inputs, tol=tol), from_loops, "loops")
-       for tol in (1e-4, 1e-8, 1e-13)},
-    **{f"finite differences, h = {h:g} rad": (
-        lambda h=h: finite_differences(h), dict, "fd") for h in (1e-2, 1e-3, 1e-4, 1e-6)},
+        from_list,
+        "scalar",
+    ),
+    **{
+        f"vector loops, tol {tol:g}": (
+            lambda tol=tol: loops.solve(theta2=angles, **inputs, tol=tol),
+            from_loops,
+            "loops",
+        )
+        for tol in (1e-4, 1e-8, 1e-13)
+    },
+    **{
+        f"finite differences, h = {h:g} rad": (lambda h=h: finite_differences(h), dict, "fd")
+        for h in (1e-2, 1e-3, 1e-4, 1e-6)
+    },
     "graphical construction": (
-        lambda: [construct("fourbar", "open", **geometry, theta2=t, omega2=10.0,
-                           alpha2=-5.0).values for t in as_floats], from_list, "graphical"),
+        lambda: [
+            construct("fourbar", "open", **geometry, theta2=t, omega2=10.0, alpha2=-5.0).values
+            for t in as_floats
+        ],
+        from_list,
+        "graphical",
+    ),
 }
 
 # %% [markdown]
 # Now time each one and measure its worst error up to acceleration and up to jerk. The clock
 # (`accelab.course.kit.measure`) warms each method up, then times them in turn within each of five
 # repeats, so that a busy machine slows them all alike, and reports the median:
+
 
 # %%
 def worst(values, up_to):
@@ -328,9 +362,12 @@ table = {}
 for (name, (run, read, family)), median in zip(METHODS.items(), seconds):
     result = run()
     values = read(result)
-    table[name] = {"us": median / theta2.size * 1e6, "family": family,
-                   "acc": worst(values, 2),
-                   "jerk": worst(values, 3) if "jerk4" in values else None}
+    table[name] = {
+        "us": median / theta2.size * 1e6,
+        "family": family,
+        "acc": worst(values, 2),
+        "jerk": worst(values, 3) if "jerk4" in values else None,
+    }
     if name.startswith("vector loops"):
         table[name]["iterations"] = np.mean(result.iterations)
 
@@ -345,29 +382,64 @@ if HAVE_MPMATH:
     assert closed["jerk"] < 1e-13 and table["graphical construction"]["acc"] < 1e-13
 
 # %% mystnb={"figure": {"caption": "Time per position against error for each method on the 2-6-9-7 in fourbar, measured when the page was built."}, "image": {"alt": "Scatter plot on log axes of time per position against relative error, one point per method."}}
-LABEL_AT = {"kernels": (-4, -15, "right"), "units": (4, 14, "left"), "scalar": (-4, 14, "right"),
-            "graphical": (4, 14, "left")}     # where each label sits [points], so none overlap
+LABEL_AT = {
+    "kernels": (-4, -15, "right"),
+    "units": (4, 14, "left"),
+    "scalar": (-4, 14, "right"),
+    "graphical": (4, 14, "left"),
+}  # where each label sits [points], so none overlap
 fig, ax = plt.subplots(figsize=(9, 5.2))
 for name, row in table.items():
     colour, marker = STYLE[row["family"]]
     y = row["jerk"] if row["jerk"] is not None else row["acc"]
-    ax.plot(row["us"], max(y, 1e-16), marker, color=colour, ms=10,
-            mfc=colour if row["jerk"] is not None else "white", mew=2)
-    short = (name.replace("closed forms, ", "").replace("vector loops, ", "")
-             .replace("finite differences, ", "").replace(" rad", ""))
+    ax.plot(
+        row["us"],
+        max(y, 1e-16),
+        marker,
+        color=colour,
+        ms=10,
+        mfc=colour if row["jerk"] is not None else "white",
+        mew=2,
+    )
+    short = (
+        name.replace("closed forms, ", "")
+        .replace("vector loops, ", "")
+        .replace("finite differences, ", "")
+        .replace(" rad", "")
+    )
     dx, dy, ha = LABEL_AT.get(row["family"], (8, 3, "left"))
-    if name.endswith("h = 0.0001 rad"):             # beside its neighbour h = 0.01: go left
+    if name.endswith("h = 0.0001 rad"):  # beside its neighbour h = 0.01: go left
         dx, dy, ha = -8, 3, "right"
-    ax.annotate(short, (row["us"], max(y, 1e-16)), textcoords="offset points",
-                xytext=(dx, dy), ha=ha, va="center", fontsize=9, color=colour)
-for family, label in (("kernels", "closed forms"), ("units", "closed forms, unit-aware"),
-                      ("scalar", "closed forms, Python loop"), ("loops", "vector loops"),
-                      ("fd", "finite differences"), ("graphical", "graphical (hollow: to acc.)")):
+    ax.annotate(
+        short,
+        (row["us"], max(y, 1e-16)),
+        textcoords="offset points",
+        xytext=(dx, dy),
+        ha=ha,
+        va="center",
+        fontsize=9,
+        color=colour,
+    )
+for family, label in (
+    ("kernels", "closed forms"),
+    ("units", "closed forms, unit-aware"),
+    ("scalar", "closed forms, Python loop"),
+    ("loops", "vector loops"),
+    ("fd", "finite differences"),
+    ("graphical", "graphical (hollow: to acc.)"),
+):
     colour, marker = STYLE[family]
     ax.plot([], [], marker, color=colour, ms=8, label=label)
 ax.axhline(EPS, color="#888888", ls=":", lw=1)
-ax.text(0.98, EPS * 1.6, "float64 epsilon", color="#666666", fontsize=9, ha="right",
-        transform=ax.get_yaxis_transform())
+ax.text(
+    0.98,
+    EPS * 1.6,
+    "float64 epsilon",
+    color="#666666",
+    fontsize=9,
+    ha="right",
+    transform=ax.get_yaxis_transform(),
+)
 ax.set_xscale("log")
 ax.set_yscale("log")
 low = min(row["us"] for row in table.values())
@@ -376,8 +448,10 @@ ax.set_xlim(low / 3, high * 3)
 ax.set_ylim(1e-16, 1e5)
 ax.set_xlabel("time per position [µs] (median, 360 positions per call)")
 ax.set_ylabel("worst relative error, to jerk [-]")
-ax.set_title("The 2-6-9-7 in fourbar, measured just now (reference: "
-             + REFERENCE.split(" (")[0] + ")", fontsize=11)
+ax.set_title(
+    "The 2-6-9-7 in fourbar, measured just now (reference: " + REFERENCE.split(" (")[0] + ")",
+    fontsize=11,
+)
 ax.legend(loc="upper right", fontsize=9, ncol=2)
 plt.show()
 
@@ -389,38 +463,45 @@ plt.show()
 loop, units_ = table["closed forms, Python loop"], table["closed forms, unit-aware API"]
 nr = {tol: table[f"vector loops, tol {tol:g}"] for tol in (1e-4, 1e-8, 1e-13)}
 fd_best = min((row["jerk"], name) for name, row in table.items() if row["family"] == "fd")
-saving = ("saves little time" if nr[1e-4]["us"] < nr[1e-13]["us"] else
-          "saves no time at all (here it even took longer: noise, or the extra checks of a loose stop)")
+saving = (
+    "saves little time"
+    if nr[1e-4]["us"] < nr[1e-13]["us"]
+    else "saves no time at all (here it even took longer: noise, or the extra checks of a loose stop)"
+)
 graphical = table["graphical construction"]
-display(Markdown(f"""
+display(
+    Markdown(f"""
 - **The closed forms are both the fastest and as accurate as float64 allows**: a worst error of
-  {closed['jerk']:.0e} to jerk, at {closed['us']:.2f} µs per position vectorised over 360
+  {closed["jerk"]:.0e} to jerk, at {closed["us"]:.2f} µs per position vectorised over 360
   positions. The *same* formulas called one position at a time from a Python loop give
-  identical numbers {loop['us'] / closed['us']:.0f} times slower: the cost is Python's
+  identical numbers {loop["us"] / closed["us"]:.0f} times slower: the cost is Python's
   per-call overhead, not the arithmetic.
 - **Units cost little when one Quantity holds the whole array**: the unit-aware API takes
-  {units_['us']:.2f} µs per position, {units_['us'] / closed['us']:.1f} times the kernels
+  {units_["us"]:.2f} µs per position, {units_["us"] / closed["us"]:.1f} times the kernels
   (example 4 shows when they cost much more).
-- **Newton-Raphson** on the same loop is as exact at its default tolerance ({nr[1e-13]['jerk']:.0e}),
-  {nr[1e-13]['us'] / closed['us']:.0f} times dearer than the closed forms, with
-  {nr[1e-13]['iterations']:.2f} iterations per position. Loosening the tolerance to $10^{{-4}}$
-  costs accuracy ({nr[1e-4]['jerk']:.0e}) and {saving}
-  ({nr[1e-4]['us']:.1f} against {nr[1e-13]['us']:.1f} µs per position).
+- **Newton-Raphson** on the same loop is as exact at its default tolerance ({nr[1e-13]["jerk"]:.0e}),
+  {nr[1e-13]["us"] / closed["us"]:.0f} times dearer than the closed forms, with
+  {nr[1e-13]["iterations"]:.2f} iterations per position. Loosening the tolerance to $10^{{-4}}$
+  costs accuracy ({nr[1e-4]["jerk"]:.0e}) and {saving}
+  ({nr[1e-4]["us"]:.1f} against {nr[1e-13]["us"]:.1f} µs per position).
 - **Finite differences** are cheap (five position solves per point) and never accurate: the best
-  step here, {fd_best[1].split('= ')[1]}, gives {fd_best[0]:.0e} in jerk;
-  $h = 10^{{-6}}$ rad gives {table['finite differences, h = 1e-06 rad']['jerk']:.0e}.
+  step here, {fd_best[1].split("= ")[1]}, gives {fd_best[0]:.0e} in jerk;
+  $h = 10^{{-6}}$ rad gives {table["finite differences, h = 1e-06 rad"]["jerk"]:.0e}.
 - **The graphical construction**, an independent geometric method, agrees with the reference to
-  {graphical['acc']:.0e} (to acceleration: it has no jerk polygon) and costs
-  {graphical['us']:.0f} µs per position, built one position at a time in Python.
-"""))
+  {graphical["acc"]:.0e} (to acceleration: it has no jerk polygon) and costs
+  {graphical["us"]:.0f} µs per position, built one position at a time in Python.
+""")
+)
 assert loop["us"] > 5 * closed["us"] and graphical["us"] > 5 * closed["us"]
 assert nr[1e-4]["jerk"] > 1e3 * nr[1e-13]["jerk"]
 
 # %%
 for name, row in table.items():
     if "iterations" in row:
-        print(f"{name[14:]:10s}: {row['iterations']:.2f} iterations per position, "
-              f"{row['us']:.1f} us/position, worst error {row['jerk']:.1e}")
+        print(
+            f"{name[14:]:10s}: {row['iterations']:.2f} iterations per position, "
+            f"{row['us']:.1f} us/position, worst error {row['jerk']:.1e}"
+        )
 
 # %% [markdown]
 # ### 2. Finite differences: truncation against round-off
@@ -448,8 +529,11 @@ for h in steps:
 
 fig, ax = plt.subplots(figsize=(8.5, 5))
 colours = {1: STYLE["kernels"][0], 2: STYLE["loops"][0], 3: STYLE["fd"][0]}
-words = {1: "$k_1 = d\\theta_4/d\\theta_2$", 2: "$k_2 = d^2\\theta_4/d\\theta_2^2$",
-         3: "$k_3 = d^3\\theta_4/d\\theta_2^3$"}
+words = {
+    1: "$k_1 = d\\theta_4/d\\theta_2$",
+    2: "$k_2 = d^2\\theta_4/d\\theta_2^2$",
+    3: "$k_3 = d^3\\theta_4/d\\theta_2^3$",
+}
 for n in derivative:
     e = np.array(errors[n])
     ax.loglog(steps, e, "o-", ms=3.5, color=colours[n], label=words[n])
@@ -457,14 +541,20 @@ for n in derivative:
     ax.plot(steps[best], e[best], "o", ms=11, mfc="none", mec=colours[n], mew=2)
     h_star = EPS ** (1 / (n + 2))
     ax.axvline(h_star, color=colours[n], ls=":", lw=1.2)
-    ax.text(h_star * 1.15, 1e4 / 10 ** (1.3 * n), f"$\\epsilon^{{1/{n + 2}}}$",
-            color=colours[n], fontsize=12)
-    print(f"derivative {n}: best step {steps[best]:.1e} rad (eps^(1/{n + 2}) = {h_star:.1e}),"
-          f" error {e[best]:.1e}; at h = 1e-8: {np.interp(-8, np.log10(steps), e):.1e}")
+    ax.text(
+        h_star * 1.15,
+        1e4 / 10 ** (1.3 * n),
+        f"$\\epsilon^{{1/{n + 2}}}$",
+        color=colours[n],
+        fontsize=12,
+    )
+    print(
+        f"derivative {n}: best step {steps[best]:.1e} rad (eps^(1/{n + 2}) = {h_star:.1e}),"
+        f" error {e[best]:.1e}; at h = 1e-8: {np.interp(-8, np.log10(steps), e):.1e}"
+    )
 hh = np.logspace(-12, -1, 2)
 ax.loglog(hh, hh**2, color="#888888", ls="--", lw=1)
-ax.text(2e-2, 2e-2**2 * 3, "truncation $\\propto h^2$", color="#666666", fontsize=9,
-        ha="right")
+ax.text(2e-2, 2e-2**2 * 3, "truncation $\\propto h^2$", color="#666666", fontsize=9, ha="right")
 ax.loglog(hh, EPS / hh, color="#888888", ls="-.", lw=1)
 ax.text(2e-11, EPS / 2e-11 * 3, "round-off $\\propto \\epsilon/h$", color="#666666", fontsize=9)
 ax.set_ylim(1e-13, 1e10)
@@ -479,7 +569,7 @@ best = {n: min(errors[n]) for n in derivative}
 for n, quoted in ((1, 1e-11), (2, 1e-8), (3, 1e-7)):
     assert quoted / 30 < best[n] < quoted * 30, (n, best[n])
 at_1e8 = {n: np.interp(-8, np.log10(steps), errors[n]) for n in derivative}
-assert at_1e8[2] >= 0.5 and at_1e8[3] >= 0.5                     # noise: 100 % wrong or worse
+assert at_1e8[2] >= 0.5 and at_1e8[3] >= 0.5  # noise: 100 % wrong or worse
 
 # %% [markdown]
 # Each curve is the V the error model predicts: on the right, truncation falls as $h^2$ (slope
@@ -500,48 +590,78 @@ assert at_1e8[2] >= 0.5 and at_1e8[3] >= 0.5                     # noise: 100 % 
 # $10^{-13}$ to $10^{-1}$ rad beyond that, and compare with a 60-digit reference.
 
 # %%
-p = dict(a=5 * IN, b=4 * IN, c=6 * IN, d=3.5 * IN)               # [m], open circuit
+p = dict(a=5 * IN, b=4 * IN, c=6 * IN, d=3.5 * IN)  # [m], open circuit
 toggle = math.acos((p["a"] ** 2 + p["d"] ** 2 - (p["c"] - p["b"]) ** 2) / (2 * p["a"] * p["d"]))
-delta = np.logspace(-13, -1, 25)                                # distance from the toggle [rad]
+delta = np.logspace(-13, -1, 25)  # distance from the toggle [rad]
 near = toggle + delta
 kern = closed_form.solve(**p, theta2=near, **motion)
 fd_near = {h: finite_differences(h, angles=near, geometry=p) for h in (1e-3, 1e-5)}
 # the outputs' usual sizes: 37 positions across the range the rocker can reach
-usual = closed_form.solve(**p, theta2=np.linspace(toggle + 0.05, 2 * np.pi - toggle - 0.05, 37),
-                          **motion)
+usual = closed_form.solve(
+    **p, theta2=np.linspace(toggle + 0.05, 2 * np.pi - toggle - 0.05, 37), **motion
+)
 rocker_scale = scales(from_motion(usual))
 if HAVE_MPMATH:
     truth = reference(p, near, motion, dps=60)
     measured = worst_per_position(relative_errors(from_motion(kern), truth, rocker_scale))
     with np.errstate(invalid="ignore"):  # NaN where the stencil reaches past the toggle
-        fd_error = {h: worst_per_position(relative_errors(fd, truth, rocker_scale))
-                    for h, fd in fd_near.items()}
+        fd_error = {
+            h: worst_per_position(relative_errors(fd, truth, rocker_scale))
+            for h, fd in fd_near.items()
+        }
 refused = kern.status != 0
 if not HAVE_MPMATH:
     print("mpmath is not installed: no measured errors below, only the solver's own estimate")
-print(f"toggle at theta2 = {math.degrees(toggle):.6f} deg; refused at {refused.sum()} of "
-      f"{refused.size} distances, the farthest {delta[refused].max():.1e} rad")
+print(
+    f"toggle at theta2 = {math.degrees(toggle):.6f} deg; refused at {refused.sum()} of "
+    f"{refused.size} distances, the farthest {delta[refused].max():.1e} rad"
+)
 for i in (8, 10, 12, 16, 24):
     got = f"measured error {measured[i]:.1e}" if HAVE_MPMATH and not refused[i] else ""
-    print(f"  delta = {delta[i]:.0e} rad: roundoff estimate {kern.roundoff[i]:.1e}, "
-          f"{'refused' if refused[i] else 'answered'} {got}")
+    print(
+        f"  delta = {delta[i]:.0e} rad: roundoff estimate {kern.roundoff[i]:.1e}, "
+        f"{'refused' if refused[i] else 'answered'} {got}"
+    )
 
 # %% mystnb={"figure": {"caption": "The triple rocker approaching its toggle: the closed forms' error grows like one over the distance until they refuse."}, "image": {"alt": "Log-log plot of error against distance to the toggle position for several methods."}}
 fig, ax = plt.subplots(figsize=(9, 5))
-ax.loglog(delta, kern.roundoff, color="#444444", ls="--", lw=1.5,
-          label="the solver's estimate, roundoff")
+ax.loglog(
+    delta, kern.roundoff, color="#444444", ls="--", lw=1.5, label="the solver's estimate, roundoff"
+)
 ax.axhline(MAX_ROUNDOFF, color=STYLE["graphical"][0], lw=1.2)
-ax.text(2e-13, MAX_ROUNDOFF * 1.8, f"MAX_ROUNDOFF = {MAX_ROUNDOFF:g}",
-        color=STYLE["graphical"][0], fontsize=9)
+ax.text(
+    2e-13,
+    MAX_ROUNDOFF * 1.8,
+    f"MAX_ROUNDOFF = {MAX_ROUNDOFF:g}",
+    color=STYLE["graphical"][0],
+    fontsize=9,
+)
 ax.axvspan(1e-14, np.sqrt(delta[refused].max() * delta[~refused].min()), color="#eeeeee")
-ax.text(3e-13, 1e-14, "closed forms refuse:\nNaN, valid False,\nor Singular raised",
-        fontsize=9, color="#555555")
+ax.text(
+    3e-13,
+    1e-14,
+    "closed forms refuse:\nNaN, valid False,\nor Singular raised",
+    fontsize=9,
+    color="#555555",
+)
 if HAVE_MPMATH:
-    ax.loglog(delta, measured, "o-", color=STYLE["kernels"][0], ms=5,
-              label="closed forms: measured error, to jerk")
+    ax.loglog(
+        delta,
+        measured,
+        "o-",
+        color=STYLE["kernels"][0],
+        ms=5,
+        label="closed forms: measured error, to jerk",
+    )
     for h, style in ((1e-3, "v-"), (1e-5, "v--")):
-        ax.loglog(delta, fd_error[h], style, color=STYLE["fd"][0], ms=5,
-                  label=f"finite differences, h = {h:.0e} rad (NaN once past the toggle)")
+        ax.loglog(
+            delta,
+            fd_error[h],
+            style,
+            color=STYLE["fd"][0],
+            ms=5,
+            label=f"finite differences, h = {h:.0e} rad (NaN once past the toggle)",
+        )
 ax.set_xlim(1e-13, 0.2)
 ax.set_ylim(1e-16, 1e2)
 ax.set_xlabel("distance of $\\theta_2$ from the toggle, $\\delta$ [rad]")
@@ -553,15 +673,16 @@ plt.show()
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 answered = ~refused
 boundary = math.sqrt(delta[refused].max() * delta[answered].min())
-assert 1e-9 < boundary < 1e-7                                   # "about 1e-8 rad", to an order
+assert 1e-9 < boundary < 1e-7  # "about 1e-8 rad", to an order
 assert np.all(kern.roundoff[answered] <= MAX_ROUNDOFF)
 if HAVE_MPMATH:
-    assert np.all(measured[answered] < 1e-7)                     # every answer good to 1e-7
+    assert np.all(measured[answered] < 1e-7)  # every answer good to 1e-7
     assert np.all(measured[answered] < kern.roundoff[answered])  # below the estimate
     slope = np.polyfit(np.log10(delta[answered]), np.log10(measured[answered]), 1)[0]
-    assert -1.4 < slope < -0.6                                   # grows like 1/delta
-    jerk_fd = {d_: float(fd_error[1e-3][np.argmin(np.abs(np.log10(delta / d_)))])
-               for d_ in (1e-2, 3e-3)}                            # the grid's nearest distances
+    assert -1.4 < slope < -0.6  # grows like 1/delta
+    jerk_fd = {
+        d_: float(fd_error[1e-3][np.argmin(np.abs(np.log10(delta / d_)))]) for d_ in (1e-2, 3e-3)
+    }  # the grid's nearest distances
     print({k: f"{v:.2g}" for k, v in jerk_fd.items()})
     stated(jerk_fd[1e-2], "0.02", sig=1), stated(jerk_fd[3e-3], "0.3", sig=1)
 
@@ -585,8 +706,9 @@ try:
     triple.solve(theta2=Q_(toggle + 1e-9, "rad"), omega2="10 rad/s")
 except Singular as err:
     print(f"Singular: {err}\n")
-sweep = triple.solve(theta2=Q_(toggle + np.array([1e-9, 1e-7, 1e-4]), "rad"),
-                     omega2="10 rad/s", alpha2="-5 rad/s^2")
+sweep = triple.solve(
+    theta2=Q_(toggle + np.array([1e-9, 1e-7, 1e-4]), "rad"), omega2="10 rad/s", alpha2="-5 rad/s^2"
+)
 print("valid   ", sweep.valid)
 print("status  ", sweep.status)
 print("roundoff", np.array2string(sweep.roundoff, precision=1))
@@ -617,53 +739,74 @@ qx, qy = Q_(x, "m"), Q_(y, "in")
 ex = np.array([Q_(v, "m") for v in x], dtype=object)
 ey = np.array([Q_(v, "in") for v in y], dtype=object)
 assert np.allclose((ex + ey)[-1].m_as("m"), (qx + qy).m_as("m")[-1])
-adds = {"floats (numpy)": lambda: x + y, "one Quantity per array": lambda: qx + qy,
-        "one Quantity per element": lambda: ex + ey}
+adds = {
+    "floats (numpy)": lambda: x + y,
+    "one Quantity per array": lambda: qx + qy,
+    "one Quantity per element": lambda: ex + ey,
+}
 t_add = dict(zip(adds, measure(list(adds.values()), repeats=5, min_time=0.005)))
 for k, t in t_add.items():
-    print(f"add 1000 lengths, {k:26s}: {t * 1e6:9.1f} us "
-          f"({t / t_add['floats (numpy)']:6.0f} x floats)")
+    print(
+        f"add 1000 lengths, {k:26s}: {t * 1e6:9.1f} us "
+        f"({t / t_add['floats (numpy)']:6.0f} x floats)"
+    )
 
-hundred = np.linspace(0.0, 2 * np.pi, 100, endpoint=False)      # 100 crank angles [rad]
+hundred = np.linspace(0.0, 2 * np.pi, 100, endpoint=False)  # 100 crank angles [rad]
 calls = {
     "kernel, one array": lambda: closed_form.solve(**geometry, theta2=hundred, **motion),
     "FourBar, one array": lambda: fourbar.solve(theta2=Q_(hundred, "rad"), **inputs),
-    "kernel, 100 calls": lambda: [closed_form.solve(**geometry, theta2=t, **motion)
-                                  for t in hundred.tolist()],
-    "FourBar, 100 calls": lambda: [fourbar.solve(theta2=Q_(t, "rad"), **inputs)
-                                   for t in hundred.tolist()],
+    "kernel, 100 calls": lambda: [
+        closed_form.solve(**geometry, theta2=t, **motion) for t in hundred.tolist()
+    ],
+    "FourBar, 100 calls": lambda: [
+        fourbar.solve(theta2=Q_(t, "rad"), **inputs) for t in hundred.tolist()
+    ],
 }
-t_call = {k: t / hundred.size * 1e6
-          for k, t in zip(calls, measure(list(calls.values()), repeats=5, min_time=0.01))}
+t_call = {
+    k: t / hundred.size * 1e6
+    for k, t in zip(calls, measure(list(calls.values()), repeats=5, min_time=0.01))
+}
 
 fig, ax = plt.subplots(figsize=(8, 3.2))
 names = list(t_call)
-bars = ax.barh(names, [t_call[k] for k in names],
-               color=[STYLE["kernels"][0], STYLE["units"][0], STYLE["scalar"][0], "#7F7F7F"])
+bars = ax.barh(
+    names,
+    [t_call[k] for k in names],
+    color=[STYLE["kernels"][0], STYLE["units"][0], STYLE["scalar"][0], "#7F7F7F"],
+)
 for bar, k in zip(bars, names):
-    ax.text(bar.get_width() * 1.1, bar.get_y() + bar.get_height() / 2,
-            f"{t_call[k]:.1f} µs", va="center", fontsize=10)
+    ax.text(
+        bar.get_width() * 1.1,
+        bar.get_y() + bar.get_height() / 2,
+        f"{t_call[k]:.1f} µs",
+        va="center",
+        fontsize=10,
+    )
 ax.set_xscale("log")
 ax.set_xlim(0.1, 2000)
 ax.invert_yaxis()
 ax.set_xlabel("time per position [µs], fourbar position to jerk, 100 positions")
 ax.set_title("Where the units go: once per call, or once per position")
 plt.show()
-print(f"FourBar: 100 calls cost {t_call['FourBar, 100 calls'] / t_call['FourBar, one array']:.0f}"
-      f" times one call with an array; the units add "
-      f"{t_call['FourBar, one array'] / t_call['kernel, one array']:.1f}x to an array call")
+print(
+    f"FourBar: 100 calls cost {t_call['FourBar, 100 calls'] / t_call['FourBar, one array']:.0f}"
+    f" times one call with an array; the units add "
+    f"{t_call['FourBar, one array'] / t_call['kernel, one array']:.1f}x to an array call"
+)
 
 # %%
-display(Markdown(f"""
+display(
+    Markdown(f"""
 pint's cost is per operation, not per number. Wrapped around a whole array it is paid once
-({(t_add['one Quantity per array'] - t_add['floats (numpy)']) * 1e6:.0f} µs more than plain floats
+({(t_add["one Quantity per array"] - t_add["floats (numpy)"]) * 1e6:.0f} µs more than plain floats
 here, including the conversion from inches); spread over the elements it is paid a thousand times,
-and the same addition takes {t_add['one Quantity per element'] * 1e3:.1f} ms. The solver is built
+and the same addition takes {t_add["one Quantity per element"] * 1e3:.1f} ms. The solver is built
 the same way: its kernels are plain numpy on SI floats and the classes convert at the edges, once
 per call. So pass the solver arrays, not loops of scalars; if you must call it position by position
 (an interactive tool, say), each call carries a fixed cost, here
-{t_call['FourBar, 100 calls'] - t_call['kernel, 100 calls']:.0f} µs for the units alone.
-"""))
+{t_call["FourBar, 100 calls"] - t_call["kernel, 100 calls"]:.0f} µs for the units alone.
+""")
+)
 assert t_add["one Quantity per element"] > 30 * t_add["one Quantity per array"]
 assert t_call["FourBar, 100 calls"] > 5 * t_call["FourBar, one array"]
 
@@ -684,40 +827,68 @@ assert t_call["FourBar, 100 calls"] > 5 * t_call["FourBar, one array"]
 # not another order.
 
 # %%
-kern, unit_api, pyloop = (table[k] for k in ("closed forms, vectorised",
-                                             "closed forms, unit-aware API",
-                                             "closed forms, Python loop"))
+kern, unit_api, pyloop = (
+    table[k]
+    for k in (
+        "closed forms, vectorised",
+        "closed forms, unit-aware API",
+        "closed forms, Python loop",
+    )
+)
 nr_default = table["vector loops, tol 1e-13"]
 fds = [row for row in table.values() if row["family"] == "fd"]
 graph = table["graphical construction"]
 fd_errors = ", ".join(f"{min(errors[n]):.0e}" for n in derivative)
 rows = [
-    ("closed forms, vectorised (`accelab.solver.kernels`, or a class with an array of `theta2`)",
-     f"{kern['us']:.2f} µs", f"{kern['jerk']:.0e}, to jerk",
-     "whole cycles, design sweeps, optimisation",
-     "only the mechanisms that have one; refuses near a toggle (example 3)"),
-    ("closed forms, unit-aware (`FourBar(...).solve`)",
-     f"{unit_api['us']:.2f} µs (one call, 360 positions)", f"{unit_api['jerk']:.0e}",
-     "reading one position with units, teaching, checking",
-     "many calls of one position each: the per-call cost of pint (example 4)"),
-    ("closed forms in a Python loop", f"{pyloop['us']:.1f} µs", f"{pyloop['jerk']:.0e}",
-     "nothing an array cannot do", "speed"),
-    ("vector loops, Newton-Raphson (`VectorLoopLinkage`)", f"{nr_default['us']:.1f} µs",
-     f"{nr_default['jerk']:.0e} at the default tolerance",
-     "any linkage without a closed form (notebook 10)",
-     "needs guesses that pick the assembly; singular at toggles"),
-    ("finite differences of the position",
-     f"{min(r['us'] for r in fds):.1f} to {max(r['us'] for r in fds):.1f} µs",
-     f"at best {fd_errors} (velocity, acceleration, jerk)",
-     "a check when only positions exist",
-     "the step: too large truncates, too small amplifies round-off; silently wrong near toggles"),
-    ("graphical construction (`accelab.solver.graphical`)", f"{graph['us']:.0f} µs",
-     f"{graph['acc']:.0e}, to acceleration", "seeing the vectors; an independent check",
-     "one position at a time; no jerk"),
+    (
+        "closed forms, vectorised (`accelab.solver.kernels`, or a class with an array of `theta2`)",
+        f"{kern['us']:.2f} µs",
+        f"{kern['jerk']:.0e}, to jerk",
+        "whole cycles, design sweeps, optimisation",
+        "only the mechanisms that have one; refuses near a toggle (example 3)",
+    ),
+    (
+        "closed forms, unit-aware (`FourBar(...).solve`)",
+        f"{unit_api['us']:.2f} µs (one call, 360 positions)",
+        f"{unit_api['jerk']:.0e}",
+        "reading one position with units, teaching, checking",
+        "many calls of one position each: the per-call cost of pint (example 4)",
+    ),
+    (
+        "closed forms in a Python loop",
+        f"{pyloop['us']:.1f} µs",
+        f"{pyloop['jerk']:.0e}",
+        "nothing an array cannot do",
+        "speed",
+    ),
+    (
+        "vector loops, Newton-Raphson (`VectorLoopLinkage`)",
+        f"{nr_default['us']:.1f} µs",
+        f"{nr_default['jerk']:.0e} at the default tolerance",
+        "any linkage without a closed form (notebook 10)",
+        "needs guesses that pick the assembly; singular at toggles",
+    ),
+    (
+        "finite differences of the position",
+        f"{min(r['us'] for r in fds):.1f} to {max(r['us'] for r in fds):.1f} µs",
+        f"at best {fd_errors} (velocity, acceleration, jerk)",
+        "a check when only positions exist",
+        "the step: too large truncates, too small amplifies round-off; silently wrong near toggles",
+    ),
+    (
+        "graphical construction (`accelab.solver.graphical`)",
+        f"{graph['us']:.0f} µs",
+        f"{graph['acc']:.0e}, to acceleration",
+        "seeing the vectors; an independent check",
+        "one position at a time; no jerk",
+    ),
 ]
-display(Markdown("| method | cost per position | error | use it for | where it fails |\n"
-                 "|---|---|---|---|---|\n"
-                 + "\n".join("| " + " | ".join(r) + " |" for r in rows)))
+display(
+    Markdown(
+        "| method | cost per position | error | use it for | where it fails |\n"
+        "|---|---|---|---|---|\n" + "\n".join("| " + " | ".join(r) + " |" for r in rows)
+    )
+)
 
 # %% [markdown]
 # In one sentence: use a closed form on arrays whenever the mechanism has one, Newton-Raphson on
@@ -738,15 +909,23 @@ degrees = np.degrees(theta2)
 
 
 def draw(log10_h):
-    h = 10.0 ** log10_h
-    e = relative_errors(finite_differences(h), exact_cycle, cycle_scale,
-                        ["omega4", "alpha4", "jerk4"])
+    h = 10.0**log10_h
+    e = relative_errors(
+        finite_differences(h), exact_cycle, cycle_scale, ["omega4", "alpha4", "jerk4"]
+    )
     fig, ax = plt.subplots(figsize=(5.4, 3.6))
-    for name, colour, label in (("omega4", colours[1], "$\\omega_4$"),
-                                ("alpha4", colours[2], "$\\alpha_4$"),
-                                ("jerk4", colours[3], "$\\varphi_4$")):
-        ax.semilogy(degrees, np.maximum(e[name], 1e-16), color=colour, lw=1.2,
-                    label=f"{label}: worst {np.max(e[name]):.0e}")
+    for name, colour, label in (
+        ("omega4", colours[1], "$\\omega_4$"),
+        ("alpha4", colours[2], "$\\alpha_4$"),
+        ("jerk4", colours[3], "$\\varphi_4$"),
+    ):
+        ax.semilogy(
+            degrees,
+            np.maximum(e[name], 1e-16),
+            color=colour,
+            lw=1.2,
+            label=f"{label}: worst {np.max(e[name]):.0e}",
+        )
     ax.set_ylim(1e-14, 1e6)
     ax.set_xticks(range(0, 361, 90))
     ax.set_xlabel("$\\theta_2$ [deg]")
@@ -758,18 +937,21 @@ def draw(log10_h):
 
 explore(draw, log10_h=(-9, -1, 0.5, -3), values=[-8, -5, -3, -1])
 
+
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
 def fd_worst(h):
-    e = relative_errors(finite_differences(h), exact_cycle, cycle_scale, ["omega4", "alpha4", "jerk4"])
+    e = relative_errors(
+        finite_differences(h), exact_cycle, cycle_scale, ["omega4", "alpha4", "jerk4"]
+    )
     return {k: float(np.max(v)) for k, v in e.items()}
 
 
-at = {x: fd_worst(10.0 ** x) for x in (-8, -5, -3, -1)}
-assert at[-8]["omega4"] < 1e-4 and at[-8]["alpha4"] > 1e-2 and at[-8]["jerk4"] > 1     # noise
+at = {x: fd_worst(10.0**x) for x in (-8, -5, -3, -1)}
+assert at[-8]["omega4"] < 1e-4 and at[-8]["alpha4"] > 1e-2 and at[-8]["jerk4"] > 1  # noise
 assert at[-5]["omega4"] < 1e-8 and at[-5]["jerk4"] > 1e-1
 stated(at[-3]["jerk4"], "1e-5", sig=1)
-assert at[-3]["omega4"] > 100 * at[-5]["omega4"]                   # "a thousand times worse"
-assert all(v > 1e-3 for v in at[-1].values())                       # truncation rules
+assert at[-3]["omega4"] > 100 * at[-5]["omega4"]  # "a thousand times worse"
+assert all(v > 1e-3 for v in at[-1].values())  # truncation rules
 
 # %% [markdown]
 # At $h = 10^{-8}$ rad round-off rules: the velocity is still usable, the acceleration and the

@@ -41,19 +41,36 @@ DEFAULTS = {
     "rotation": (("omega2",), ("A_t", "A_n", "A")),
 }
 #: how each name reads on the plots
-SYMBOLS = {"alpha3": r"$\alpha_3$", "alpha4": r"$\alpha_4$", "alpha5": r"$\alpha_5$",
-           "omega2": r"$\omega_2$", "omega3": r"$\omega_3$", "omega4": r"$\omega_4$",
-           "A_A": r"$|\mathbf{A}_A|$", "A_B": r"$|\mathbf{A}_B|$", "A_C": r"$|\mathbf{A}_C|$",
-           "A_P": r"$|\mathbf{A}_P|$", "A_coriolis": r"$|\mathbf{A}_{cor}|$",
-           "A_t": r"$|\mathbf{A}^t|$", "A_n": r"$|\mathbf{A}^n|$", "A": r"$|\mathbf{A}|$"}
+SYMBOLS = {
+    "alpha3": r"$\alpha_3$",
+    "alpha4": r"$\alpha_4$",
+    "alpha5": r"$\alpha_5$",
+    "omega2": r"$\omega_2$",
+    "omega3": r"$\omega_3$",
+    "omega4": r"$\omega_4$",
+    "A_A": r"$|\mathbf{A}_A|$",
+    "A_B": r"$|\mathbf{A}_B|$",
+    "A_C": r"$|\mathbf{A}_C|$",
+    "A_P": r"$|\mathbf{A}_P|$",
+    "A_coriolis": r"$|\mathbf{A}_{cor}|$",
+    "A_t": r"$|\mathbf{A}^t|$",
+    "A_n": r"$|\mathbf{A}^n|$",
+    "A": r"$|\mathbf{A}|$",
+}
 #: the colours of the curves, in order (Okabe-Ito, as the drawings)
-CURVE_COLOURS = ["#000000", _style.OKABE_ITO["vermillion"], _style.OKABE_ITO["blue"],
-                 _style.OKABE_ITO["green"]]
+CURVE_COLOURS = [
+    "#000000",
+    _style.OKABE_ITO["vermillion"],
+    _style.OKABE_ITO["blue"],
+    _style.OKABE_ITO["green"],
+]
 #: curves of a vector component take the colour of its kind in the drawings
-KIND_COLOURS = {"A_t": _style.COMPONENT["tangential"]["color"],
-                "A_n": _style.COMPONENT["normal"]["color"],
-                "A_coriolis": _style.COMPONENT["coriolis"]["color"],
-                "A_slip": _style.COMPONENT["slip"]["color"]}
+KIND_COLOURS = {
+    "A_t": _style.COMPONENT["tangential"]["color"],
+    "A_n": _style.COMPONENT["normal"]["color"],
+    "A_coriolis": _style.COMPONENT["coriolis"]["color"],
+    "A_slip": _style.COMPONENT["slip"]["color"],
+}
 
 
 class Animation:
@@ -88,8 +105,10 @@ class Animation:
         return self.png
 
     def __repr__(self):
-        return (f"<Animation: {self.frames} frames, {self.width}x{self.height} px, "
-                f"{len(self.png) / 1024:.0f} KiB animated PNG>")
+        return (
+            f"<Animation: {self.frames} frames, {self.width}x{self.height} px, "
+            f"{len(self.png) / 1024:.0f} KiB animated PNG>"
+        )
 
 
 def _writer(fps, colours=128):
@@ -103,21 +122,30 @@ def _writer(fps, colours=128):
         def grab_frame(self, **savefig_kwargs):
             canvas = self.fig.canvas
             w, h = canvas.get_width_height(physical=True)
-            self._frames.append(Image.frombuffer("RGBA", (w, h), bytes(canvas.buffer_rgba()),
-                                                 "raw", "RGBA", 0, 1).convert("RGB"))
+            self._frames.append(
+                Image.frombuffer(
+                    "RGBA", (w, h), bytes(canvas.buffer_rgba()), "raw", "RGBA", 0, 1
+                ).convert("RGB")
+            )
 
         def finish(self):
             frames = self._frames
             w, h = frames[0].size
-            picks = frames[::max(1, len(frames) // 4)][:4]
+            picks = frames[:: max(1, len(frames) // 4)][:4]
             montage = Image.new("RGB", (w, h * len(picks)), "white")
             for k, f in enumerate(picks):
                 montage.paste(f, (0, h * k))
             palette = montage.quantize(colors=colours, method=Image.Quantize.MEDIANCUT)
             frames = [f.quantize(palette=palette, dither=Image.Dither.NONE) for f in frames]
-            frames[0].save(self.outfile, format="PNG", save_all=True,
-                           append_images=frames[1:], duration=int(1000 / self.fps), loop=0,
-                           optimize=True)
+            frames[0].save(
+                self.outfile,
+                format="PNG",
+                save_all=True,
+                append_images=frames[1:],
+                duration=int(1000 / self.fps),
+                loop=0,
+                optimize=True,
+            )
 
     return CanvasPngWriter(fps=fps)
 
@@ -139,9 +167,22 @@ def _value(con, name, motion_values):
     return motion_values[name]
 
 
-def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitudes=None,
-            kinds=("resultant",), title=None, names=None, trace=(), fps=10, dpi=96,
-            size=(7.4, 3.5)):
+def animate(
+    case,
+    *,
+    frames=36,
+    angles=None,
+    motion=None,
+    curves=None,
+    magnitudes=None,
+    kinds=("resultant",),
+    title=None,
+    names=None,
+    trace=(),
+    fps=10,
+    dpi=96,
+    size=(7.4, 3.5),
+):
     """Animate ``case`` (a batch case, as docs/conventions.md describes) through its cycle.
 
     Parameters
@@ -189,8 +230,9 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
     mech = cons[0].mechanism
     default_curves, default_mags = DEFAULTS.get(mech, ((), ()))
     curves = list(curves if curves is not None else default_curves)
-    magnitudes = [m for m in (magnitudes if magnitudes is not None else default_mags)
-                  if m in cons[0].values]
+    magnitudes = [
+        m for m in (magnitudes if magnitudes is not None else default_mags) if m in cons[0].values
+    ]
     units = units_of(cons[0])
     lname, lf = units["length"]
     aname, af = units["acceleration"]
@@ -201,6 +243,7 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
             v = _value(con, name, mv)
             if isinstance(v, str):
                 from accelab.solver.units import Q_
+
                 v = Q_(v).to_base_units().magnitude
             vals.append(v)
         return np.array(vals)
@@ -209,23 +252,40 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
     mag_data = {n: np.abs(series(n)) * af for n in magnitudes}
 
     # one frame and one vector scale for every position
-    vecs = [(a.start * lf, a.vector * af) for con in cons
-            for a in con.items("linkage")[0] if a.kind in kinds]
+    vecs = [
+        (a.start * lf, a.vector * af)
+        for con in cons
+        for a in con.items("linkage")[0]
+        if a.kind in kinds
+    ]
     big = max((abs(v) for _, v in vecs), default=0.0)
     pts = [z * lf for con in cons for z in con.linkage.points.values()]
-    size_l = max(max(z.real for z in pts) - min(z.real for z in pts),
-                 max(z.imag for z in pts) - min(z.imag for z in pts))
+    size_l = max(
+        max(z.real for z in pts) - min(z.real for z in pts),
+        max(z.imag for z in pts) - min(z.imag for z in pts),
+    )
     scale = 0.45 * size_l / big if big > 0 else 1.0
     paths = {n: np.array([con.linkage.points[n] * lf for con in cons]) for n in trace}
     ends = pts + [s + v * scale for s, v in vecs]
     m = 0.06 * size_l
-    box = (min(z.real for z in ends) - m, max(z.real for z in ends) + m,
-           min(z.imag for z in ends) - m, max(z.imag for z in ends) + m)
+    box = (
+        min(z.real for z in ends) - m,
+        max(z.real for z in ends) + m,
+        min(z.imag for z in ends) - m,
+        max(z.imag for z in ends) + m,
+    )
 
-    with matplotlib.rc_context({"figure.dpi": dpi, "font.size": 9,
-                                "axes.titlesize": 10, "axes.labelsize": 9,
-                                "legend.fontsize": 8, "xtick.labelsize": 8,
-                                "ytick.labelsize": 8}):
+    with matplotlib.rc_context(
+        {
+            "figure.dpi": dpi,
+            "font.size": 9,
+            "axes.titlesize": 10,
+            "axes.labelsize": 9,
+            "legend.fontsize": 8,
+            "xtick.labelsize": 8,
+            "ytick.labelsize": 8,
+        }
+    ):
         fig = plt.figure(figsize=size, dpi=dpi, layout="constrained")
         grid = fig.add_gridspec(2, 2, width_ratios=[1.3, 1])
         ax_l = fig.add_subplot(grid[:, 0])
@@ -233,15 +293,20 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         ax_m = fig.add_subplot(grid[1, 1], sharex=ax_c)
         markers = []
         for ax, data, unit in ((ax_c, curve_data, None), (ax_m, mag_data, aname)):
-            free = iter(c for c in CURVE_COLOURS if c not in
-                        [KIND_COLOURS.get(n) for n in data])
+            free = iter(c for c in CURVE_COLOURS if c not in [KIND_COLOURS.get(n) for n in data])
             for name, y in data.items():
                 colour = KIND_COLOURS.get(name) or next(free)
                 ax.plot(fine, y, color=colour, lw=1.5, label=SYMBOLS.get(name, name))
                 markers.append((ax.plot([], [], "o", color=colour, ms=6, zorder=5)[0], y))
             if data:
-                ax.legend(loc="upper right", ncol=len(data), frameon=False,
-                          borderaxespad=0.1, handlelength=1.4, columnspacing=0.8)
+                ax.legend(
+                    loc="upper right",
+                    ncol=len(data),
+                    frameon=False,
+                    borderaxespad=0.1,
+                    handlelength=1.4,
+                    columnspacing=0.8,
+                )
                 lo = min(np.nanmin(y) for y in data.values())
                 hi = max(np.nanmax(y) for y in data.values())
                 pad = 0.3 * (hi - lo or 1.0)
@@ -257,21 +322,31 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
         ax_m.set_xticks(np.arange(start, stop + 1, step))
         plt.setp(ax_c.get_xticklabels(), visible=False)
         cursors = [ax.axvline(start, color="#999999", lw=0.8) for ax in (ax_c, ax_m)]
-        picks = np.linspace(0, len(fine) - 1, frames + 1)[:-1].round().astype(int) \
-            if math.isclose((stop - start) % 360, 0) else \
-            np.linspace(0, len(fine) - 1, frames).round().astype(int)
+        picks = (
+            np.linspace(0, len(fine) - 1, frames + 1)[:-1].round().astype(int)
+            if math.isclose((stop - start) % 360, 0)
+            else np.linspace(0, len(fine) - 1, frames).round().astype(int)
+        )
         heading = title or cons[0].title
 
         def frame(k):
             i = picks[k]
             ax_l.clear()
-            draw_linkage(cons[i], ax=ax_l, scale=scale, box=box, kinds=kinds, lines=False,
-                         names=names,
-                         inset=False, legend=False, scale_bars=True,
-                         title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$")
+            draw_linkage(
+                cons[i],
+                ax=ax_l,
+                scale=scale,
+                box=box,
+                kinds=kinds,
+                lines=False,
+                names=names,
+                inset=False,
+                legend=False,
+                scale_bars=True,
+                title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$",
+            )
             for path in paths.values():
-                ax_l.plot(path.real, path.imag, color="#9a9a9a", lw=1.0, ls=(0, (4, 2)),
-                          zorder=0)
+                ax_l.plot(path.real, path.imag, color="#9a9a9a", lw=1.0, ls=(0, (4, 2)), zorder=0)
             for mk, y in markers:
                 mk.set_data([fine[i]], [y[i]])
             for c in cursors:
@@ -279,8 +354,8 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
             return []
 
         frame(0)
-        fig.canvas.draw()                  # lay the figure out once ...
-        fig.set_layout_engine("none")      # ... and keep it for every frame
+        fig.canvas.draw()  # lay the figure out once ...
+        fig.set_layout_engine("none")  # ... and keep it for every frame
         anim = FuncAnimation(fig, frame, frames=frames, interval=1000 / fps, blit=False)
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "animation.png")
@@ -289,5 +364,6 @@ def animate(case, *, frames=36, angles=None, motion=None, curves=None, magnitude
                 png = fh.read()
         width, height = (int(round(x)) for x in fig.get_size_inches() * dpi)
         plt.close(fig)
-    return Animation(png, frames, width, height,
-                     alt=f"{heading} through its cycle, with its accelerations")
+    return Animation(
+        png, frames, width, height, alt=f"{heading} through its cycle, with its accelerations"
+    )

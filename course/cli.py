@@ -28,14 +28,19 @@ EPILOG = """example:
 
 def register(subparsers):
     """Add ``course`` to the ``accelab`` command's subparsers."""
-    p = subparsers.add_parser("course", help="write the course notebooks (.ipynb) to a folder",
-                              description="Write the course, one Jupyter notebook per topic, "
-                                          "to a folder of your choice.",
-                              epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--out", metavar="DIR", required=True,
-                   help="folder for the notebooks (created if needed)")
-    p.add_argument("--force", action="store_true",
-                   help="overwrite notebooks that are already there")
+    p = subparsers.add_parser(
+        "course",
+        help="write the course notebooks (.ipynb) to a folder",
+        description="Write the course, one Jupyter notebook per topic, to a folder of your choice.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument(
+        "--out", metavar="DIR", required=True, help="folder for the notebooks (created if needed)"
+    )
+    p.add_argument(
+        "--force", action="store_true", help="overwrite notebooks that are already there"
+    )
     p.set_defaults(func=run)
     return p
 
@@ -44,9 +49,13 @@ def to_notebook(source):
     """The notebook (nbformat node) of a percent-format source, with a python3
     kernel and the course's metadata, outputs empty."""
     import jupytext
+
     nb = jupytext.read(source, fmt="py:percent")
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     nb.metadata.setdefault("language_info", {"name": "python"})
     nb.metadata.pop("jupytext", None)
     return nb
@@ -56,7 +65,9 @@ def write(out, force=False, log=print):
     """Write every notebook and page to ``out``; returns ``(written, kept)``
     lists of paths (``kept``: notebooks already there, left alone)."""
     import nbformat
+
     from . import notebooks, pages
+
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     written, kept = [], []
@@ -84,8 +95,11 @@ def run(args):
     try:
         _, kept = write(args.out, args.force)
     except OSError as exc:
-        print(f"accelab course: cannot write to {args.out}: {exc.strerror or exc}; choose "
-              "another folder with --out", file=sys.stderr)
+        print(
+            f"accelab course: cannot write to {args.out}: {exc.strerror or exc}; choose "
+            "another folder with --out",
+            file=sys.stderr,
+        )
         return 2
     return 1 if kept else 0
 

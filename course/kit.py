@@ -43,19 +43,45 @@ _STATIC_DPI = 100
 #: widest static figure [px]: two panels of a page's width (about 750 px) side by side
 STATIC_WIDTH = 900
 
-__all__ = ["COLORS", "LINESTYLES", "LINK_COLOR", "CIRCUIT_COLORS", "G0", "use_style",
-           "is_static", "static_values", "small_multiples", "explore", "cartesian", "polar",
-           "in_g", "vector", "point_label", "stated", "measure"]
+__all__ = [
+    "COLORS",
+    "LINESTYLES",
+    "LINK_COLOR",
+    "CIRCUIT_COLORS",
+    "G0",
+    "use_style",
+    "is_static",
+    "static_values",
+    "small_multiples",
+    "explore",
+    "cartesian",
+    "polar",
+    "in_g",
+    "vector",
+    "point_label",
+    "stated",
+    "measure",
+]
 
 
 def use_style():
     """Matplotlib settings every notebook starts with: readable at page width."""
-    plt.rcParams.update({
-        "figure.figsize": (6.4, 4.0), "figure.dpi": _STATIC_DPI, "savefig.dpi": _STATIC_DPI,
-        "font.size": 11, "axes.titlesize": 12, "axes.labelsize": 11, "legend.fontsize": 10,
-        "axes.grid": True, "grid.alpha": 0.3, "axes.spines.top": False,
-        "axes.spines.right": False, "figure.constrained_layout.use": True,
-    })
+    plt.rcParams.update(
+        {
+            "figure.figsize": (6.4, 4.0),
+            "figure.dpi": _STATIC_DPI,
+            "savefig.dpi": _STATIC_DPI,
+            "font.size": 11,
+            "axes.titlesize": 12,
+            "axes.labelsize": 11,
+            "legend.fontsize": 10,
+            "axes.grid": True,
+            "grid.alpha": 0.3,
+            "axes.spines.top": False,
+            "axes.spines.right": False,
+            "figure.constrained_layout.use": True,
+        }
+    )
 
 
 def is_static():
@@ -74,14 +100,15 @@ def is_static():
 
 def _parse(name, spec):
     if not isinstance(spec, (tuple, list)) or len(spec) not in (4, 5):
-        raise ValueError(f"explore: {name} must be (min, max, step, default) or "
-                         f"(min, max, step, default, unit), e.g. {name}=(0, 360, 5, 30, 'deg'); "
-                         f"got {spec!r}")
+        raise ValueError(
+            f"explore: {name} must be (min, max, step, default) or "
+            f"(min, max, step, default, unit), e.g. {name}=(0, 360, 5, 30, 'deg'); "
+            f"got {spec!r}"
+        )
     lo, hi, step, default = spec[:4]
     unit = spec[4] if len(spec) == 5 else ""
     if not lo <= default <= hi or step <= 0:
-        raise ValueError(f"explore: {name} needs min <= default <= max and step > 0 "
-                         f"(got {spec!r})")
+        raise ValueError(f"explore: {name} needs min <= default <= max and step > 0 (got {spec!r})")
     return lo, hi, step, default, unit
 
 
@@ -118,8 +145,10 @@ def _figure_of(result):
         return result
     if hasattr(result, "figure"):  # an Axes
         return result.figure
-    raise TypeError("explore: draw() must return a matplotlib Figure (or an Axes, or None "
-                    f"after drawing on the current figure); it returned {type(result).__name__}")
+    raise TypeError(
+        "explore: draw() must return a matplotlib Figure (or an Axes, or None "
+        f"after drawing on the current figure); it returned {type(result).__name__}"
+    )
 
 
 def small_multiples(draw, name, values, fixed, unit="", columns=None, units=None):
@@ -139,23 +168,35 @@ def small_multiples(draw, name, values, fixed, unit="", columns=None, units=None
     band = 30  # px for each panel's caption
     head = 34
     W, H = columns * w, rows * (h + band) + head
-    fig = plt.figure(figsize=(W / _STATIC_DPI, H / _STATIC_DPI), dpi=_STATIC_DPI,
-                     layout="none")
+    fig = plt.figure(figsize=(W / _STATIC_DPI, H / _STATIC_DPI), dpi=_STATIC_DPI, layout="none")
     units = units or {}
     others = ", ".join(_label(k, v, units.get(k, "")) for k, v in fixed.items())
-    fig.text(0.5, 1 - 17 / H, f"Moving {name}" + (f" (with {others})" if others else "")
-             + ": in a live notebook this is a slider", ha="center", va="center",
-             fontsize=12, color="#333333")
+    fig.text(
+        0.5,
+        1 - 17 / H,
+        f"Moving {name}"
+        + (f" (with {others})" if others else "")
+        + ": in a live notebook this is a slider",
+        ha="center",
+        va="center",
+        fontsize=12,
+        color="#333333",
+    )
     for i, im in enumerate(images):
         r, c = divmod(i, columns)
         x0 = c * w + (w - im.shape[1]) / 2
         y_top = head + r * (h + band)
-        fig.text((c * w + w / 2) / W, 1 - (y_top + band / 2) / H,
-                 _label(name, values[i], unit), ha="center", va="center", fontsize=12,
-                 fontweight="bold")
+        fig.text(
+            (c * w + w / 2) / W,
+            1 - (y_top + band / 2) / H,
+            _label(name, values[i], unit),
+            ha="center",
+            va="center",
+            fontsize=12,
+            fontweight="bold",
+        )
         y0 = y_top + band
-        ax = fig.add_axes([x0 / W, 1 - (y0 + im.shape[0]) / H, im.shape[1] / W,
-                           im.shape[0] / H])
+        ax = fig.add_axes([x0 / W, 1 - (y0 + im.shape[0]) / H, im.shape[1] / W, im.shape[0] / H])
         ax.imshow(im, interpolation="none")
         ax.set_axis_off()
     return fig
@@ -189,8 +230,9 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
         name, (lo, hi, step, default, unit) = next(iter(specs.items()))
         fixed = {k: s[3] for k, s in list(specs.items())[1:]}
         vals = list(values) if values is not None else static_values(lo, hi, step, frames)
-        fig = small_multiples(draw, name, vals, fixed, unit, columns,
-                              units={k: s[4] for k, s in specs.items()})
+        fig = small_multiples(
+            draw, name, vals, fixed, unit, columns, units={k: s[4] for k, s in specs.items()}
+        )
         _show(fig)
         return None
     import ipywidgets as widgets
@@ -198,12 +240,21 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
 
     controls = {}
     for k, (lo, hi, step, default, unit) in specs.items():
-        kind = widgets.IntSlider if all(float(x).is_integer() for x in (lo, hi, step, default)) \
+        kind = (
+            widgets.IntSlider
+            if all(float(x).is_integer() for x in (lo, hi, step, default))
             else widgets.FloatSlider
-        controls[k] = kind(min=lo, max=hi, step=step, value=default,
-                           description=f"{k} [{unit}]" if unit else k,
-                           continuous_update=False, style={"description_width": "initial"},
-                           layout=widgets.Layout(width="420px"))
+        )
+        controls[k] = kind(
+            min=lo,
+            max=hi,
+            step=step,
+            value=default,
+            description=f"{k} [{unit}]" if unit else k,
+            continuous_update=False,
+            style={"description_width": "initial"},
+            layout=widgets.Layout(width="420px"),
+        )
 
     def update(**kw):
         fig = _figure_of(draw(**kw))
@@ -278,8 +329,10 @@ def stated(value, text, unit=None, sig=None):
     if sig is not None and target != 0:
         half = 0.5 * 10.0 ** (math.floor(math.log10(abs(target))) - sig + 1)
     if not abs(float(v) - target) <= half * (1 + 1e-9):
-        raise AssertionError(f"the prose says {text}{' ' + unit if unit else ''} but the "
-                             f"notebook computes {float(v):.6g}: update the prose")
+        raise AssertionError(
+            f"the prose says {text}{' ' + unit if unit else ''} but the "
+            f"notebook computes {float(v):.6g}: update the prose"
+        )
     return value
 
 
@@ -289,6 +342,7 @@ def measure(functions, repeats=5, min_time=0.01):
     timed in turn (each run as many times as fill ``min_time``), so that a
     busy machine slows them all alike."""
     import time
+
     functions = list(functions)
     for f in functions:
         f()
@@ -323,6 +377,7 @@ def vector(ax, start, vec, kind="resultant", label=None, scale=1.0, beside=0.0, 
     texts and other labels. ``beside`` [pt] shifts the arrow to its left
     (negative: right), e.g. off a link it lies along. Returns the tip."""
     from accelab.solver.graphical.draw import arrow
+
     return arrow(ax, start, vec, kind, label, scale, beside)
 
 
@@ -331,4 +386,5 @@ def point_label(ax, text, z, **kw):
     figure is drawn, beside the point and clear of the figure's lines, texts and
     other labels (as :func:`vector` places its labels)."""
     from accelab.solver.graphical.labels import labels_of
+
     labels_of(ax).add_point(text, complex(z), fontsize=kw.pop("fontsize", 11), **kw)

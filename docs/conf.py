@@ -25,7 +25,7 @@ notebooks.set_kernel_env()
 project = "accelab"
 author = "the accelab developers"
 copyright = "accelab developers"
-release = version = accelab.__version__   # the one place the version is written
+release = version = accelab.__version__  # the one place the version is written
 
 extensions = [
     "myst_nb",
@@ -37,20 +37,36 @@ extensions = [
 ]
 
 root_doc = "index"
-exclude_patterns = ["_build", "*.py", "**/__pycache__", "**/.ipynb_checkpoints", "notebooks.py",
-                    "conf.py", "_ext", "course/[!0-9]*.py", "course/site", "**/*.ipynb",
-                    "course/FAMILIES.md",   # shipped with `accelab course`; the guide has the table
-                    "api/generated/*.rst.txt"]
+exclude_patterns = [
+    "_build",
+    "*.py",
+    "**/__pycache__",
+    "**/.ipynb_checkpoints",
+    "notebooks.py",
+    "conf.py",
+    "_ext",
+    "course/[!0-9]*.py",
+    "course/site",
+    "**/*.ipynb",
+    "course/FAMILIES.md",  # shipped with `accelab course`; the guide has the table
+    "api/generated/*.rst.txt",
+]
 templates_path = ["_templates"]
 suppress_warnings = ["myst.header", "mystnb.unknown_mime_type"]
 nitpicky = False
-highlight_language = "text"     # literal blocks of the docstrings are formulas, not Python
+highlight_language = "text"  # literal blocks of the docstrings are formulas, not Python
 
 # ---------------------------------------------------------------- MyST and notebooks
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb", ".py": "myst-nb"}
 nb_custom_formats = {".py": ["jupytext.reads", {"fmt": "py:percent"}]}
-myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist", "html_image",
-                          "attrs_inline"]
+myst_enable_extensions = [
+    "dollarmath",
+    "amsmath",
+    "colon_fence",
+    "deflist",
+    "html_image",
+    "attrs_inline",
+]
 myst_heading_anchors = 3
 myst_dmath_double_inline = True
 nb_execution_mode = "cache"
@@ -61,7 +77,7 @@ nb_execution_show_tb = True
 nb_merge_streams = True
 # Markdown outputs (a practice problem, its answers) read as the pages do: tables, math
 nb_render_markdown_format = "myst"
-nb_ipywidgets_js = {}                # never load the widget manager from a CDN
+nb_ipywidgets_js = {}  # never load the widget manager from a CDN
 nb_output_stderr = "warn"
 
 # ---------------------------------------------------------------- math, served locally

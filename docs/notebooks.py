@@ -24,12 +24,20 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 COURSE = ROOT / "course"
 CACHE_ROOT = ROOT / "build" / "docs-cache"
-CELL_TIMEOUT = 300          # s per cell
+CELL_TIMEOUT = 300  # s per cell
 #: the code the executed notebooks depend on (besides the notebooks' own cells)
 CODE = ("solver", "exercises", "accelab", "benchmarks", "course")
 
-__all__ = ["sources", "kernel_env", "set_kernel_env", "cache_path", "execute", "store",
-           "problems", "NotebookFailed"]
+__all__ = [
+    "sources",
+    "kernel_env",
+    "set_kernel_env",
+    "cache_path",
+    "execute",
+    "store",
+    "problems",
+    "NotebookFailed",
+]
 
 
 class NotebookFailed(RuntimeError):
@@ -64,7 +72,7 @@ def _code_files():
             continue
         for path in sorted(top.rglob("*.py")):
             if name == "course" and path.parent == COURSE and path.name[:2].isdigit():
-                continue      # the notebooks themselves: the cache keys them by their cells
+                continue  # the notebooks themselves: the cache keys them by their cells
             if "__pycache__" not in path.parts:
                 yield path
 
@@ -92,9 +100,11 @@ def cache_path(prune=False):
 def read(source):
     """The notebook of a jupytext source, as MyST-NB reads it."""
     import jupytext
+
     nb = jupytext.read(source, fmt="py:percent")
-    nb.metadata.setdefault("kernelspec", {"name": "python3", "display_name": "Python 3",
-                                          "language": "python"})
+    nb.metadata.setdefault(
+        "kernelspec", {"name": "python3", "display_name": "Python 3", "language": "python"}
+    )
     return nb
 
 
@@ -121,9 +131,14 @@ def execute(source, timeout=CELL_TIMEOUT):
 
     source = Path(source)
     nb = read(source)
-    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", startup_timeout=120,
-                            allow_errors=False,
-                            resources={"metadata": {"path": str(source.parent)}})
+    client = NotebookClient(
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        startup_timeout=120,
+        allow_errors=False,
+        resources={"metadata": {"path": str(source.parent)}},
+    )
     try:
         client.execute(env=kernel_env())
     except CellExecutionError as exc:
@@ -150,8 +165,11 @@ def store(source, nb, seconds=None):
 
     cache = get_cache(str(cache_path()))
     data = {"execution_seconds": seconds} if seconds is not None else {}
-    cache.cache_notebook_bundle(CacheBundleIn(nb, str(Path(source).resolve()), data=data),
-                                check_validity=False, overwrite=True)
+    cache.cache_notebook_bundle(
+        CacheBundleIn(nb, str(Path(source).resolve()), data=data),
+        check_validity=False,
+        overwrite=True,
+    )
 
 
 def cached(source):
@@ -178,6 +196,7 @@ def readme_figures(outdir):
     ``outdir``, from the executed notebooks (executing those not in the cache);
     returns the paths written."""
     import base64
+
     written = []
     for name, (stem, k) in README_FIGURES.items():
         source = COURSE / f"{stem}.py"
@@ -185,15 +204,21 @@ def readme_figures(outdir):
         if nb is None:
             nb = execute(source)
             store(source, nb)
-        pngs = [o["data"]["image/png"] for c in nb.cells if c.cell_type == "code"
-                for o in c.get("outputs", []) if "image/png" in o.get("data", {})]
+        pngs = [
+            o["data"]["image/png"]
+            for c in nb.cells
+            if c.cell_type == "code"
+            for o in c.get("outputs", [])
+            if "image/png" in o.get("data", {})
+        ]
         target = Path(outdir) / name
         target.write_bytes(base64.b64decode(pngs[k - 1]))
         written.append(target)
     return written
 
 
-if __name__ == "__main__":     # python -m docs.notebooks figures/
+if __name__ == "__main__":  # python -m docs.notebooks figures/
     import sys
+
     for path in readme_figures(sys.argv[1] if len(sys.argv) > 1 else ROOT / "figures"):
         print(f"wrote {path}")

@@ -16,8 +16,14 @@ import shutil
 
 from .assignment import DEFAULT_ANGLE_TOLERANCE, build_variant, make_spec
 from .families.common import GenerationError
-from .nbgrader_course import (course_id_of, create_course, ensure_path, gradebook, nbgrader,
-                              roster_ids)
+from .nbgrader_course import (
+    course_id_of,
+    create_course,
+    ensure_path,
+    gradebook,
+    nbgrader,
+    roster_ids,
+)
 from .notebook import write_source
 from .silence import silenced
 
@@ -34,8 +40,9 @@ def submissions_of(course_dir, assignment):
     for step in ("submitted", "autograded"):
         root = os.path.join(course_dir, step)
         if os.path.isdir(root):
-            found.update(s for s in os.listdir(root)
-                         if os.path.isdir(os.path.join(root, s, assignment)))
+            found.update(
+                s for s in os.listdir(root) if os.path.isdir(os.path.join(root, s, assignment))
+            )
     return sorted(found)
 
 
@@ -58,16 +65,38 @@ def changes(old, new):
     return out
 
 
-def assign(course_dir, assignment, families=None, units="US", tolerance=0.01, ranges=None,
-           roster=(), course_id=None, generate=True, release=False, timeout=10, title=None,
-           angle_tolerance=DEFAULT_ANGLE_TOLERANCE, due=None, force=False, time_limit=60,
-           say=print):
+def assign(
+    course_dir,
+    assignment,
+    families=None,
+    units="US",
+    tolerance=0.01,
+    ranges=None,
+    roster=(),
+    course_id=None,
+    generate=True,
+    release=False,
+    timeout=10,
+    title=None,
+    angle_tolerance=DEFAULT_ANGLE_TOLERANCE,
+    due=None,
+    force=False,
+    time_limit=60,
+    say=print,
+):
     """Create the assignment; returns the source notebook path."""
     if os.path.exists(os.path.join(course_dir, "nbgrader_config.py")):
         course_id = course_id or course_id_of(course_dir)
     course_id = course_id or "accelab"
-    spec = make_spec(course_id, assignment, families or DEFAULT_FAMILIES, units, tolerance,
-                     ranges, angle_tolerance)
+    spec = make_spec(
+        course_id,
+        assignment,
+        families or DEFAULT_FAMILIES,
+        units,
+        tolerance,
+        ranges,
+        angle_tolerance,
+    )
     ids = [str(s["id"] if isinstance(s, dict) else s) for s in roster]
     if os.path.isdir(course_dir):
         ids = list(dict.fromkeys([*roster_ids(course_dir), *ids]))
@@ -85,14 +114,17 @@ def assign(course_dir, assignment, families=None, units="US", tolerance=0.01, ra
                 "would regrade them against new values"
                 + (f" ({'; '.join(diff)})" if diff else "")
                 + ". Use another assignment name, or --force to replace it anyway (the old "
-                "settings are kept).")
+                "settings are kept)."
+            )
         if taken:
             stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
             keep = os.path.join(course_dir, ".accelab", "replaced", f"{assignment}-{stamp}.json")
             os.makedirs(os.path.dirname(keep), exist_ok=True)
             shutil.copy2(spec_path, keep)
-            say(f"replacing assignment {assignment!r} with {len(taken)} submission(s); old "
-                f"settings kept in {keep}; changes: {'; '.join(diff) or 'none'}")
+            say(
+                f"replacing assignment {assignment!r} with {len(taken)} submission(s); old "
+                f"settings kept in {keep}; changes: {'; '.join(diff) or 'none'}"
+            )
     create_course(course_dir, course_id, roster, timeout=timeout, time_limit=time_limit)
     path = write_source(course_dir, spec, title)
     if due is not None:
@@ -110,8 +142,9 @@ def set_due(course_dir, course_id, assignment, due):
     try:
         when = datetime.datetime.fromisoformat(str(due))
     except ValueError:
-        raise AssignError(f"due date {due!r} is not a date and time like "
-                          "'2026-12-01 17:00'") from None
+        raise AssignError(
+            f"due date {due!r} is not a date and time like '2026-12-01 17:00'"
+        ) from None
     if when.tzinfo is not None:
         when = when.astimezone(datetime.timezone.utc).replace(tzinfo=None)
     ensure_path()

@@ -27,13 +27,24 @@ DEFAULT_TOLERANCE = 0.01
 DEFAULT_ANGLE_TOLERANCE = 1.0
 
 
-def make_spec(course, assignment, families, units="US", tolerance=DEFAULT_TOLERANCE,
-              ranges=None, angle_tolerance=DEFAULT_ANGLE_TOLERANCE):
+def make_spec(
+    course,
+    assignment,
+    families,
+    units="US",
+    tolerance=DEFAULT_TOLERANCE,
+    ranges=None,
+    angle_tolerance=DEFAULT_ANGLE_TOLERANCE,
+):
     """A checked spec. ``ranges`` maps family -> its ranges dict."""
-    spec = {"course": str(course), "assignment": str(assignment), "units": units,
-            "tolerance": float(tolerance), "angle_tolerance": float(angle_tolerance),
-            "problems": [{"family": f, "ranges": dict((ranges or {}).get(f, {}))}
-                         for f in families]}
+    spec = {
+        "course": str(course),
+        "assignment": str(assignment),
+        "units": units,
+        "tolerance": float(tolerance),
+        "angle_tolerance": float(angle_tolerance),
+        "problems": [{"family": f, "ranges": dict((ranges or {}).get(f, {}))} for f in families],
+    }
     return check_spec(spec)
 
 
@@ -46,14 +57,16 @@ def check_spec(spec):
     if not 0 < float(spec["tolerance"]) < 0.5:
         raise ValueError(f"tolerance is relative, e.g. 0.01 for 1% (got {spec['tolerance']!r})")
     if not 0 < float(spec.get("angle_tolerance", DEFAULT_ANGLE_TOLERANCE)) <= 45:
-        raise ValueError("angle_tolerance is a band in degrees, e.g. 1.0 "
-                         f"(got {spec['angle_tolerance']!r})")
+        raise ValueError(
+            f"angle_tolerance is a band in degrees, e.g. 1.0 (got {spec['angle_tolerance']!r})"
+        )
     if not spec["problems"]:
         raise ValueError("an assignment needs at least one problem")
     for p in spec["problems"]:
         if p.get("family") not in FAMILIES:
-            raise ValueError(f"unknown problem family {p.get('family')!r}; use one of "
-                             f"{', '.join(FAMILIES)}")
+            raise ValueError(
+                f"unknown problem family {p.get('family')!r}; use one of {', '.join(FAMILIES)}"
+            )
     return spec
 
 
@@ -78,20 +91,32 @@ class Variant:
 
     def statement(self):
         """What the student's kernel may hold: given values and what is asked."""
-        return {"course": self.spec["course"], "assignment": self.spec["assignment"],
-                "student": self.student, "units": self.spec["units"],
-                "tolerance": self.tolerance, "angle_tolerance": self.angle_tolerance,
-                "problems": [p.statement_view() for p in self.problems]}
+        return {
+            "course": self.spec["course"],
+            "assignment": self.spec["assignment"],
+            "student": self.student,
+            "units": self.spec["units"],
+            "tolerance": self.tolerance,
+            "angle_tolerance": self.angle_tolerance,
+            "problems": [p.statement_view() for p in self.problems],
+        }
 
     def public(self):
         """The variant as ``accelab variant --json`` prints it: no answers."""
-        return {"course": self.spec["course"], "assignment": self.spec["assignment"],
-                "student": self.student, "units": self.spec["units"],
-                "tolerance": self.tolerance, "angle_tolerance": self.angle_tolerance,
-                "problems": [dict(p.public(), number=k + 1)
-                             for k, p in enumerate(self.problems)],
-                "answers": [dict(a.public(), problem=k + 1)
-                            for k, p in enumerate(self.problems) for a in p.answers]}
+        return {
+            "course": self.spec["course"],
+            "assignment": self.spec["assignment"],
+            "student": self.student,
+            "units": self.spec["units"],
+            "tolerance": self.tolerance,
+            "angle_tolerance": self.angle_tolerance,
+            "problems": [dict(p.public(), number=k + 1) for k, p in enumerate(self.problems)],
+            "answers": [
+                dict(a.public(), problem=k + 1)
+                for k, p in enumerate(self.problems)
+                for a in p.answers
+            ],
+        }
 
 
 def build_variant(spec, student):

@@ -27,26 +27,36 @@ MARKER = ".accelab-demo"
 class DemoError(RuntimeError):
     """The demo cannot run as asked; the message says why."""
 
-ROSTER = [{"id": "ada", "first_name": "Ada", "last_name": "Lovelace"},
-          {"id": "ben", "first_name": "Ben", "last_name": "Franklin"},
-          {"id": "cai", "first_name": "Cai", "last_name": "Lun"},
-          {"id": "dee", "first_name": "Dee", "last_name": "Dee"},
-          {"id": "eve", "first_name": "Eve", "last_name": "Curie"},
-          {"id": "fay", "first_name": "Fay", "last_name": "Wray"},
-          {"id": "gus", "first_name": "Gus", "last_name": "Grissom"}]
+
+ROSTER = [
+    {"id": "ada", "first_name": "Ada", "last_name": "Lovelace"},
+    {"id": "ben", "first_name": "Ben", "last_name": "Franklin"},
+    {"id": "cai", "first_name": "Cai", "last_name": "Lun"},
+    {"id": "dee", "first_name": "Dee", "last_name": "Dee"},
+    {"id": "eve", "first_name": "Eve", "last_name": "Curie"},
+    {"id": "fay", "first_name": "Fay", "last_name": "Wray"},
+    {"id": "gus", "first_name": "Gus", "last_name": "Grissom"},
+]
 
 
 def worked_case(out):
     """Print Example 7-1 (Norton): fourbar a=2, b=6, c=9, d=7 in, theta2=30 deg,
     omega2=10 rad/s, alpha2=-5 rad/s^2, open circuit, solved by accelab.solver.FourBar."""
     from accelab.solver import FourBar
+
     r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
-        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit="open")
+        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit="open"
+    )
     out("Worked case (Example 7-1): fourbar a=2 in, b=6 in, c=9 in, d=7 in, open circuit,")
     out("theta2 = 30 deg, omega2 = 10 rad/s, alpha2 = -5 rad/s^2")
-    rows = [("theta3", r.theta3.to("deg")), ("theta4", r.theta4.to("deg")),
-            ("omega3", r.omega3.to("rad/s")), ("omega4", r.omega4.to("rad/s")),
-            ("alpha3", r.alpha3.to("rad/s^2")), ("alpha4", r.alpha4.to("rad/s^2"))]
+    rows = [
+        ("theta3", r.theta3.to("deg")),
+        ("theta4", r.theta4.to("deg")),
+        ("omega3", r.omega3.to("rad/s")),
+        ("omega4", r.omega4.to("rad/s")),
+        ("alpha3", r.alpha3.to("rad/s^2")),
+        ("alpha4", r.alpha4.to("rad/s^2")),
+    ]
     for name, q in rows:
         out(f"  {name:<8} {q.magnitude:>10.3f} {q.units:~P}")
     for name in ("A_A", "A_B", "A_BA"):
@@ -87,7 +97,9 @@ def build_submissions(course, assignment):
 
     def load_ada(nb):
         from nbformat.v4 import new_code_cell
+
         nb.cells.insert(2, new_code_cell("v = load_variant(SPEC, 'ada')"))
+
     submit(course, assignment, "fay", key_code(spec, "ada"), edit=load_ada)
     plans["fay"] = "copy"
     return plans
@@ -97,27 +109,37 @@ def run_demo(course="build/demo-course", assignment="A", jobs=2, out=print, fres
     worked_case(out)
     if os.path.exists(course):
         if not os.path.exists(os.path.join(course, MARKER)):
-            raise DemoError(f"{course} exists and was not made by accelab demo: choose another "
-                            "--course folder (the demo never deletes a folder it did not make)")
+            raise DemoError(
+                f"{course} exists and was not made by accelab demo: choose another "
+                "--course folder (the demo never deletes a folder it did not make)"
+            )
         if fresh:
             shutil.rmtree(course)
     os.makedirs(course, exist_ok=True)
     with open(os.path.join(course, MARKER), "w") as fh:
         fh.write("made by accelab demo; `accelab demo` may delete this folder\n")
     start = time.monotonic()
-    out(f"Creating the course {course} (roster: {', '.join(s['id'] for s in ROSTER)}) and "
-        f"assignment {assignment} ...")
+    out(
+        f"Creating the course {course} (roster: {', '.join(s['id'] for s in ROSTER)}) and "
+        f"assignment {assignment} ..."
+    )
     assign(course, assignment, roster=ROSTER, course_id="accelab-demo", release=True)
     out(f"  source notebook and released notebook written ({time.monotonic() - start:.1f} s)")
     build_submissions(course, assignment)
-    out("Simulated submissions: ada right, ben sign errors, cai wrong units (bare SI numbers), "
-        "dee crashes, eve right in SI units, fay copies ada's answers")
+    out(
+        "Simulated submissions: ada right, ben sign errors, cai wrong units (bare SI numbers), "
+        "dee crashes, eve right in SI units, fay copies ada's answers"
+    )
     subs, path, rows, seconds, timings = grade(course, assignment, jobs=jobs)
-    out(f"Graded {len(subs)} submissions in the sandbox, with feedback and CSV, in "
-        f"{seconds:.1f} s ({jobs} at a time)\n")
+    out(
+        f"Graded {len(subs)} submissions in the sandbox, with feedback and CSV, in "
+        f"{seconds:.1f} s ({jobs} at a time)\n"
+    )
     out(format_table(rows, question_names(course, assignment)))
     out(f"\nper-question CSV: {path}")
     out(f"feedback: {os.path.join(course, 'feedback')}/<student>/{assignment}/{assignment}.html")
-    out(f"grade again after adding submissions: accelab grade --course {course} "
-        f"--assignment {assignment}")
+    out(
+        f"grade again after adding submissions: accelab grade --course {course} "
+        f"--assignment {assignment}"
+    )
     return rows

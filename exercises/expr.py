@@ -17,8 +17,12 @@ FUNCTIONS = {
     "real": lambda z: complex(z).real,
     "imag": lambda z: complex(z).imag,
 }
-BINARY = {ast.Add: lambda x, y: x + y, ast.Sub: lambda x, y: x - y,
-          ast.Mult: lambda x, y: x * y, ast.Div: lambda x, y: x / y}
+BINARY = {
+    ast.Add: lambda x, y: x + y,
+    ast.Sub: lambda x, y: x - y,
+    ast.Mult: lambda x, y: x * y,
+    ast.Div: lambda x, y: x / y,
+}
 UNARY = {ast.USub: lambda x: -x, ast.UAdd: lambda x: +x}
 
 
@@ -43,8 +47,9 @@ def _check(node, text):
             raise ExprError(f"only numbers are allowed as constants in {text!r}")
     elif isinstance(node, ast.BinOp):
         if type(node.op) not in BINARY:
-            raise ExprError(f"operator {type(node.op).__name__} is not allowed in {text!r}; "
-                            "use + - * /")
+            raise ExprError(
+                f"operator {type(node.op).__name__} is not allowed in {text!r}; use + - * /"
+            )
         _check(node.left, text)
         _check(node.right, text)
     elif isinstance(node, ast.UnaryOp):
@@ -52,16 +57,22 @@ def _check(node, text):
             raise ExprError(f"unary {type(node.op).__name__} is not allowed in {text!r}")
         _check(node.operand, text)
     elif isinstance(node, ast.Call):
-        if (not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS
-                or len(node.args) != 1 or node.keywords):
+        if (
+            not isinstance(node.func, ast.Name)
+            or node.func.id not in FUNCTIONS
+            or len(node.args) != 1
+            or node.keywords
+        ):
             raise ExprError(f"only abs(x), angle(x), real(x), imag(x) may be called in {text!r}")
         _check(node.args[0], text)
     elif isinstance(node, ast.Attribute):
         if not isinstance(node.value, ast.Name):
             raise ExprError(f"names must look like LABEL.KEY in {text!r}")
     else:
-        raise ExprError(f"{type(node).__name__} is not allowed in {text!r}; only LABEL.KEY, "
-                        "numbers, + - * / and abs, angle, real, imag")
+        raise ExprError(
+            f"{type(node).__name__} is not allowed in {text!r}; only LABEL.KEY, "
+            "numbers, + - * / and abs, angle, real, imag"
+        )
 
 
 def _value(output, label, key, text):

@@ -14,6 +14,7 @@ INPUT = r"$\theta_2, \omega_2, \alpha_2$"
 def _box(cons):
     """A frame [display length unit] that holds every construction's points."""
     from accelab.solver.graphical.draw import units_of
+
     pts = [z * units_of(c)["length"][1] for c in cons for z in c.linkage.points.values()]
     xs, ys = [z.real for z in pts], [z.imag for z in pts]
     size = max(max(xs) - min(xs), max(ys) - min(ys)) or 1.0
@@ -29,6 +30,7 @@ def statement_figure(problem, dpi=90, shared=True):
     differ; a practice problem's own figure (``shared=False``) says it is this
     problem's."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -38,28 +40,58 @@ def statement_figure(problem, dpi=90, shared=True):
     spec = problem.figure
     con = construct_case(spec["case"])
     fig, ax = plt.subplots(figsize=(5.0, 3.6), dpi=dpi, layout="constrained")
-    title = f"{problem.title} " + ("(schematic: your values differ)" if shared else
-                                   "(this problem, to scale)")
+    title = f"{problem.title} " + (
+        "(schematic: your values differ)" if shared else "(this problem, to scale)"
+    )
     if spec["mechanism"] == "rotation":
         # problem 7-1 style: the point at A and, later, at B on the same circle
         second = construct_case(spec["case_B"]) if "case_B" in spec else None
         box = _box([con] + ([second] if second else []))
-        draw_linkage(con, ax=ax, vectors=False, symbols=True, names={"O2": "O", "P": "A"},
-                     notes={"O2": r"$\omega, \alpha$"}, title=title, legend=False,
-                     scale_bars=False, box=box)
+        draw_linkage(
+            con,
+            ax=ax,
+            vectors=False,
+            symbols=True,
+            names={"O2": "O", "P": "A"},
+            notes={"O2": r"$\omega, \alpha$"},
+            title=title,
+            legend=False,
+            scale_bars=False,
+            box=box,
+        )
         if second:
             import numpy as np
+
             f = units_of(con)["length"][1]
-            t = np.linspace(read_case(spec["case"]).params["theta2"],
-                            read_case(spec["case_B"]).params["theta2"], 40)
+            t = np.linspace(
+                read_case(spec["case"]).params["theta2"],
+                read_case(spec["case_B"]).params["theta2"],
+                40,
+            )
             r = abs(con.linkage.points["P"]) * f
             ax.plot(r * np.cos(t), r * np.sin(t), "--", color="0.55", lw=1.0, zorder=0)
-            draw_linkage(second, ax=ax, vectors=False, names={"O2": None, "P": "B"},
-                         title=title, legend=False, scale_bars=False, box=box,
-                         colour="#9a9a9a")
+            draw_linkage(
+                second,
+                ax=ax,
+                vectors=False,
+                names={"O2": None, "P": "B"},
+                title=title,
+                legend=False,
+                scale_bars=False,
+                box=box,
+                colour="#9a9a9a",
+            )
     else:
-        draw_linkage(con, ax=ax, vectors=False, symbols=True, notes={"O2": INPUT},
-                     title=title, legend=False, scale_bars=False)
+        draw_linkage(
+            con,
+            ax=ax,
+            vectors=False,
+            symbols=True,
+            notes={"O2": INPUT},
+            title=title,
+            legend=False,
+            scale_bars=False,
+        )
     ax.title.set_fontsize(9)
     buf = io.BytesIO()
     fig.savefig(buf, format="png")

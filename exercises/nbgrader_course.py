@@ -15,7 +15,7 @@ import os
 import subprocess
 import sys
 
-CONFIG = '''\
+CONFIG = """\
 # nbgrader configuration written by `accelab assign` (accelab exercises).
 import os
 
@@ -49,7 +49,7 @@ c.OverwriteCells.missing_cell_notification = "# test cell {{cell_id}} was delete
 c.GenerateFeedback.preprocessors = [GetGrades, CSSHTMLHeaderPreprocessor, CleanFeedback]
 # the released answer cells start empty (an undefined answer gets a clear message)
 c.ClearSolutions.code_stub = {{"python": "# YOUR ANSWER HERE"}}
-'''
+"""
 
 
 def ensure_path():
@@ -64,6 +64,7 @@ def ensure_path():
 def gradebook(root, course_id):
     """nbgrader's Gradebook on the course's embedded sqlite database."""
     from nbgrader.api import Gradebook
+
     ensure_path()
     return Gradebook("sqlite:///" + os.path.join(os.path.abspath(root), "gradebook.db"), course_id)
 
@@ -76,11 +77,17 @@ def nbgrader(course_dir, *args, check=True):
     env = dict(os.environ)
     bindir = os.path.dirname(sys.executable)
     env["PATH"] = bindir + os.pathsep + env.get("PATH", "")
-    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=course_dir, env=env,
-                          capture_output=True, text=True)
+    proc = subprocess.run(
+        [sys.executable, "-m", "nbgrader", *args],
+        cwd=course_dir,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
     if check and proc.returncode != 0:
-        raise RuntimeError(f"nbgrader {' '.join(args)} failed (exit {proc.returncode}):\n"
-                           + proc.stderr[-3000:])
+        raise RuntimeError(
+            f"nbgrader {' '.join(args)} failed (exit {proc.returncode}):\n" + proc.stderr[-3000:]
+        )
     return proc
 
 
@@ -105,8 +112,11 @@ def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=6
     config = os.path.join(root, "nbgrader_config.py")
     if not os.path.exists(config):
         with open(config, "w") as fh:
-            fh.write(CONFIG.format(course_id=course_id, timeout=float(timeout),
-                                   time_limit=float(time_limit)))
+            fh.write(
+                CONFIG.format(
+                    course_id=course_id, timeout=float(timeout), time_limit=float(time_limit)
+                )
+            )
     ids = roster_ids(root)
     with gradebook(root, course_id) as gb:
         for student in roster:
@@ -138,6 +148,7 @@ def write_roster(root, ids):
 def course_id_of(root):
     """The course id written in the course's nbgrader_config.py."""
     import re
+
     with open(os.path.join(root, "nbgrader_config.py")) as fh:
         m = re.search(r"course_id\s*=\s*['\"]([^'\"]+)['\"]", fh.read())
     return m.group(1) if m else "accelab"

@@ -28,8 +28,14 @@ PREVIEW_STUDENT = "preview"
 
 
 def _meta(grade_id, *, solution=False, grade=False, locked=False, points=None):
-    nb = {"grade": grade, "grade_id": grade_id, "locked": locked, "schema_version": 3,
-          "solution": solution, "task": False}
+    nb = {
+        "grade": grade,
+        "grade_id": grade_id,
+        "locked": locked,
+        "schema_version": 3,
+        "solution": solution,
+        "task": False,
+    }
     if points is not None:
         nb["points"] = points
     meta = {"nbgrader": nb}
@@ -72,10 +78,14 @@ graded, outside this notebook, against the exact value for your own values:
 - a word is right when it is the right one of the words listed.
 """
 
-ANSWER_TEMPLATE = ("# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
-                   "for each student (accelab variant shows the problem)\n### END SOLUTION\n")
-TEST_TEMPLATE = ("from accelab.exercises.student.runtime import check_format\n"
-                 "check_format({name!r}, globals())\n")
+ANSWER_TEMPLATE = (
+    "# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
+    "for each student (accelab variant shows the problem)\n### END SOLUTION\n"
+)
+TEST_TEMPLATE = (
+    "from accelab.exercises.student.runtime import check_format\n"
+    "check_format({name!r}, globals())\n"
+)
 
 
 def build_notebook(spec, title=None):
@@ -83,35 +93,64 @@ def build_notebook(spec, title=None):
     check_spec(spec)
     preview = build_variant(spec, PREVIEW_STUDENT)
     title = title or f"Assignment {spec['assignment']}: acceleration analysis"
-    cells = [_md(INSTRUCTIONS.format(title=title, student_hint="your JupyterHub user name, "
-                                     "or 'self-study' when working alone",
-                                     tol=f"{100 * spec['tolerance']:g}%",
-                                     angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}"),
-                    "instructions")]
-    cells.append(_code("from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
-                       f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
-                       "v = load_variant(SPEC, student_id())\n", "parameters", locked=True))
+    cells = [
+        _md(
+            INSTRUCTIONS.format(
+                title=title,
+                student_hint="your JupyterHub user name, or 'self-study' when working alone",
+                tol=f"{100 * spec['tolerance']:g}%",
+                angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}",
+            ),
+            "instructions",
+        )
+    ]
+    cells.append(
+        _code(
+            "from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
+            f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
+            "v = load_variant(SPEC, student_id())\n",
+            "parameters",
+            locked=True,
+        )
+    )
     for k, problem in enumerate(preview.problems, start=1):
         png = base64.b64encode(statement_figure(problem)).decode("ascii")
-        rows = "\n".join(f"| `{a.name}` | {a.description} | "
-                         f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')} |"
-                         for a in problem.answers)
-        text = (f"## Problem {k}: {problem.title}\n\n{problem.statement}\n\n"
-                f"![figure](attachment:figure{k}.png)\n\n"
-                f"| variable | quantity | unit |\n|---|---|---|\n{rows}\n")
-        cells.append(_md(text, f"problem{k}",
-                         attachments={f"figure{k}.png": {"image/png": png}}))
+        rows = "\n".join(
+            f"| `{a.name}` | {a.description} | "
+            f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')} |"
+            for a in problem.answers
+        )
+        text = (
+            f"## Problem {k}: {problem.title}\n\n{problem.statement}\n\n"
+            f"![figure](attachment:figure{k}.png)\n\n"
+            f"| variable | quantity | unit |\n|---|---|---|\n{rows}\n"
+        )
+        cells.append(_md(text, f"problem{k}", attachments={f"figure{k}.png": {"image/png": png}}))
         cells.append(_code(f"v.show({k})", f"given{k}", locked=True))
         for a in problem.answers:
             unit = a.unit or "text"
-            cells.append(_code(ANSWER_TEMPLATE.format(description=a.description, unit=unit,
-                                                      name=a.name),
-                               f"answer_{a.name}", solution=True))
-            cells.append(_code(TEST_TEMPLATE.format(name=a.name), f"test_{a.name}",
-                               grade=True, locked=True, points=1))
+            cells.append(
+                _code(
+                    ANSWER_TEMPLATE.format(description=a.description, unit=unit, name=a.name),
+                    f"answer_{a.name}",
+                    solution=True,
+                )
+            )
+            cells.append(
+                _code(
+                    TEST_TEMPLATE.format(name=a.name),
+                    f"test_{a.name}",
+                    grade=True,
+                    locked=True,
+                    points=1,
+                )
+            )
     nb = new_notebook(cells=cells)
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                 "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     nb.metadata["language_info"] = {"name": "python"}
     return nb
 
@@ -131,8 +170,10 @@ def read_spec(course_dir, assignment):
     """The spec that ``accelab assign`` stored for ``assignment``."""
     path = os.path.join(course_dir, "source", assignment, "accelab.json")
     if not os.path.exists(path):
-        raise FileNotFoundError(f"no assignment {assignment!r} in {course_dir} (missing {path}); "
-                                f"create it with: accelab assign --course {course_dir} "
-                                f"--assignment {assignment}")
+        raise FileNotFoundError(
+            f"no assignment {assignment!r} in {course_dir} (missing {path}); "
+            f"create it with: accelab assign --course {course_dir} "
+            f"--assignment {assignment}"
+        )
     with open(path) as fh:
         return check_spec(json.load(fh))

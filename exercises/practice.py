@@ -17,13 +17,13 @@ import random
 
 from accelab.solver.units import Q_, ureg
 
-from .student.answers import describe
+from .assignment import DEFAULT_ANGLE_TOLERANCE, DEFAULT_TOLERANCE, Variant
 from .families import FAMILIES, generate
 from .families.common import PRACTICE
 from .grader.judge import judge
 from .grader.key import key_of
-from .assignment import DEFAULT_ANGLE_TOLERANCE, DEFAULT_TOLERANCE, Variant
 from .silence import silenced
+from .student.answers import describe
 
 __all__ = ["practice", "Practice"]
 
@@ -34,11 +34,16 @@ class Practice:
     Use :func:`practice` to draw one.
     """
 
-    def __init__(self, family, seed, units="US", tolerance=DEFAULT_TOLERANCE,
-                 angle_tolerance=DEFAULT_ANGLE_TOLERANCE):
+    def __init__(
+        self,
+        family,
+        seed,
+        units="US",
+        tolerance=DEFAULT_TOLERANCE,
+        angle_tolerance=DEFAULT_ANGLE_TOLERANCE,
+    ):
         if family not in FAMILIES:
-            raise ValueError(f"unknown problem family {family!r}; use one of "
-                             f"{', '.join(FAMILIES)}")
+            raise ValueError(f"unknown problem family {family!r}; use one of {', '.join(FAMILIES)}")
         self.family, self.seed, self.units = family, int(seed), units
         self.tolerance, self.angle_tolerance = float(tolerance), float(angle_tolerance)
         token = PRACTICE.set(True)
@@ -47,9 +52,14 @@ class Practice:
                 self.problem = generate(family, self.seed, units=units)
         finally:
             PRACTICE.reset(token)
-        spec = {"course": "practice", "assignment": family, "units": units,
-                "tolerance": self.tolerance, "angle_tolerance": self.angle_tolerance,
-                "problems": [{"family": family}]}
+        spec = {
+            "course": "practice",
+            "assignment": family,
+            "units": units,
+            "tolerance": self.tolerance,
+            "angle_tolerance": self.angle_tolerance,
+            "problems": [{"family": family}],
+        }
         self._key = key_of(Variant(spec, f"practice-{self.seed}", [self.problem]))
         self.asked = {a.name: a.asked() for a in self.problem.answers}
 
@@ -71,11 +81,18 @@ class Practice:
         in the asked unit, or (for a choice) one of the words.
         """
         if name not in self.asked:
-            raise KeyError(f"this problem has no answer {name!r}; its answers are "
-                           f"{', '.join(self.asked)}")
+            raise KeyError(
+                f"this problem has no answer {name!r}; its answers are {', '.join(self.asked)}"
+            )
         with silenced():
-            verdict = judge(self.asked[name], describe(value), self._key.values[name],
-                            self.tolerance, self.angle_tolerance, ureg)
+            verdict = judge(
+                self.asked[name],
+                describe(value),
+                self._key.values[name],
+                self.tolerance,
+                self.angle_tolerance,
+                ureg,
+            )
         print(verdict.message)
         return verdict.ok
 
@@ -94,6 +111,7 @@ class Practice:
 
     def _figure_png(self):
         from .figure import statement_figure
+
         try:
             with silenced():
                 return statement_figure(self.problem, shared=False)
@@ -102,25 +120,34 @@ class Practice:
 
     def _repr_markdown_(self):
         rows = "\n".join(f"| {k} | {v} |" for k, v in self.problem.given.items())
-        asked = "\n".join(f"| `{a.name}` | {a.description} | "
-                          f"{a.unit or ('one of ' + ', '.join(a.choices))} |"
-                          for a in self.asked.values())
+        asked = "\n".join(
+            f"| `{a.name}` | {a.description} | {a.unit or ('one of ' + ', '.join(a.choices))} |"
+            for a in self.asked.values()
+        )
         png = self._figure_png()
-        figure = (f"\n![Schematic of the linkage of this problem](data:image/png;base64,"
-                  f"{base64.b64encode(png).decode('ascii')})\n" if png else "")
+        figure = (
+            f"\n![Schematic of the linkage of this problem](data:image/png;base64,"
+            f"{base64.b64encode(png).decode('ascii')})\n"
+            if png
+            else ""
+        )
         first = next(iter(self.asked))
-        return (f"**Practice: {self.problem.title}** (family `{self.family}`, seed "
-                f"{self.seed}; not graded)\n\n{self.problem.statement}\n{figure}\n"
-                f"| given | value |\n|---|---|\n{rows}\n\n"
-                f"| answer | quantity | unit |\n|---|---|---|\n{asked}\n\n"
-                f"Check an answer with `p.check({first!r}, Q_(..., "
-                f"{self.asked[first].unit!r}))`; numbers are right within "
-                f"{100 * self.tolerance:g}%, directions within {self.angle_tolerance:g} deg.")
+        return (
+            f"**Practice: {self.problem.title}** (family `{self.family}`, seed "
+            f"{self.seed}; not graded)\n\n{self.problem.statement}\n{figure}\n"
+            f"| given | value |\n|---|---|\n{rows}\n\n"
+            f"| answer | quantity | unit |\n|---|---|---|\n{asked}\n\n"
+            f"Check an answer with `p.check({first!r}, Q_(..., "
+            f"{self.asked[first].unit!r}))`; numbers are right within "
+            f"{100 * self.tolerance:g}%, directions within {self.angle_tolerance:g} deg."
+        )
 
     def __repr__(self):
         given = ", ".join(f"{k} = {v}" for k, v in self.problem.given.items())
-        return (f"Practice({self.family!r}, seed={self.seed}): {self.problem.title}; given "
-                f"{given}; answers {', '.join(self.asked)}")
+        return (
+            f"Practice({self.family!r}, seed={self.seed}): {self.problem.title}; given "
+            f"{given}; answers {', '.join(self.asked)}"
+        )
 
 
 def practice(family, seed=None, units="US"):
@@ -146,9 +173,10 @@ class _Answers:
 
     def _repr_markdown_(self):
         rows = "\n".join(f"| `{n}` | {d} | {v} |" for n, d, v in self._rows())
-        return (f"**Answers** (seed {self._problem.seed})\n\n| answer | quantity | value |\n"
-                f"|---|---|---|\n{rows}")
+        return (
+            f"**Answers** (seed {self._problem.seed})\n\n| answer | quantity | value |\n"
+            f"|---|---|---|\n{rows}"
+        )
 
     def __repr__(self):
         return "\n".join(f"{n} = {v}" for n, _, v in self._rows())
-

@@ -15,7 +15,7 @@ computed only by :mod:`accelab.exercises.grader.key`.
 """
 
 import json
-from dataclasses import dataclass, field, asdict
+from dataclasses import asdict, dataclass, field
 from functools import lru_cache
 
 from accelab.solver.batch import solve_case
@@ -32,7 +32,7 @@ class Answer:
     expr: str = None
     kind: str = "number"
     choices: list = None
-    quantity_required: bool = False   # a bare number is refused: the statement asks for units
+    quantity_required: bool = False  # a bare number is refused: the statement asks for units
     # choice answers: the SI value of ``basis`` picks choices[i] where
     # bins[i-1] <= value < bins[i]; kept out of the published variant
     basis: str = None
@@ -40,13 +40,24 @@ class Answer:
 
     def asked(self):
         """What the statement asks (no cases, no expr): the kernel's view."""
-        return Asked(self.name, self.unit or "", self.description, self.kind,
-                     tuple(self.choices or ()), self.quantity_required)
+        return Asked(
+            self.name,
+            self.unit or "",
+            self.description,
+            self.kind,
+            tuple(self.choices or ()),
+            self.quantity_required,
+        )
 
     def public(self):
         """The published form (``accelab variant``): no value, no choice rule."""
-        out = {"name": self.name, "kind": self.kind, "unit": self.unit,
-               "description": self.description, "cases": self.cases}
+        out = {
+            "name": self.name,
+            "kind": self.kind,
+            "unit": self.unit,
+            "description": self.description,
+            "cases": self.cases,
+        }
         if self.kind == "choice":
             out["choices"] = list(self.choices)
         else:
@@ -59,20 +70,30 @@ class Answer:
 class Problem:
     family: str
     title: str
-    statement: str            # markdown, the same for every student (no numbers)
-    given: dict               # symbol -> value text with unit, e.g. {"p": "6.5 in"}
+    statement: str  # markdown, the same for every student (no numbers)
+    given: dict  # symbol -> value text with unit, e.g. {"p": "6.5 in"}
     answers: list
-    figure: dict = field(default_factory=dict)   # {"mechanism": ..., "case": ...} to draw
+    figure: dict = field(default_factory=dict)  # {"mechanism": ..., "case": ...} to draw
     seed: int = 0
 
     def public(self):
-        return {"family": self.family, "title": self.title, "statement": self.statement,
-                "given": dict(self.given), "answers": [a.public() for a in self.answers]}
+        return {
+            "family": self.family,
+            "title": self.title,
+            "statement": self.statement,
+            "given": dict(self.given),
+            "answers": [a.public() for a in self.answers],
+        }
 
     def statement_view(self):
         """What the student's kernel may hold: given values and what is asked."""
-        return {"family": self.family, "title": self.title, "statement": self.statement,
-                "given": dict(self.given), "asked": [a.asked().to_dict() for a in self.answers]}
+        return {
+            "family": self.family,
+            "title": self.title,
+            "statement": self.statement,
+            "given": dict(self.given),
+            "asked": [a.asked().to_dict() for a in self.answers],
+        }
 
     def to_dict(self):
         return asdict(self)

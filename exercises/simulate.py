@@ -11,8 +11,8 @@ def fill(nb, code):
     """Put ``code[name]`` (source text) into the answer cell ``answer_<name>``."""
     for cell in nb.cells:
         gid = cell.metadata.get("nbgrader", {}).get("grade_id", "")
-        if gid.startswith("answer_") and gid[len("answer_"):] in code:
-            cell.source = code[gid[len("answer_"):]]
+        if gid.startswith("answer_") and gid[len("answer_") :] in code:
+            cell.source = code[gid[len("answer_") :]]
     return nb
 
 
@@ -43,7 +43,9 @@ def key_code(spec, student, transform=None):
     tests only: the key never enters a student's notebook.)
     """
     from accelab.solver.units import Q_
+
     from .grader.key import key_for
+
     key = key_for(spec, student)
     code = {}
     for name, a in key.variant.answers.items():
@@ -53,7 +55,10 @@ def key_code(spec, student, transform=None):
             value = Q_(value, base).to(a.unit or "")
         text = transform(a, value) if transform else None
         if text is None:
-            text = (f"{name} = {value!r}" if a.kind == "choice"
-                    else f"{name} = Q_({value.magnitude!r}, {a.unit!r})")
+            text = (
+                f"{name} = {value!r}"
+                if a.kind == "choice"
+                else f"{name} = Q_({value.magnitude!r}, {a.unit!r})"
+            )
         code[name] = text
     return code

@@ -18,8 +18,8 @@ have ``"kind": "choice"`` and ``choices``, and no expr.
 import json
 
 from .assignment import build_variant
-from .silence import silenced
 from .notebook import read_spec
+from .silence import silenced
 
 
 def variant_json(course_dir, assignment, student):
@@ -30,13 +30,17 @@ def variant_json(course_dir, assignment, student):
 
 
 def format_text(v):
-    lines = [f"{v['course']} / {v['assignment']} / student {v['student']} ({v['units']} units, "
-             f"tolerance {100 * v['tolerance']:g}%)"]
+    lines = [
+        f"{v['course']} / {v['assignment']} / student {v['student']} ({v['units']} units, "
+        f"tolerance {100 * v['tolerance']:g}%)"
+    ]
     for p in v["problems"]:
         lines.append(f"\nProblem {p['number']}: {p['title']}")
         lines += [f"  {k} = {val}" for k, val in p["given"].items()]
         for a in p["answers"]:
-            lines.append(f"  find {a['name']} [{a['unit'] or a.get('choices')}]: {a['description']}")
+            lines.append(
+                f"  find {a['name']} [{a['unit'] or a.get('choices')}]: {a['description']}"
+            )
     return "\n".join(lines)
 
 

@@ -24,12 +24,33 @@ Figure 7-4, Example 7-1 ...) are that chapter's; the position and velocity
 equations of chapters 4 and 6 are cited where the chapter repeats them.
 """
 
-from .errors import AccelabError, InvalidInput, NotAssemblable, NoConvergence, Singular
+from .errors import AccelabError, InvalidInput, NoConvergence, NotAssemblable, Singular
+from .mechanisms import (
+    MECHANISMS,
+    FourBar,
+    GearedFiveBar,
+    InvertedSliderCrank,
+    RotatingPoint,
+    SliderCrank,
+    SlottedLink,
+)
 from .units import Q_, ureg
-from .mechanisms import (FourBar, GearedFiveBar, InvertedSliderCrank, MECHANISMS,
-                         RotatingPoint, SliderCrank, SlottedLink)
 from .vectorloops import VectorLoopLinkage
 
-__all__ = ["ureg", "Q_", "FourBar", "SliderCrank", "InvertedSliderCrank", "GearedFiveBar",
-           "RotatingPoint", "SlottedLink", "VectorLoopLinkage", "AccelabError", "InvalidInput",
-           "NotAssemblable", "Singular", "NoConvergence", "MECHANISMS"]
+__all__ = [
+    "ureg",
+    "Q_",
+    "FourBar",
+    "SliderCrank",
+    "InvertedSliderCrank",
+    "GearedFiveBar",
+    "RotatingPoint",
+    "SlottedLink",
+    "VectorLoopLinkage",
+    "AccelabError",
+    "InvalidInput",
+    "NotAssemblable",
+    "Singular",
+    "NoConvergence",
+    "MECHANISMS",
+]

@@ -15,8 +15,15 @@ from .mechanisms import MECHANISMS
 from .results import finite_or_refused
 from .vectorloops import solve_loops_case
 
-__all__ = ["read_case", "solve", "solve_case", "solve_cases", "result_object", "error_object",
-           "Case"]
+__all__ = [
+    "read_case",
+    "solve",
+    "solve_case",
+    "solve_cases",
+    "result_object",
+    "error_object",
+    "Case",
+]
 
 
 def solve(case):
@@ -25,8 +32,7 @@ def solve(case):
     Raises the :class:`~accelab.solver.errors.AccelabError` family (not assemblable,
     singular ...).
     """
-    mech = MECHANISMS[case.mechanism].from_si(case.geometry(), given=case.given,
-                                              units=case.units)
+    mech = MECHANISMS[case.mechanism].from_si(case.geometry(), given=case.given, units=case.units)
     return mech.solve_si(case.motion(), circuit=case.circuit, **case.point())
 
 

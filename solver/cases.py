@@ -42,13 +42,19 @@ class Case:
 
     def geometry(self):
         """The constructor's parameters (SI)."""
-        return {p.name: self.params[p.name] for p in PARAMETERS[self.mechanism].geometry
-                if p.name in self.params}
+        return {
+            p.name: self.params[p.name]
+            for p in PARAMETERS[self.mechanism].geometry
+            if p.name in self.params
+        }
 
     def point(self):
         """The extra ``solve`` parameters given (the coupler point), SI."""
-        return {p.name: self.params[p.name] for p in PARAMETERS[self.mechanism].point
-                if p.name in self.params}
+        return {
+            p.name: self.params[p.name]
+            for p in PARAMETERS[self.mechanism].point
+            if p.name in self.params
+        }
 
     def motion(self):
         """theta2, omega2, alpha2, jerk2 in SI."""
@@ -59,19 +65,24 @@ def check_mechanism(case):
     """The case's mechanism name (one of :data:`MECHANISM_NAMES`), or
     InvalidInput naming the choices."""
     if not isinstance(case, dict):
-        raise InvalidInput(f"a case must be a JSON object like {{\"mechanism\": \"fourbar\", "
-                           f"...}}, got {type(case).__name__}")
+        raise InvalidInput(
+            f'a case must be a JSON object like {{"mechanism": "fourbar", '
+            f"...}}, got {type(case).__name__}"
+        )
     twice = case.get(DUPLICATES)
     if twice:
-        raise InvalidInput(f"the case gives {', '.join(map(repr, twice[:3]))} more than once; "
-                           f"give each key once", str(twice[0]))
+        raise InvalidInput(
+            f"the case gives {', '.join(map(repr, twice[:3]))} more than once; give each key once",
+            str(twice[0]),
+        )
     mech = case.get("mechanism")
     if not isinstance(mech, str) or mech not in MECHANISM_NAMES:
         shown = repr(mech) if isinstance(mech, str) else f"a {type(mech).__name__}"
         if isinstance(mech, str) and len(mech) > 40:
             shown = f"a name of {len(mech)} characters"
-        raise InvalidInput(f"unknown mechanism {shown}; use one of "
-                           f"{', '.join(MECHANISM_NAMES)}", "mechanism")
+        raise InvalidInput(
+            f"unknown mechanism {shown}; use one of {', '.join(MECHANISM_NAMES)}", "mechanism"
+        )
     return mech
 
 
@@ -86,8 +97,11 @@ def read_case(case):
     """
     mech = check_mechanism(case)
     if mech == "loops":
-        raise InvalidInput("a 'loops' case is a description of vectors, read by "
-                           "accelab.solver.vectorloops (accelab.solver.batch.solve_case takes both)", "mechanism")
+        raise InvalidInput(
+            "a 'loops' case is a description of vectors, read by "
+            "accelab.solver.vectorloops (accelab.solver.batch.solve_case takes both)",
+            "mechanism",
+        )
     spec = PARAMETERS[mech]
     allowed = set(spec.names()) | {"mechanism"} | ({"circuit"} if spec.circuits else set())
     unknown = sorted(k for k in case if k not in allowed)
@@ -95,8 +109,11 @@ def read_case(case):
         name = unknown[0] if isinstance(unknown[0], str) else repr(unknown[0])
         if len(name) > 40:
             name = name[:37] + "..."
-        raise InvalidInput(f"unknown key {name!r} for a {mech} case; it takes "
-                           f"{', '.join(sorted(allowed - {'mechanism'}))}", name)
+        raise InvalidInput(
+            f"unknown key {name!r} for a {mech} case; it takes "
+            f"{', '.join(sorted(allowed - {'mechanism'}))}",
+            name,
+        )
     params, units = {}, {}
     for p in spec.every():
         if p.name not in case:
@@ -108,8 +125,7 @@ def read_case(case):
         q = parse_quantity(case[p.name], p.kind, p.name)
         value = to_si(q, p.name, p.kind, positive=p.positive)
         if not isinstance(value, float):
-            raise InvalidInput(f"{p.name} must be a single value in a case (got an array)",
-                               p.name)
+            raise InvalidInput(f"{p.name} must be a single value in a case (got an array)", p.name)
         params[p.name] = value
         units[p.name] = getattr(q, "units", None)
     if mech == "fourbar" and "delta3" in case and "p" not in case:
@@ -118,7 +134,10 @@ def read_case(case):
     if spec.circuits:
         circuit = case.get("circuit", spec.circuits[0])
         if not isinstance(circuit, str) or circuit not in spec.circuits:
-            shown = repr(circuit) if isinstance(circuit, str) and len(circuit) <= 40 else \
-                f"a {type(circuit).__name__}"
+            shown = (
+                repr(circuit)
+                if isinstance(circuit, str) and len(circuit) <= 40
+                else f"a {type(circuit).__name__}"
+            )
             raise InvalidInput(f"circuit must be 'open' or 'crossed' (got {shown})", "circuit")
     return Case(mech, circuit, params, case, units)

@@ -5,8 +5,14 @@ contract (``invalid_input``, ``not_assemblable``, ``singular``), and a message
 that says what to change.
 """
 
-__all__ = ["AccelabError", "InvalidInput", "NotAssemblable", "Singular", "NoConvergence",
-           "error_object"]
+__all__ = [
+    "AccelabError",
+    "InvalidInput",
+    "NotAssemblable",
+    "Singular",
+    "NoConvergence",
+    "error_object",
+]
 
 
 class AccelabError(Exception):
@@ -70,5 +76,8 @@ def error_object(exc):
     """
     if isinstance(exc, AccelabError):
         return {"ok": False, "error": exc.kind, "message": str(exc)}
-    return {"ok": False, "error": "internal_error",
-            "message": f"{type(exc).__name__}: {str(exc)[:200]} (please report this case)"}
+    return {
+        "ok": False,
+        "error": "internal_error",
+        "message": f"{type(exc).__name__}: {str(exc)[:200]} (please report this case)",
+    }

@@ -61,15 +61,22 @@ def _angle(name, meaning, required=True, default=None):
     return Parameter(name, "angle", required, False, default, meaning)
 
 
-THETA1 = _angle("theta1", "angle of the ground line O2->O4 (slide axis) [angle]",
-                required=False, default=0.0)
+THETA1 = _angle(
+    "theta1", "angle of the ground line O2->O4 (slide axis) [angle]", required=False, default=0.0
+)
 
 #: the input motion every mechanism takes (theta2 from the global x axis)
 MOTION = (
     _angle("theta2", "input (crank) angle from the x axis [angle]"),
     Parameter("omega2", "angular_velocity", True, False, None, "input angular velocity"),
-    Parameter("alpha2", "angular_acceleration", False, False, 0.0,
-              "input angular acceleration (default 0)"),
+    Parameter(
+        "alpha2",
+        "angular_acceleration",
+        False,
+        False,
+        0.0,
+        "input angular acceleration (default 0)",
+    ),
     Parameter("jerk2", "angular_jerk", False, False, 0.0, "input angular jerk (default 0)"),
 )
 
@@ -77,37 +84,72 @@ OPEN_CROSSED = ("open", "crossed")
 
 PARAMETERS = {
     "fourbar": Declaration(
-        (_length("a", "crank O2A"), _length("b", "coupler AB"), _length("c", "rocker O4B"),
-         _length("d", "ground O2O4"), THETA1),
-        (_length("p", "coupler point P: distance from A", required=False),
-         _angle("delta3", "coupler point P: angle from line AB", required=False, default=0.0)),
-        OPEN_CROSSED),
+        (
+            _length("a", "crank O2A"),
+            _length("b", "coupler AB"),
+            _length("c", "rocker O4B"),
+            _length("d", "ground O2O4"),
+            THETA1,
+        ),
+        (
+            _length("p", "coupler point P: distance from A", required=False),
+            _angle("delta3", "coupler point P: angle from line AB", required=False, default=0.0),
+        ),
+        OPEN_CROSSED,
+    ),
     "slidercrank": Declaration(
-        (_length("a", "crank O2A"), _length("b", "connecting rod AB"),
-         _length("c", "slider offset (signed)", positive=False, required=False, default=0.0),
-         THETA1),
-        (), OPEN_CROSSED),
+        (
+            _length("a", "crank O2A"),
+            _length("b", "connecting rod AB"),
+            _length("c", "slider offset (signed)", positive=False, required=False, default=0.0),
+            THETA1,
+        ),
+        (),
+        OPEN_CROSSED,
+    ),
     "invertedslidercrank": Declaration(
-        (_length("a", "crank O2A"), _length("c", "O4B, >= 0 (0: slide line through O4)",
-                                            positive=False),
-         _length("d", "ground O2O4"), _angle("gamma", "angle from O4B to the slide line"),
-         THETA1),
-        (), OPEN_CROSSED),
+        (
+            _length("a", "crank O2A"),
+            _length("c", "O4B, >= 0 (0: slide line through O4)", positive=False),
+            _length("d", "ground O2O4"),
+            _angle("gamma", "angle from O4B to the slide line"),
+            THETA1,
+        ),
+        (),
+        OPEN_CROSSED,
+    ),
     "fivebar": Declaration(
-        (_length("a", "crank O2A"), _length("b", "coupler AB"), _length("c", "coupler CB"),
-         _length("d", "crank O5C"), _length("f", "ground O2O5"),
-         Parameter("lam", "dimensionless", True, False, None,
-                   "gear ratio theta5/theta2 (signed, a plain number)"),
-         _angle("phi", "phase of link 5: theta5 = lam theta2 + phi"), THETA1),
-        (), OPEN_CROSSED),
+        (
+            _length("a", "crank O2A"),
+            _length("b", "coupler AB"),
+            _length("c", "coupler CB"),
+            _length("d", "crank O5C"),
+            _length("f", "ground O2O5"),
+            Parameter(
+                "lam",
+                "dimensionless",
+                True,
+                False,
+                None,
+                "gear ratio theta5/theta2 (signed, a plain number)",
+            ),
+            _angle("phi", "phase of link 5: theta5 = lam theta2 + phi"),
+            THETA1,
+        ),
+        (),
+        OPEN_CROSSED,
+    ),
     "rotation": Declaration((_length("p", "radius of the point"),), (), ()),
     "slotted": Declaration(
         (),
-        (_length("p", "distance of the block from the pivot", positive=False),
-         Parameter("p_dot", "velocity", True, False, None, "slip velocity"),
-         Parameter("p_ddot", "acceleration", False, False, 0.0, "slip acceleration"),
-         Parameter("p_dddot", "jerk", False, False, 0.0, "slip jerk")),
-        ()),
+        (
+            _length("p", "distance of the block from the pivot", positive=False),
+            Parameter("p_dot", "velocity", True, False, None, "slip velocity"),
+            Parameter("p_ddot", "acceleration", False, False, 0.0, "slip acceleration"),
+            Parameter("p_dddot", "jerk", False, False, 0.0, "slip jerk"),
+        ),
+        (),
+    ),
 }
 
 #: the mechanisms of the batch format (docs/conventions.md#batch-format), besides "loops"

@@ -96,9 +96,13 @@ def finite_or_refused(answer):
     where = _non_finite(answer)
     if where is None:
         return answer
-    return error_object(InvalidInput(
-        f"the output {where} overflows a float: the inputs are too large for float64 to hold "
-        f"the result; give smaller lengths or speeds (in other units if need be)", where))
+    return error_object(
+        InvalidInput(
+            f"the output {where} overflows a float: the inputs are too large for float64 to hold "
+            f"the result; give smaller lengths or speeds (in other units if need be)",
+            where,
+        )
+    )
 
 
 def _non_finite(value, path=""):

@@ -18,10 +18,10 @@ batch format, the command line, a student's graded answer):
 * values are finite, and stay finite in SI.
 """
 
-from functools import lru_cache
 import math
 import numbers
 import re
+from functools import lru_cache
 
 import numpy as np
 import pint
@@ -29,8 +29,17 @@ from pint.util import UnitsContainer
 
 from .errors import InvalidInput
 
-__all__ = ["ureg", "Q_", "parse_quantity", "to_si", "quantity", "KINDS", "SI_UNITS",
-           "MAX_TEXT", "show"]
+__all__ = [
+    "ureg",
+    "Q_",
+    "parse_quantity",
+    "to_si",
+    "quantity",
+    "KINDS",
+    "SI_UNITS",
+    "MAX_TEXT",
+    "show",
+]
 
 #: The package's one pint registry: every Quantity that accelab reads or
 #: returns belongs to it (a Quantity of another registry is converted once).
@@ -60,10 +69,13 @@ KINDS = {
 SI_UNITS = {kind: ureg.Unit(si) for kind, (_, si, _, _) in KINDS.items()}
 # the same units as pint's public UnitsContainer, which its Quantity constructor takes
 # directly (a little faster than a Unit, for the many outputs a result wraps)
-_SI_CONTAINERS = {kind: UnitsContainer(dict(Q_(1.0, unit).unit_items()))
-                  for kind, unit in SI_UNITS.items()}
-_DIMS = {kind: ureg.get_dimensionality(dim) if dim else ureg.get_dimensionality("")
-         for kind, (dim, _, _, _) in KINDS.items()}
+_SI_CONTAINERS = {
+    kind: UnitsContainer(dict(Q_(1.0, unit).unit_items())) for kind, unit in SI_UNITS.items()
+}
+_DIMS = {
+    kind: ureg.get_dimensionality(dim) if dim else ureg.get_dimensionality("")
+    for kind, (dim, _, _, _) in KINDS.items()
+}
 _ANGULAR = {"angular_velocity", "angular_acceleration", "angular_jerk"}
 # a power in a unit expression: its exponent must be a plain number of at most
 # two digits, and not itself raised to a power ('9**9**9' would take forever)
@@ -79,8 +91,7 @@ def show(value):
             return f"a text of {len(value)} characters starting {value[:20]!r}"
         return repr(value)
     if isinstance(value, pint.Quantity):
-        return f"{value:~}" if np.ndim(value.magnitude) == 0 else \
-            f"an array in {value.units:~}"
+        return f"{value:~}" if np.ndim(value.magnitude) == 0 else f"an array in {value.units:~}"
     if isinstance(value, np.ndarray):
         return f"an array of {value.size} numbers"
     text = repr(value)
@@ -112,14 +123,20 @@ def _is_angle_unit(units):
 
 def _check_text(text, name, kind):
     if len(text) > MAX_TEXT:
-        raise InvalidInput(f"{name} is a text of {len(text)} characters; a quantity is at most "
-                           f"{MAX_TEXT} (e.g. {name}={KINDS[kind][2]})", name)
+        raise InvalidInput(
+            f"{name} is a text of {len(text)} characters; a quantity is at most "
+            f"{MAX_TEXT} (e.g. {name}={KINDS[kind][2]})",
+            name,
+        )
     for m in _POWER.finditer(text):
         after = _EXPONENT.match(text, m.end())
-        if not after or text[after.end():].lstrip().startswith(("**", "^")):
-            raise InvalidInput(f"{name} = {show(text)} raises to a power that is not a plain "
-                               f"number of one or two digits; write units like 's^2' "
-                               f"(e.g. {name}={KINDS[kind][2]})", name)
+        if not after or text[after.end() :].lstrip().startswith(("**", "^")):
+            raise InvalidInput(
+                f"{name} = {show(text)} raises to a power that is not a plain "
+                f"number of one or two digits; write units like 's^2' "
+                f"(e.g. {name}={KINDS[kind][2]})",
+                name,
+            )
 
 
 @lru_cache(maxsize=4096)
@@ -168,25 +185,35 @@ def parse_quantity(value, kind, name):
         text = value.strip()
         _check_text(value, name, kind)
         if not text:
-            raise InvalidInput(f"{name} is empty; give a number with units "
-                               f"(e.g. {name}={example})", name)
+            raise InvalidInput(
+                f"{name} is empty; give a number with units (e.g. {name}={example})", name
+            )
         try:
             q = _parse_text(text)
         except Exception as exc:  # pint raises many unrelated types
-            raise InvalidInput(f"{name} = {show(value)} could not be read as a quantity "
-                               f"({_reason(exc)}). Example: {name}={example}", name) from None
+            raise InvalidInput(
+                f"{name} = {show(value)} could not be read as a quantity "
+                f"({_reason(exc)}). Example: {name}={example}",
+                name,
+            ) from None
     elif isinstance(value, pint.Quantity):
         q = value
         if not isinstance(value, Q_):  # another registry: read its units by name
             try:
                 q = Q_(value.magnitude, str(value.units))
             except Exception as exc:
-                raise InvalidInput(f"{name} = {show(value)} comes from another pint "
-                                   f"registry whose units this one cannot read "
-                                   f"({_reason(exc)}); build it with accelab.solver.Q_", name) from None
+                raise InvalidInput(
+                    f"{name} = {show(value)} comes from another pint "
+                    f"registry whose units this one cannot read "
+                    f"({_reason(exc)}); build it with accelab.solver.Q_",
+                    name,
+                ) from None
     elif isinstance(value, (bool, np.bool_)):
-        raise InvalidInput(f"{name} must be {KINDS[kind][3]}, not a truth value ({value!r}). "
-                           f"Example: {name}={example}", name)
+        raise InvalidInput(
+            f"{name} must be {KINDS[kind][3]}, not a truth value ({value!r}). "
+            f"Example: {name}={example}",
+            name,
+        )
     else:
         _check_number(value, name, kind)
         return value
@@ -197,27 +224,43 @@ def parse_quantity(value, kind, name):
 
 def _check_number(value, name, kind):
     if isinstance(value, np.ma.MaskedArray):
-        raise InvalidInput(f"{name} is a masked array; pass the positions you want as a plain "
-                           f"array (masked values cannot be solved or left out silently)", name)
+        raise InvalidInput(
+            f"{name} is a masked array; pass the positions you want as a plain "
+            f"array (masked values cannot be solved or left out silently)",
+            name,
+        )
     if isinstance(value, (list, tuple)) and not all(
-            isinstance(x, numbers.Real) and not isinstance(x, bool) for x in value):
-        raise InvalidInput(f"{name} must be one quantity like {KINDS[kind][2]} (got a "
-                           f"{type(value).__name__}: {show(value)})", name)
+        isinstance(x, numbers.Real) and not isinstance(x, bool) for x in value
+    ):
+        raise InvalidInput(
+            f"{name} must be one quantity like {KINDS[kind][2]} (got a "
+            f"{type(value).__name__}: {show(value)})",
+            name,
+        )
     if isinstance(value, (numbers.Complex, np.ndarray, list, tuple)):
         _check_magnitude(value, name, kind, value)
         return
-    raise InvalidInput(f"{name} must be {KINDS[kind][3]} (got {type(value).__name__} "
-                       f"{show(value)}). Example: {name}={KINDS[kind][2]}", name)
+    raise InvalidInput(
+        f"{name} must be {KINDS[kind][3]} (got {type(value).__name__} "
+        f"{show(value)}). Example: {name}={KINDS[kind][2]}",
+        name,
+    )
 
 
 def _check_magnitude(mag, name, kind, value):
     if isinstance(mag, np.ma.MaskedArray):
-        raise InvalidInput(f"{name} is a masked array; pass the positions you want as a plain "
-                           f"array (masked values cannot be solved or left out silently)", name)
+        raise InvalidInput(
+            f"{name} is a masked array; pass the positions you want as a plain "
+            f"array (masked values cannot be solved or left out silently)",
+            name,
+        )
     if isinstance(mag, (complex, np.complexfloating)) or (
-            isinstance(mag, np.ndarray) and np.iscomplexobj(mag)):
-        raise InvalidInput(f"{name} = {show(value)} is complex; give a real value "
-                           f"(e.g. {name}={KINDS[kind][2]})", name)
+        isinstance(mag, np.ndarray) and np.iscomplexobj(mag)
+    ):
+        raise InvalidInput(
+            f"{name} = {show(value)} is complex; give a real value (e.g. {name}={KINDS[kind][2]})",
+            name,
+        )
     if isinstance(mag, np.ndarray) and mag.dtype.kind not in "biuf":
         raise InvalidInput(f"{name} must hold numbers (got an array of {mag.dtype})", name)
 
@@ -233,29 +276,37 @@ def _check_units(q, name, kind, value):
             given = "no units" if not _unit_names(units) else f"no dimension ({units:~})"
         else:
             given = f"the dimension {q.dimensionality} of {units:~}"
-        raise InvalidInput(f"{name} must be {words} (got {show(value)}, which has {given}). "
-                           f"Example: {name}={example}", name)
+        raise InvalidInput(
+            f"{name} must be {words} (got {show(value)}, which has {given}). "
+            f"Example: {name}={example}",
+            name,
+        )
     names = _unit_names(units)
     if kind == "angle" and not _is_angle_unit(units):
         if not names and isinstance(value, str):
             raise InvalidInput(
                 f"{name} needs angle units (a bare {show(value)} could be degrees or radians). "
-                f"Example: {name}={example}", name)
+                f"Example: {name}={example}",
+                name,
+            )
         if names:
-            raise InvalidInput(f"{name} must be an angle (got {show(value)}, whose units "
-                               f"{units:~} are not angle units). Example: {name}={example}",
-                               name)
+            raise InvalidInput(
+                f"{name} must be an angle (got {show(value)}, whose units "
+                f"{units:~} are not angle units). Example: {name}={example}",
+                name,
+            )
     if kind in _ANGULAR and any(n.endswith("hertz") for n in names):
         mag = q.magnitude
         one = float(np.ravel(mag)[0]) if np.size(mag) else 0.0
         as_rad = one * factor
-        per = {"angular_velocity": "s", "angular_acceleration": "s^2",
-               "angular_jerk": "s^3"}[kind]
+        per = {"angular_velocity": "s", "angular_acceleration": "s^2", "angular_jerk": "s^3"}[kind]
         raise InvalidInput(
             f"{name} = {show(value)} has two readings: {as_rad:.6g} rad/{per} (a hertz taken "
             f"as one radian per second) or {as_rad * 2 * math.pi:.6g} rad/{per} (a hertz taken "
             f"as one revolution per second). Say which: write rad/{per}, or rev/{per}"
-            + (" (or rpm)" if kind == "angular_velocity" else ""), name)
+            + (" (or rpm)" if kind == "angular_velocity" else ""),
+            name,
+        )
     if kind == "dimensionless" and names:
         mag = q.magnitude
         one = float(np.ravel(mag)[0]) if np.size(mag) else 0.0
@@ -263,7 +314,9 @@ def _check_units(q, name, kind, value):
         raise InvalidInput(
             f"{name} is a plain number, but {show(value)} has {what}, so it has two readings: "
             f"{one:.6g} (the number written) or {one * factor:.6g} (converted by its unit). "
-            f"Write the number alone, e.g. {name}=-2", name)
+            f"Write the number alone, e.g. {name}=-2",
+            name,
+        )
     if not names and kind not in ("dimensionless", "angle") and isinstance(value, str):
         raise InvalidInput(f"{name} needs units. Example: {name}={example}", name)
 
@@ -307,15 +360,21 @@ _ACCEPTED = {}
 
 def _to_si(value, name, kind, positive, nonzero):
     dim, si, example, words = KINDS[kind]
-    if type(value) is Q_:   # the common case: a Quantity of this registry
+    if type(value) is Q_:  # the common case: a Quantity of this registry
         mag = value.magnitude
         factor = _ACCEPTED.get((tuple(value.unit_items()), kind))
         if factor is not None and type(mag) is float:
             out = mag * factor if factor != 1.0 else mag
             if math.isfinite(out) and (out > 0 or not positive and not (nonzero and out == 0)):
                 return out
-        elif factor is not None and type(mag) is np.ndarray and mag.dtype == np.float64 \
-                and mag.ndim and not positive and not nonzero:
+        elif (
+            factor is not None
+            and type(mag) is np.ndarray
+            and mag.dtype == np.float64
+            and mag.ndim
+            and not positive
+            and not nonzero
+        ):
             with np.errstate(over="ignore"):
                 out = mag * factor if factor != 1.0 else mag
             if np.isfinite(out).all():
@@ -337,19 +396,27 @@ def _to_si(value, name, kind, positive, nonzero):
     else:
         raise InvalidInput(
             f"{name} needs units (got the bare number {show(value)}). Example: {name}={example}, "
-            f"or Q_({show(value)}, '{si or 'dimensionless'}')", name)
+            f"or Q_({show(value)}, '{si or 'dimensionless'}')",
+            name,
+        )
     if type(out) is int:
         try:
             out = float(out)
         except OverflowError:
-            raise InvalidInput(f"{name} = {show(value)} is too large for a float "
-                               f"(about 1.8e308 at most). Example: {name}={example}", name) from None
+            raise InvalidInput(
+                f"{name} = {show(value)} is too large for a float "
+                f"(about 1.8e308 at most). Example: {name}={example}",
+                name,
+            ) from None
     if type(out) is float:  # fast path for scalars
         if not math.isfinite(out):
             raise InvalidInput(_not_finite(name, value, example, out), name)
         if positive and not out > 0:
-            raise InvalidInput(f"{name} must be positive (got {show(value)}): a link length "
-                               f"is > 0. Example: {name}={example}", name)
+            raise InvalidInput(
+                f"{name} must be positive (got {show(value)}): a link length "
+                f"is > 0. Example: {name}={example}",
+                name,
+            )
         if nonzero and out == 0:
             raise InvalidInput(f"{name} must not be zero (got {show(value)})", name)
         return float(out)
@@ -361,8 +428,11 @@ def _to_si(value, name, kind, positive, nonzero):
     if not np.all(np.isfinite(arr)):
         raise InvalidInput(_not_finite(name, value, example, arr), name)
     if positive and not np.all(arr > 0):
-        raise InvalidInput(f"{name} must be positive (got {show(value)}): a link length is > 0. "
-                           f"Example: {name}={example}", name)
+        raise InvalidInput(
+            f"{name} must be positive (got {show(value)}): a link length is > 0. "
+            f"Example: {name}={example}",
+            name,
+        )
     if nonzero and not np.all(arr != 0):
         raise InvalidInput(f"{name} must not be zero (got {show(value)})", name)
     return float(arr) if arr.ndim == 0 else arr
@@ -378,8 +448,10 @@ def _not_finite(name, value, example, si):
     with np.errstate(invalid="ignore"):
         overflowed = bool(np.all(np.isfinite(np.asarray(given, dtype=float))))
     if overflowed:
-        return (f"{name} = {show(value)} is too large: it overflows a float in SI units. "
-                f"Example: {name}={example}")
+        return (
+            f"{name} = {show(value)} is too large: it overflows a float in SI units. "
+            f"Example: {name}={example}"
+        )
     return f"{name} must be finite (got {show(value)}). Example: {name}={example}"
 
 

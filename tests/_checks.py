@@ -16,8 +16,15 @@ def order_of(name):
     """Derivative order of an output: -1 angle, 0 position/length, 1..3."""
     if name.startswith("theta"):
         return -1
-    for prefix, n in (("omega", 1), ("alpha", 2), ("jerk", 3), ("V_", 1), ("A_", 2),
-                      ("J_", 3), ("R_", 0)):
+    for prefix, n in (
+        ("omega", 1),
+        ("alpha", 2),
+        ("jerk", 3),
+        ("V_", 1),
+        ("A_", 2),
+        ("J_", 3),
+        ("R_", 0),
+    ):
         if name.startswith(prefix):
             return n
     for suffix, n in (("_dddot", 3), ("_ddot", 2), ("_dot", 1)):
@@ -33,8 +40,9 @@ def angle_error(x, y):
 
 def _group(name):
     """(derivative order, 'angular' or 'linear') of an output."""
-    return order_of(name), ("angular" if name[:5] in ("omega", "alpha") or
-                            name.startswith("jerk") else "linear")
+    return order_of(name), (
+        "angular" if name[:5] in ("omega", "alpha") or name.startswith("jerk") else "linear"
+    )
 
 
 def scales(ref):
@@ -52,7 +60,7 @@ def scales(ref):
         grow(_group(k), v)
         if k.startswith("omega"):
             grow((2, "angular"), v * v)
-            grow((3, "angular"), v ** 3)
+            grow((3, "angular"), v**3)
             alpha = ref.get("alpha" + k[5:])
             if alpha is not None:
                 grow((3, "angular"), v * alpha)
@@ -87,17 +95,43 @@ def errors(got, ref, floor=1e-3):
 
 #: outputs the reference check requires, and those that pick the branch
 REQUIRED = {
-    "fourbar": ["theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
-                "A_A", "A_B"],
+    "fourbar": [
+        "theta3",
+        "theta4",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+        "jerk3",
+        "jerk4",
+        "A_A",
+        "A_B",
+    ],
     "slidercrank": ["theta3", "omega3", "alpha3", "d", "d_dot", "d_ddot", "A_A", "A_B"],
-    "invertedslidercrank": ["theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4",
-                            "b", "b_dot", "b_ddot", "A_A", "A_B", "A_coriolis"],
+    "invertedslidercrank": [
+        "theta3",
+        "theta4",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+        "b",
+        "b_dot",
+        "b_ddot",
+        "A_A",
+        "A_B",
+        "A_coriolis",
+    ],
     "fivebar": ["theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "A_A", "A_B", "A_C"],
     "rotation": ["A", "A_t", "A_n"],
 }
-BRANCH_KEYS = {"fourbar": ["theta3", "theta4"], "slidercrank": ["theta3", "d"],
-               "invertedslidercrank": ["theta4", "b"], "fivebar": ["theta3", "theta4"],
-               "rotation": []}
+BRANCH_KEYS = {
+    "fourbar": ["theta3", "theta4"],
+    "slidercrank": ["theta3", "d"],
+    "invertedslidercrank": ["theta4", "b"],
+    "fivebar": ["theta3", "theta4"],
+    "rotation": [],
+}
 
 
 def _magnitude(v):
@@ -109,8 +143,11 @@ def _close(name, got, want, scale, rtol):
         return isinstance(got, (int, float)) and angle_error(got, want) <= max(rtol, 1e-10) * 10
     tol = rtol * max(_magnitude(want), 1e-3 * scale)
     if isinstance(want, list):
-        return (isinstance(got, list) and len(got) == 2
-                and math.hypot(got[0] - want[0], got[1] - want[1]) <= tol)
+        return (
+            isinstance(got, list)
+            and len(got) == 2
+            and math.hypot(got[0] - want[0], got[1] - want[1]) <= tol
+        )
     return isinstance(got, (int, float)) and abs(got - want) <= tol
 
 
@@ -126,8 +163,11 @@ def compare_to_branches(mech, result, branches, rtol, circuit=None):
     missing = [k for k in REQUIRED[mech] if k not in result]
     if missing:
         return f"missing outputs {missing}"
-    found = [b for b in branches
-             if all(_close(k, result.get(k), b[k], 1, 1e-6) for k in BRANCH_KEYS[mech])]
+    found = [
+        b
+        for b in branches
+        if all(_close(k, result.get(k), b[k], 1, 1e-6) for k in BRANCH_KEYS[mech])
+    ]
     if not found:
         return "positions match no branch"
     branch = found[0]
@@ -137,6 +177,11 @@ def compare_to_branches(mech, result, branches, rtol, circuit=None):
     for k, v in branch.items():
         if isinstance(v, (int, float, list)) and not isinstance(v, bool):
             scales[order_of(k)] = max(scales.get(order_of(k), 0), _magnitude(v))
-    bad = [k for k, v in branch.items() if k in result and not isinstance(v, str)
-           and not _close(k, result[k], v, scales.get(order_of(k), 1), rtol)]
+    bad = [
+        k
+        for k, v in branch.items()
+        if k in result
+        and not isinstance(v, str)
+        and not _close(k, result[k], v, scales.get(order_of(k), 1), rtol)
+    ]
     return f"{bad} off, e.g. {bad[0]}: got {result[bad[0]]}, want {branch[bad[0]]}" if bad else ""

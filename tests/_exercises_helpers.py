@@ -45,29 +45,43 @@ def fourbar(case):
     t3 = cmath.phase(e3)
     e3 = cmath.exp(1j * t3)
     # velocity: a w2 j e2 + b w3 j e3 - c w4 j e4 = 0
-    M = np.array([[(1j * b * e3).real, (-1j * c * e4).real],
-                  [(1j * b * e3).imag, (-1j * c * e4).imag]])
+    M = np.array(
+        [[(1j * b * e3).real, (-1j * c * e4).real], [(1j * b * e3).imag, (-1j * c * e4).imag]]
+    )
     rhs = -(1j * a * w2 * e2)
     w3, w4 = np.linalg.solve(M, [rhs.real, rhs.imag])
     # acceleration: a(al2 j - w2^2)e2 + b(al3 j - w3^2)e3 - c(al4 j - w4^2)e4 = 0
     rhs = -(a * (al2 * 1j - w2 * w2) * e2 - b * w3 * w3 * e3 + c * w4 * w4 * e4)
     al3, al4 = np.linalg.solve(M, [rhs.real, rhs.imag])
-    return {"theta3": t3, "theta4": t4, "omega3": w3, "omega4": w4, "alpha3": al3,
-            "alpha4": al4, "A_A": a * (al2 * 1j - w2 * w2) * e2,
-            "A_B": c * (al4 * 1j - w4 * w4) * e4}
+    return {
+        "theta3": t3,
+        "theta4": t4,
+        "omega3": w3,
+        "omega4": w4,
+        "alpha3": al3,
+        "alpha4": al4,
+        "A_A": a * (al2 * 1j - w2 * w2) * e2,
+        "A_B": c * (al4 * 1j - w4 * w4) * e4,
+    }
 
 
 SOLVERS = {"rotation": rotation, "fourbar": fourbar}
-FUNCS = {"abs": abs, "angle": lambda z: cmath.phase(complex(z)),
-         "real": lambda z: complex(z).real, "imag": lambda z: complex(z).imag}
+FUNCS = {
+    "abs": abs,
+    "angle": lambda z: cmath.phase(complex(z)),
+    "real": lambda z: complex(z).real,
+    "imag": lambda z: complex(z).imag,
+}
 #: Table 7-1 levels the tolerance statement gives [g]
 LEVELS = [(0.5, "gentle"), (3.5, "strong"), (9.0, "extreme"), (math.inf, "intolerable")]
 
 
 def answer_value(answer):
     """(value in the asked unit, unit) for a number answer of the published variant."""
-    outputs = {label: SimpleNamespace(**SOLVERS[case["mechanism"]](case))
-               for label, case in answer["cases"].items()}
+    outputs = {
+        label: SimpleNamespace(**SOLVERS[case["mechanism"]](case))
+        for label, case in answer["cases"].items()
+    }
     value = eval(answer["expr"], {"__builtins__": {}}, dict(FUNCS, **outputs))
     base = UREG.Quantity(1.0, answer["unit"] or "").to_base_units().units
     return float(UREG.Quantity(value, base).to(answer["unit"] or "").magnitude)

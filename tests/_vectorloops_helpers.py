@@ -8,11 +8,11 @@ from accelab.benchmarks.cases import from_example
 from accelab.benchmarks.reference import LoopReference
 from accelab.solver import Q_
 from accelab.solver.kernels import fourbar as fourbar_kernel
-from accelab.solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
+from accelab.solver.vectorloops import VectorLoopLinkage
+from accelab.solver.vectorloops import sweep as sweep_module
 from accelab.solver.vectorloops.description import read_description
 from accelab.solver.vectorloops.examples import EXAMPLES, fourbar
 from accelab.solver.vectorloops.solve import system_from_case
-
 
 MOTION = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
 
@@ -28,7 +28,8 @@ def close(x, y, rtol=1e-12):
 
 def sweep(name, **kw):
     return VectorLoopLinkage(**EXAMPLES[name](**kw)).solve(
-        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
+        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3"
+    )
 
 
 CYCLE = np.radians(np.linspace(0.0, 360.0, 361)[:-1])
@@ -55,8 +56,14 @@ def same_motion(a, b, rtol=1e-12):
 
 def fourbar_desc(a, b, c, d, guess3, guess4):
     """A fourbar as loops with lengths in metres and guesses in radians."""
-    return fourbar(a=f"{a} m", b=f"{b} m", c=f"{c} m", d=f"{d} m",
-                   guess3=f"{guess3} rad", guess4=f"{guess4} rad")
+    return fourbar(
+        a=f"{a} m",
+        b=f"{b} m",
+        c=f"{c} m",
+        d=f"{d} m",
+        guess3=f"{guess3} rad",
+        guess4=f"{guess4} rad",
+    )
 
 
 def guesses_on(circuit, a, b, c, d, theta2, miss=0.1):
@@ -68,23 +75,30 @@ def guesses_on(circuit, a, b, c, d, theta2, miss=0.1):
 def on_circuit(motion, a, b, c, d, theta2, circuit, tol=1e-9):
     """Where the loops solution (R3, R4 angles) is the closed form's ``circuit``."""
     m = fourbar_kernel.solve(a, b, c, d, theta2, 1.0, circuit=circuit)
-    return ((np.abs(np.exp(1j * motion.theta[:, 2]) - np.exp(1j * m.theta3)) < tol)
-            & (np.abs(np.exp(1j * motion.theta[:, 3]) - np.exp(1j * m.theta4)) < tol))
+    return (np.abs(np.exp(1j * motion.theta[:, 2]) - np.exp(1j * m.theta3)) < tol) & (
+        np.abs(np.exp(1j * motion.theta[:, 3]) - np.exp(1j * m.theta4)) < tol
+    )
 
 
 SWEEPS = {
     "cycle": CYCLE,
     "two_turns_backwards": np.radians(np.linspace(720.0, 0.0, 1441)),
-    "uneven_back_and_forth": np.radians(np.concatenate([
-        np.sort(np.random.default_rng(7).uniform(0, 300, 400)),
-        np.linspace(300, 100, 151), [100.0, 100.0, 100.5]])),
+    "uneven_back_and_forth": np.radians(
+        np.concatenate(
+            [
+                np.sort(np.random.default_rng(7).uniform(0, 300, 400)),
+                np.linspace(300, 100, 151),
+                [100.0, 100.0, 100.5],
+            ]
+        )
+    ),
 }
 
 
 LINKAGES = {"crank_rocker": (2.0, 6.0, 9.0, 7.0), "double_crank": (6.0, 7.0, 9.0, 2.0)}
 
 
-NON_GRASHOF = (5.0, 3.5, 4.0, 6.0)   # a triple rocker: the crank reaches |theta2| <= 85.4 deg
+NON_GRASHOF = (5.0, 3.5, 4.0, 6.0)  # a triple rocker: the crank reaches |theta2| <= 85.4 deg
 
 
 def crossed_q(a, b, c, d, t):
@@ -165,32 +179,43 @@ def jet_of_vector(L, th):
     l0, l1, l2, l3 = L[0], L[1], L[2] / 2, L[3] / 6
     u1, u2, u3 = 1j * th[1], 1j * th[2] / 2, 1j * th[3] / 6
     e0 = np.exp(1j * th[0])
-    e = [e0, e0 * u1, e0 * (u2 + u1 * u1 / 2), e0 * (u3 + u1 * u2 + u1 ** 3 / 6)]
+    e = [e0, e0 * u1, e0 * (u2 + u1 * u1 / 2), e0 * (u3 + u1 * u2 + u1**3 / 6)]
     lj = [l0, l1, l2, l3]
     return [sum(lj[k] * e[n - k] for k in range(n + 1)) * [1, 1, 2, 6][n] for n in range(4)]
 
 
-BATCH_MOTION = {"theta2": "50 deg", "omega2": "15 rad/s", "alpha2": "-20 rad/s^2", "jerk2": "300 rad/s^3"}
+BATCH_MOTION = {
+    "theta2": "50 deg",
+    "omega2": "15 rad/s",
+    "alpha2": "-20 rad/s^2",
+    "jerk2": "300 rad/s^3",
+}
 
 
 def xy(v):
     return complex(*v)
 
 
-CHANGE_POINT = (2.0, 5.0, 4.0, 3.0)           # [in]
+CHANGE_POINT = (2.0, 5.0, 4.0, 3.0)  # [in]
 
 
-PARALLELOGRAM = (1.0, 3.0, 1.0, 3.0)          # change points at 0 and 180 deg
+PARALLELOGRAM = (1.0, 3.0, 1.0, 3.0)  # change points at 0 and 180 deg
 
 
-KITE = (2.0, 5.0, 5.0, 2.0)                   # a = d, b = c: at 0 deg A sits on O4
+KITE = (2.0, 5.0, 5.0, 2.0)  # a = d, b = c: at 0 deg A sits on O4
 
 
 def fourbar_in(a, b, c, d, theta2, circuit):
     """The fourbar in inches as loops, guesses exactly on the closed form's circuit."""
     m = fourbar_kernel.solve(a, b, c, d, theta2, 1.0, circuit=circuit)
-    return fourbar(a=f"{a} in", b=f"{b} in", c=f"{c} in", d=f"{d} in",
-                   guess3=f"{float(m.theta3)!r} rad", guess4=f"{float(m.theta4)!r} rad")
+    return fourbar(
+        a=f"{a} in",
+        b=f"{b} in",
+        c=f"{c} in",
+        d=f"{d} in",
+        guess3=f"{float(m.theta3)!r} rad",
+        guess4=f"{float(m.theta4)!r} rad",
+    )
 
 
 def circuit_of(motion, linkage, t2, circuit):

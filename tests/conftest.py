@@ -5,12 +5,18 @@ import os
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-from hypothesis import HealthCheck, settings  # noqa: E402
+from hypothesis import HealthCheck, settings
 
-settings.register_profile("default", deadline=None, max_examples=60,
-                          suppress_health_check=[HealthCheck.too_slow])
-settings.register_profile("ci", deadline=None, max_examples=60, derandomize=True,
-                          suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile(
+    "default", deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile(
+    "ci",
+    deadline=None,
+    max_examples=60,
+    derandomize=True,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 
@@ -22,7 +28,8 @@ settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 import math  # noqa: E402
 
-from hypothesis import assume, strategies as st  # noqa: E402
+from hypothesis import assume  # noqa: E402
+from hypothesis import strategies as st
 
 lengths = st.floats(0.05, 2.0)
 angles = st.floats(-math.pi, math.pi)
@@ -34,10 +41,13 @@ open_angles = st.floats(0.35, math.pi - 0.35)
 def input_motion(draw):
     """theta2, omega2 (nonzero), alpha2, jerk2 (nonzero) and the ground angle theta1."""
     sign = draw(st.sampled_from([-1.0, 1.0]))
-    return {"theta1": draw(angles), "theta2": draw(angles),
-            "omega2": sign * draw(st.floats(0.5, 60.0)),
-            "alpha2": draw(st.floats(-800.0, 800.0)),
-            "jerk2": draw(st.sampled_from([-1.0, 1.0])) * draw(st.floats(1.0, 2e4))}
+    return {
+        "theta1": draw(angles),
+        "theta2": draw(angles),
+        "omega2": sign * draw(st.floats(0.5, 60.0)),
+        "alpha2": draw(st.floats(-800.0, 800.0)),
+        "jerk2": draw(st.sampled_from([-1.0, 1.0])) * draw(st.floats(1.0, 2e4)),
+    }
 
 
 def _third_side(first, second, psi, b):
@@ -87,7 +97,7 @@ def slidercranks(draw):
     b = a * draw(st.floats(0.3, 5.0))
     t2 = m["theta2"] - m["theta1"]
     sin3 = draw(st.floats(-0.9, 0.9))
-    c = a * math.sin(t2) - b * sin3          # offset that puts the rod at sin3
+    c = a * math.sin(t2) - b * sin3  # offset that puts the rod at sin3
     return dict(a=a, b=b, c=c, **m)
 
 

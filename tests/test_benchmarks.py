@@ -9,11 +9,11 @@ import math
 import numpy as np
 import pytest
 
-from accelab.solver import FourBar, NoConvergence, NotAssemblable, Q_, Singular, VectorLoopLinkage
 from accelab.benchmarks.cases import all_cases, description
 from accelab.benchmarks.reference import at_points, toggle_angle
 from accelab.benchmarks.run import run_benchmark
 from accelab.benchmarks.stability import STUDY_CASE, near_toggle, newton_guesses
+from accelab.solver import Q_, FourBar, NoConvergence, NotAssemblable, Singular, VectorLoopLinkage
 
 #: an answer near a toggle must be this close to the reference, or refused
 NEAR_TOGGLE_TOLERANCE = 1e-6
@@ -27,8 +27,9 @@ def cases():
 @pytest.fixture(scope="module")
 def tiny(tmp_path_factory):
     out = tmp_path_factory.mktemp("bench")
-    data = run_benchmark(str(out), mode="tiny", peers=False, charts=True, log=lambda *a: None,
-                         formats=("png",))
+    data = run_benchmark(
+        str(out), mode="tiny", peers=False, charts=True, log=lambda *a: None, formats=("png",)
+    )
     return out, data
 
 
@@ -37,8 +38,19 @@ def test_tiny_run_writes_json_and_charts(tiny):
     out, data = tiny
     on_disk = json.loads((out / "bench.json").read_text())
     assert on_disk["mode"] == "tiny"
-    for key in ("machine", "config", "cases", "methods", "results", "stability", "newton",
-                "scaling", "units", "goals", "elapsed_s"):
+    for key in (
+        "machine",
+        "config",
+        "cases",
+        "methods",
+        "results",
+        "stability",
+        "newton",
+        "scaling",
+        "units",
+        "goals",
+        "elapsed_s",
+    ):
         assert key in on_disk, key
     assert on_disk["machine"]["numpy"] and on_disk["machine"]["python"]
     for stem in ("bench-speed-accuracy", "bench-stability", "bench-scaling"):
@@ -82,10 +94,9 @@ def test_goals_listed_with_measurements(tiny):
 
 def test_cli_registered():
     from accelab.cli import build_parser
+
     args = build_parser().parse_args(["bench", "--quick", "--out", "x"])
     assert args.quick and args.out == "x" and callable(args.func)
-
-
 
 
 # --- failure modes: near a toggle ----------------------------------------------------------
@@ -101,9 +112,9 @@ def test_near_toggle_answers_are_accurate_or_refused(study):
         for delta, err, refused in zip(study["delta"], m["errors"], m["refused"]):
             if not refused:
                 assert err <= NEAR_TOGGLE_TOLERANCE, (key, delta, err)
-        assert not m["refused"][0], key           # 0.3 rad away: answered
-        assert m["errors"][0] < 1e-13, key        # ... and to full accuracy
-        assert m["refused"][-1], key              # 1e-15 rad away: refused
+        assert not m["refused"][0], key  # 0.3 rad away: answered
+        assert m["errors"][0] < 1e-13, key  # ... and to full accuracy
+        assert m["refused"][-1], key  # 1e-15 rad away: refused
 
 
 def test_near_toggle_unit_aware_scalar_raises_singular(cases):
@@ -114,8 +125,9 @@ def test_near_toggle_unit_aware_scalar_raises_singular(cases):
     with pytest.raises(Singular) as err:
         fourbar.solve(theta2=Q_(lim + 1e-13, "rad"), omega2="10 rad/s")
     assert "limit position" in str(err.value) or "toggle" in str(err.value)
-    r = fourbar.solve(theta2=Q_(lim + 1e-3, "rad"), omega2="10 rad/s", alpha2="-5 rad/s^2",
-                      jerk2="20 rad/s^3")
+    r = fourbar.solve(
+        theta2=Q_(lim + 1e-3, "rad"), omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="20 rad/s^3"
+    )
     ref = at_points(case, [lim + 1e-3], [case.kernel_guess(lim + 1e-3)])
     assert abs(r.jerk4.m_as("rad/s^3") / ref["jerk4"][0] - 1) < 1e-9
 
@@ -171,6 +183,7 @@ def test_sweep_never_lands_silently_on_the_other_assembly(cases):
     grashof = cases["fourbar-open"]
     t = np.linspace(0, 2 * math.pi, 5, endpoint=False) + 0.1  # 72 deg steps
     r = VectorLoopLinkage(**description(grashof, grashof.kernel_guess(t[0]))).solve(
-        theta2=Q_(t, "rad"), omega2="10 rad/s")
+        theta2=Q_(t, "rad"), omega2="10 rad/s"
+    )
     d = np.angle(np.exp(1j * (r.vectors["R3"].angle.m_as("rad") - grashof.kernel(t).theta3)))
     assert np.all(np.asarray(r.valid)) and np.all(np.abs(d) < 1e-9)

@@ -22,28 +22,32 @@ def cases():
     return all_cases()
 
 
-@pytest.mark.parametrize("name, theta2", [("fourbar-open", 0.7), ("invertedslidercrank", 2.0),
-                                          ("sixbar-slider", 1.1)])
+@pytest.mark.parametrize(
+    "name, theta2", [("fourbar-open", 0.7), ("invertedslidercrank", 2.0), ("sixbar-slider", 1.1)]
+)
 def test_reference_derivatives_match_mpmath_differentiation(cases, name, theta2):
     """The reference's derivative solves against mpmath's own numerical
     differentiation of its position solution (an independent route)."""
     case = cases[name]
     ref = LoopReference(case)
-    guess = ref.start(case.guess) if name.startswith("sixbar") else \
-        ref.start(case.kernel_guess(theta2))
+    guess = (
+        ref.start(case.guess) if name.startswith("sixbar") else ref.start(case.kernel_guess(theta2))
+    )
     if name.startswith("sixbar"):  # continue from the case's guesses to theta2
         values = ref.sweep(np.linspace(case.span[0], theta2, 12), case.guess)
-        guess = [values[f"{v}.{'theta' if k == 'angle' else 'length'}"][-1]
-                 for v, k in ref.unknowns]
+        guess = [
+            values[f"{v}.{'theta' if k == 'angle' else 'length'}"][-1] for v, k in ref.unknowns
+        ]
     w, al, jk = MOTION["omega2"], MOTION["alpha2"], MOTION["jerk2"]
     with mp.workdps(40):
         q = ref.solve_one(guess, theta2, w, al, jk, strict=True)
 
         def position(t, k):
             return ref.solve_one([float(x) for x in q[0]], t, 0, 0, 0, strict=True)[0][k]
+
         for k in range(len(ref.unknowns)):
             d1, d2, d3 = (mp.diff(lambda t: position(t, k), mp.mpf(theta2), n) for n in (1, 2, 3))
-            expect = [d1 * w, d2 * w ** 2 + d1 * al, d3 * w ** 3 + 3 * d2 * w * al + d1 * jk]
+            expect = [d1 * w, d2 * w**2 + d1 * al, d3 * w**3 + 3 * d2 * w * al + d1 * jk]
             for n in range(3):
                 assert abs(q[n + 1][k] - expect[n]) <= 1e-20 * (1 + abs(expect[n]))
 
@@ -54,13 +58,14 @@ def test_reference_agrees_with_closed_forms(cases):
         t2 = case.theta2(12)
         ref = cached(case, t2)
         errs = accuracy.relative_errors(
-            {k: getattr(case.kernel(t2), k) for k in case.outputs}, ref, accuracy.scales(ref))
+            {k: getattr(case.kernel(t2), k) for k in case.outputs}, ref, accuracy.scales(ref)
+        )
         assert np.nanmax(accuracy.worst(errs)) < 1e-13
 
 
 def _law(theta2, omega2, alpha2, jerk2):
     th, w, al, j = (mpf(v) for v in (theta2, omega2, alpha2, jerk2))
-    return lambda t: th + w * t + al * t * t / 2 + j * t ** 3 / 6
+    return lambda t: th + w * t + al * t * t / 2 + j * t**3 / 6
 
 
 def _by_differentiation(mechanism, g, theta2, motion, theta1, circuit, points=()):
@@ -75,8 +80,7 @@ def _by_differentiation(mechanism, g, theta2, motion, theta1, circuit, points=()
 
     def state(t):
         angles, values, pts = POSITIONS[mechanism](g, law(t), sign)
-        out = {"theta" + k: near[k] + mp.arg(e * rot * expj(-near[k]))
-               for k, e in angles.items()}
+        out = {"theta" + k: near[k] + mp.arg(e * rot * expj(-near[k])) for k, e in angles.items()}
         out.update(values)
         out.update({"R_" + k: z * rot for k, z in pts.items()})
         for name, link, base, p, delta in points:
@@ -99,28 +103,45 @@ def _by_differentiation(mechanism, g, theta2, motion, theta1, circuit, points=()
 
 
 CLOSED_FORMS = [
-    ("fourbar", dict(a=0.05, b=0.15, c=0.23, d=0.18, p=0.07, delta3=0.6), 0.5, "open",
-     [("Q", 4, "O4", 0.1, -0.3)]),
+    (
+        "fourbar",
+        dict(a=0.05, b=0.15, c=0.23, d=0.18, p=0.07, delta3=0.6),
+        0.5,
+        "open",
+        [("Q", 4, "O4", 0.1, -0.3)],
+    ),
     ("fourbar", dict(a=0.05, b=0.15, c=0.23, d=0.18), 2.5, "crossed", []),
     ("slidercrank", dict(a=0.04, b=0.12, c=-0.01), 2.0, "open", [("Q", 3, "A", 0.05, 0.2)]),
-    ("invertedslidercrank", dict(a=0.1, c=0.24, d=0.16, gamma=-2.1), 2.4, "crossed",
-     [("A4", 4, "O4", 0.2, 0.4)]),
-    ("fivebar", dict(a=0.0254, b=0.1016, c=0.1016, d=0.0254, f=0.0762, lam=-2.0, phi=0.52),
-     0.7, "open", [("Q", 5, "O5", 0.05, 1.0)]),
+    (
+        "invertedslidercrank",
+        dict(a=0.1, c=0.24, d=0.16, gamma=-2.1),
+        2.4,
+        "crossed",
+        [("A4", 4, "O4", 0.2, 0.4)],
+    ),
+    (
+        "fivebar",
+        dict(a=0.0254, b=0.1016, c=0.1016, d=0.0254, f=0.0762, lam=-2.0, phi=0.52),
+        0.7,
+        "open",
+        [("Q", 5, "O5", 0.05, 1.0)],
+    ),
 ]
 
 
 @pytest.mark.parametrize("mechanism, geometry, theta2, circuit, points", CLOSED_FORMS)
-def test_closed_forms_by_loops_match_numerical_differentiation(mechanism, geometry, theta2,
-                                                               circuit, points):
+def test_closed_forms_by_loops_match_numerical_differentiation(
+    mechanism, geometry, theta2, circuit, points
+):
     """The reference's loop derivatives of every link, slider and point, with
     a turned ground and non-zero input jerk, against mpmath.diff of positions
     found by geometry alone (50 digits)."""
     motion = (12.0, -30.0, 400.0)
     with mp.workdps(50):
         want = _by_differentiation(mechanism, geometry, theta2, motion, 0.3, circuit, points)
-        got = ref.solve(mechanism, geometry, theta2, *motion, theta1=0.3, circuit=circuit,
-                        extra_points=points)
+        got = ref.solve(
+            mechanism, geometry, theta2, *motion, theta1=0.3, circuit=circuit, extra_points=points
+        )
         compared = 0
         for k, v in want.items():
             if k not in got or k.endswith("2") and k[:-1] in ANGLE_NAMES:

@@ -35,19 +35,27 @@ from docs.notebooks import problems
 
 ROOT = Path(__file__).resolve().parents[1]
 COURSE = ROOT / "course"
-BUILD = ROOT / "build" / "course"               # executed notebooks (the site test reads them)
-WRITTEN = ROOT / "build" / "course-notebooks"   # what `accelab course --out` wrote
-RUN = ROOT / "build" / "course-run"             # the kernels' working folder: not course/
-BUDGET = 20.0           # s per notebook: the course's execution budget (a warning)
-CELL_TIMEOUT = 300      # s
-MAX_ANIMATION = 1.5e6   # bytes of one animation as the page loads it
+BUILD = ROOT / "build" / "course"  # executed notebooks (the site test reads them)
+WRITTEN = ROOT / "build" / "course-notebooks"  # what `accelab course --out` wrote
+RUN = ROOT / "build" / "course-run"  # the kernels' working folder: not course/
+BUDGET = 20.0  # s per notebook: the course's execution budget (a warning)
+CELL_TIMEOUT = 300  # s
+MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
 #: graded exercise families (exercises/families) and their sections of the chapter
-FAMILIES = ("rotation", "fourbar", "coupler", "slidercrank", "coriolis", "fivebar", "jerk",
-            "tolerance")
+FAMILIES = (
+    "rotation",
+    "fourbar",
+    "coupler",
+    "slidercrank",
+    "coriolis",
+    "fivebar",
+    "jerk",
+    "tolerance",
+)
 
 NOTEBOOKS = accelab.course.notebooks()
 
-_executed = {}   # stem -> (path of the executed notebook, seconds) or the exception
+_executed = {}  # stem -> (path of the executed notebook, seconds) or the exception
 
 
 class NotebookFailed(RuntimeError):
@@ -94,9 +102,15 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     outdir.mkdir(parents=True, exist_ok=True)
     target = outdir / Path(notebook).name
     # no timing metadata on the cells: the docs build's cache must match them by content
-    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", startup_timeout=120,
-                            allow_errors=False, record_timing=False,
-                            resources={"metadata": {"path": str(RUN)}})
+    client = NotebookClient(
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        startup_timeout=120,
+        allow_errors=False,
+        record_timing=False,
+        resources={"metadata": {"path": str(RUN)}},
+    )
     try:
         client.execute(env=kernel_env())
     except CellExecutionError as exc:
@@ -104,13 +118,13 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
         raise NotebookFailed(f"{Path(notebook).name} failed:\n{exc}") from None
     except Exception as exc:  # a timeout, a dead kernel
         nbformat.write(nb, target)
-        raise NotebookFailed(f"{Path(notebook).name} failed: {type(exc).__name__}: "
-                             f"{exc}") from None
+        raise NotebookFailed(f"{Path(notebook).name} failed: {type(exc).__name__}: {exc}") from None
     found = problems(nb)
     nbformat.write(nb, target)
     if found:
-        raise NotebookFailed(f"{Path(notebook).name} wrote to stderr or failed:\n"
-                             + "\n".join(found))
+        raise NotebookFailed(
+            f"{Path(notebook).name} wrote to stderr or failed:\n" + "\n".join(found)
+        )
     return nb
 
 
@@ -118,6 +132,7 @@ def _store(source, nb, seconds):
     """Hand an executed notebook to the documentation build's cache, if the
     repository has one (``docs/notebooks.py``)."""
     import sys
+
     if str(ROOT) not in sys.path:  # docs/ is not an installed package
         sys.path.append(str(ROOT))
     try:
@@ -161,8 +176,13 @@ def execute_all():
 
 
 def _outputs(nb, mime):
-    return [o["data"][mime] for c in nb["cells"] if c["cell_type"] == "code"
-            for o in c.get("outputs", []) if mime in o.get("data", {})]
+    return [
+        o["data"][mime]
+        for c in nb["cells"]
+        if c["cell_type"] == "code"
+        for o in c.get("outputs", [])
+        if mime in o.get("data", {})
+    ]
 
 
 def _text(value):
@@ -170,9 +190,13 @@ def _text(value):
 
 
 def _stdout(nb):
-    return "".join(_text(o.get("text", "")) for c in nb["cells"] if c["cell_type"] == "code"
-                   for o in c.get("outputs", [])
-                   if o.get("output_type") == "stream" and o.get("name") == "stdout")
+    return "".join(
+        _text(o.get("text", ""))
+        for c in nb["cells"]
+        if c["cell_type"] == "code"
+        for o in c.get("outputs", [])
+        if o.get("output_type") == "stream" and o.get("name") == "stdout"
+    )
 
 
 # ---------------------------------------------------------------- execution
@@ -184,24 +208,26 @@ def test_notebook_executes(source):
     its animation (small enough to load quickly) and its practice verdicts."""
     path, seconds = executed(source)
     import sys
+
     sys.stderr.write(f"\n{source.stem}: executed in {seconds:.1f} s\n")
     if seconds > BUDGET:
-        warnings.warn(f"{source.stem} took {seconds:.1f} s (the course budget is about "
-                      f"{BUDGET:g} s per notebook)")
+        warnings.warn(
+            f"{source.stem} took {seconds:.1f} s (the course budget is about "
+            f"{BUDGET:g} s per notebook)"
+        )
     nb = json.loads(Path(path).read_text())
     assert _outputs(nb, "image/png"), "no figure: is %matplotlib inline in the first cell?"
     text = source.read_text()
     if "animate(" in text:
         pngs = [base64.b64decode(_text(p)) for p in _outputs(nb, "image/png")]
-        animated = [p for p in pngs if 0 < p.find(b"acTL") < p.find(b"IDAT")]   # an APNG
+        animated = [p for p in pngs if 0 < p.find(b"acTL") < p.find(b"IDAT")]  # an APNG
         assert animated, "the animation was not shown"
         for png in animated:
             assert len(png) * 4 / 3 < MAX_ANIMATION, f"an animation of {len(png) / 1e6:.1f} MB"
     if "practice(" in text:
         # the notebook asserts p.check's verdicts; here: each was said, with a reason
         lines = _stdout(nb).splitlines()
-        assert any(re.match(r"\w+: right \(", s) for s in lines), \
-            "no practice answer was accepted"
+        assert any(re.match(r"\w+: right \(", s) for s in lines), "no practice answer was accepted"
         refused = [s for s in lines if re.match(r"\w+: ", s) and not re.match(r"\w+: right \(", s)]
         assert refused, "no wrong practice answer was refused"
         assert all(len(s) > 30 for s in refused), f"a refusal without its reason: {refused}"
@@ -218,9 +244,11 @@ def test_course_command_writes_notebooks_a_student_can_run(tmp_path):
     args = parser.parse_args(["course", "--out", str(out)])
     assert args.func(args) == 0
     names = sorted(p.name for p in out.iterdir())
-    assert names == sorted([p.stem + ".ipynb" for p in NOTEBOOKS]
-                           + [p.name for p in accelab.course.pages()])
+    assert names == sorted(
+        [p.stem + ".ipynb" for p in NOTEBOOKS] + [p.name for p in accelab.course.pages()]
+    )
     import nbformat
+
     nb = nbformat.read(out / NOTEBOOKS[0].with_suffix(".ipynb").name, as_version=4)
     assert nb.metadata["kernelspec"]["name"] == "python3"
     assert nb.cells[1].source.startswith("%matplotlib inline")
@@ -247,6 +275,7 @@ def test_course_command_reports_an_unusable_folder(tmp_path, capsys):
 # ---------------------------------------------------------------- conventions
 def _cells(source):
     import jupytext
+
     return jupytext.read(source).cells
 
 
@@ -264,8 +293,12 @@ def test_notebook_follows_the_conventions(source):
     first = md[0].lstrip()
     assert re.match(rf"# {number}\. \S", first), f"first cell must start '# {number}. Title'"
     assert "you will be able to" in first.lower(), "a 'You will be able to' list up front"
-    headings = [line[3:].strip().lower() for cell in md for line in cell.splitlines()
-                if line.startswith("## ")]
+    headings = [
+        line[3:].strip().lower()
+        for cell in md
+        for line in cell.splitlines()
+        if line.startswith("## ")
+    ]
     order = []
     for word in ("idea", "worked example", "explore", "check yourself", "common mistakes"):
         hits = [i for i, h in enumerate(headings) if word in h]
@@ -285,15 +318,19 @@ def test_notebook_follows_the_conventions(source):
     code = [c.source for c in _cells(source) if c.cell_type == "code"]
     assert code[0].startswith("%matplotlib inline"), "the first code cell sets the inline backend"
     allcode = "\n".join(code)
-    assert "from accelab.solver" in allcode or "import accelab.solver" in allcode, \
+    assert "from accelab.solver" in allcode or "import accelab.solver" in allcode, (
         "notebooks are clients of accelab.solver"
+    )
     assert "coursekit" not in allcode and "sys.path" not in allcode, "no path tricks"
     assert "../" not in allcode, "nothing read from outside the installed package"
     assert "Design of Machinery" in allmd and "Norton" in allmd, "the book is cited"
 
 
-@pytest.mark.parametrize("source", [p for p in NOTEBOOKS if int(p.name[:2]) <= 9],
-                         ids=[p.stem for p in NOTEBOOKS if int(p.name[:2]) <= 9])
+@pytest.mark.parametrize(
+    "source",
+    [p for p in NOTEBOOKS if int(p.name[:2]) <= 9],
+    ids=[p.stem for p in NOTEBOOKS if int(p.name[:2]) <= 9],
+)
 def test_topic_notebooks_practise_and_name_their_families(source):
     """Each notebook of the chapter's topics has a practice section with
     instant feedback and names the graded exercise families that practise it."""
@@ -308,12 +345,11 @@ def test_families_page_maps_every_family_to_a_notebook():
     page = (COURSE / "FAMILIES.md").read_text()
     stems = {p.stem for p in NOTEBOOKS}
     for family in FAMILIES:
-        row = next((line for line in page.splitlines() if line.startswith(f"| `{family}`")),
-                   None)
+        row = next((line for line in page.splitlines() if line.startswith(f"| `{family}`")), None)
         assert row, f"FAMILIES.md has no row for {family}"
         linked = re.findall(r"\]\((\d\d_[a-z_]+)\.ipynb\)", row)
         assert linked and set(linked) <= stems, row
-        for stem in linked:   # and that notebook names the family back
+        for stem in linked:  # and that notebook names the family back
             assert f"`{family}`" in (COURSE / f"{stem}.py").read_text(), (family, stem)
 
 
@@ -322,8 +358,17 @@ def test_errata_page_lists_corrections_and_checks():
     assert page.startswith("# ")
     rows = [line for line in page.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) >= 12, "one row per misprint found"
-    for needle in ("7.16b", "7.24a", "7.26b", "7.27b", "7.29e", "7.40", "omega_4",
-                   "perpendicular to and along", "Section 7.5"):
+    for needle in (
+        "7.16b",
+        "7.24a",
+        "7.26b",
+        "7.27b",
+        "7.29e",
+        "7.40",
+        "omega_4",
+        "perpendicular to and along",
+        "Section 7.5",
+    ):
         assert needle in page, needle
 
 
@@ -331,9 +376,12 @@ def test_errata_page_lists_corrections_and_checks():
 def test_kit_static_figure(monkeypatch):
     """explore() headless: one figure with a panel per value of the first slider."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     from accelab.course import kit
+
     assert kit.static_values(0, 360, 5, 4) == [0, 90, 180, 270]
     assert kit.static_values(10, 50, 5, 3) == [10, 30, 50]
     calls = []
@@ -350,7 +398,7 @@ def test_kit_static_figure(monkeypatch):
     w, h = fig.get_size_inches() * fig.dpi
     assert w == pytest.approx(900) and h > 200
     plt.close("all")
-    assert kit._label("rpm", 6, "rpm") == "6 rpm"          # never "rpm = 6 rpm"
+    assert kit._label("rpm", 6, "rpm") == "6 rpm"  # never "rpm = 6 rpm"
     assert kit._label("theta2", 30, "deg") == "theta2 = 30 deg"
     monkeypatch.setenv("ACCELAB_STATIC", "1")
     assert kit.is_static()
@@ -364,6 +412,7 @@ def test_kit_static_figure(monkeypatch):
 
 def test_stated_ties_the_prose_to_the_numbers():
     from accelab.course.kit import Q_, stated
+
     assert stated(36.96, "37") == 36.96
     stated(-23.466, "-23.47")
     stated(2093.0, "2100", sig=2)
@@ -377,6 +426,7 @@ def test_stated_ties_the_prose_to_the_numbers():
 
 def test_measure_times_functions_in_turn():
     from accelab.course.kit import measure
+
     fast, slow = measure([lambda: None, lambda: sum(range(20000))], repeats=3, min_time=0.002)
     assert 0 < fast < slow
 
@@ -387,17 +437,21 @@ def test_animation_is_a_small_apng_drawn_by_the_linkage_drawer(monkeypatch):
     from accelab.course.animation import animate
     from accelab.solver.graphical import draw as drawing
     from accelab.solver.graphical.gallery import EXAMPLE_7_1
+
     calls = []
     real = drawing.draw_linkage
-    monkeypatch.setattr(drawing, "draw_linkage",
-                        lambda *a, **kw: calls.append(kw) or real(*a, **kw))
+    monkeypatch.setattr(
+        drawing, "draw_linkage", lambda *a, **kw: calls.append(kw) or real(*a, **kw)
+    )
     anim = animate(dict(EXAMPLE_7_1, alpha2="0 rad/s^2"), frames=4)
     assert anim._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n" and anim.frames == 4
     assert len(calls) >= 4 and all(kw["box"] == calls[0]["box"] for kw in calls)
     assert all(kw["scale"] == calls[0]["scale"] for kw in calls), "one vector scale"
     assert not hasattr(anim, "_repr_html_"), "an image/png output: the site captions it"
-    from PIL import Image
     import io
+
+    from PIL import Image
+
     im = Image.open(io.BytesIO(anim.png))
     assert im.n_frames == 4 and im.size == (anim.width, anim.height)
 
@@ -409,7 +463,7 @@ def test_explore_shows_sliders_in_a_live_kernel():
     import nbformat
     from nbclient import NotebookClient
 
-    code = '''
+    code = """
 import matplotlib.pyplot as plt
 from accelab.course.kit import explore
 from accelab.course import kit
@@ -428,15 +482,24 @@ ipywidgets.interactive = real
 s = made[0]
 print(kit.is_static(), type(s["theta2"]).__name__, s["theta2"].max, s["theta2"].value,
       type(s["omega2"]).__name__, s["omega2"].step, shown)
-'''
+"""
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
     env = kernel_env()
     env["ACCELAB_STATIC"] = "0"
     RUN.mkdir(parents=True, exist_ok=True)
-    NotebookClient(nb, timeout=120, kernel_name="python3",
-                   resources={"metadata": {"path": str(RUN)}}).execute(env=env)
+    NotebookClient(
+        nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(RUN)}}
+    ).execute(env=env)
     outputs = nb.cells[0].outputs
     text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
-    assert text.split() == ["False", "IntSlider", "360", "30", "FloatSlider", "0.5",
-                            "[(30,", "10.0)]"], text
+    assert text.split() == [
+        "False",
+        "IntSlider",
+        "360",
+        "30",
+        "FloatSlider",
+        "0.5",
+        "[(30,",
+        "10.0)]",
+    ], text
     assert any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs)

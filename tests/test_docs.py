@@ -48,20 +48,35 @@ pytestmark = pytest.mark.slow
 
 CHROMIUM = "/usr/bin/chromium"
 DRIVER = "/usr/bin/chromedriver"
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--no-first-run"]
+FLAGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--no-first-run",
+]
 WIDTHS = (1366, 390)
 #: URL schemes that reach the network; anything else is local to the browser
 NETWORK_SCHEMES = ("http:", "https:", "ws:", "wss:", "ftp:")
 #: pages every build has (more are found by walking the output)
-REQUIRED = ["index.html", "conventions.html", "benchmark.html", "guide/index.html",
-            "api/index.html", "course/05_coriolis.html", "search.html"]
+REQUIRED = [
+    "index.html",
+    "conventions.html",
+    "benchmark.html",
+    "guide/index.html",
+    "api/index.html",
+    "course/05_coriolis.html",
+    "search.html",
+]
 
 
 def _ensure_chromium():
     """Paths of chromium and chromedriver, installing them if needed; or a reason to skip."""
-    found = [shutil.which("chromium") or (CHROMIUM if os.path.exists(CHROMIUM) else None),
-             shutil.which("chromedriver") or (DRIVER if os.path.exists(DRIVER) else None)]
+    found = [
+        shutil.which("chromium") or (CHROMIUM if os.path.exists(CHROMIUM) else None),
+        shutil.which("chromedriver") or (DRIVER if os.path.exists(DRIVER) else None),
+    ]
     if all(found):
         return found, None
     if not shutil.which("apt-get"):
@@ -78,8 +93,10 @@ def _ensure_chromium():
             break
     found = [shutil.which("chromium"), shutil.which("chromedriver")]
     if not all(found):
-        return None, ("chromium / chromium-driver are missing and apt-get could not install "
-                      f"them: {done.stderr.strip()[-300:]}")
+        return None, (
+            "chromium / chromium-driver are missing and apt-get could not install "
+            f"them: {done.stderr.strip()[-300:]}"
+        )
     return found, None
 
 
@@ -87,11 +104,24 @@ def _ensure_chromium():
 @pytest.fixture(scope="session")
 def site():
     """Build the site (warnings are errors); returns the output folder."""
-    pytest.importorskip("sphinx", reason="the docs extra is not installed "
-                                         "(pip install -e '.[docs]')")
+    pytest.importorskip(
+        "sphinx", reason="the docs extra is not installed (pip install -e '.[docs]')"
+    )
     t0 = time.perf_counter()
-    cmd = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b", "html",
-           "-d", str(DOCTREES), str(DOCS), str(SITE)]
+    cmd = [
+        sys.executable,
+        "-m",
+        "sphinx",
+        "-W",
+        "--keep-going",
+        "-q",
+        "-b",
+        "html",
+        "-d",
+        str(DOCTREES),
+        str(DOCS),
+        str(SITE),
+    ]
     env = dict(os.environ, MPLBACKEND="Agg")
     done = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, env=env, timeout=1500)
     sys.stderr.write(f"\ndocs built in {time.perf_counter() - t0:.1f} s\n")
@@ -104,7 +134,7 @@ def _pages(site):
     """The pages of this build (from its search index: the output folder may
     also hold pages of earlier builds), plus the search page and module index."""
     text = (site / "searchindex.js").read_text()
-    index = json.loads(text[text.index("(") + 1:text.rindex(")")])
+    index = json.loads(text[text.index("(") + 1 : text.rindex(")")])
     pages = [f"{doc}.html" for doc in index["docnames"]]
     pages += [p for p in ("search.html", "py-modindex.html") if (site / p).exists()]
     return sorted(pages)
@@ -146,23 +176,29 @@ def server(site):
 def _driver(paths, width, downloads):
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
+
     options = webdriver.ChromeOptions()
     options.binary_location = paths[0]
     profile = tempfile.mkdtemp(prefix="accelab-docs-chromium-")
     for flag in FLAGS + [f"--window-size={max(width, 500)},900", f"--user-data-dir={profile}"]:
         options.add_argument(flag)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
-    options.add_experimental_option("prefs", {"download.default_directory": str(downloads),
-                                              "download.prompt_for_download": False})
+    options.add_experimental_option(
+        "prefs",
+        {"download.default_directory": str(downloads), "download.prompt_for_download": False},
+    )
     driver = webdriver.Chrome(options=options, service=Service(paths[1]))
     driver.set_page_load_timeout(60)
     driver.set_script_timeout(60)
-    if width < 500:   # narrower than Chromium's smallest window: a phone's viewport
-        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
-            "width": width, "height": 844, "deviceScaleFactor": 3, "mobile": True})
+    if width < 500:  # narrower than Chromium's smallest window: a phone's viewport
+        driver.execute_cdp_cmd(
+            "Emulation.setDeviceMetricsOverride",
+            {"width": width, "height": 844, "deviceScaleFactor": 3, "mobile": True},
+        )
     driver.execute_cdp_cmd("Network.enable", {})
-    driver.execute_cdp_cmd("Browser.setDownloadBehavior",
-                           {"behavior": "allow", "downloadPath": str(downloads)})
+    driver.execute_cdp_cmd(
+        "Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": str(downloads)}
+    )
     return driver, profile
 
 
@@ -276,10 +312,15 @@ def _network_fetches(urls, base):
 
 def test_network_check_tells_the_site_from_the_browser():
     base = "http://127.0.0.1:8123/"
-    urls = [base + "index.html", "data:image/png;base64,AA", "about:blank",
-            "chrome-untrusted://new-tab-page/one-google-bar?paramsencoded=",
-            "https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js", "wss://example.org/x",
-            "http://127.0.0.1:9999/other-server.js"]
+    urls = [
+        base + "index.html",
+        "data:image/png;base64,AA",
+        "about:blank",
+        "chrome-untrusted://new-tab-page/one-google-bar?paramsencoded=",
+        "https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js",
+        "wss://example.org/x",
+        "http://127.0.0.1:9999/other-server.js",
+    ]
     assert _network_fetches(urls, base) == urls[-3:]
 
 
@@ -315,8 +356,7 @@ def _problems(page, st, base, width):
                 say(f"figure is not a link to its full-size image: {img['src']}")
             alt = img["alt"].strip()
             if len(alt) < 12 or alt.lower().endswith((".png", ".svg", ".jpg")):
-                say(f"figure without alt text that says what it shows: {img['src']} "
-                    f"(alt {alt!r})")
+                say(f"figure without alt text that says what it shows: {img['src']} (alt {alt!r})")
             if len(img["caption"]) < 12:
                 say(f"figure without a caption: {img['src']} (alt {alt[:60]!r})")
     if width < 500:
@@ -345,8 +385,9 @@ def crawl(site, server, chromium_paths):
         finally:
             driver.quit()
             shutil.rmtree(profile, ignore_errors=True)
-    sys.stderr.write(f"\n{len(pages)} pages at {len(WIDTHS)} widths in "
-                     f"{time.perf_counter() - t0:.1f} s\n")
+    sys.stderr.write(
+        f"\n{len(pages)} pages at {len(WIDTHS)} widths in {time.perf_counter() - t0:.1f} s\n"
+    )
     return states, problems
 
 
@@ -367,8 +408,7 @@ def test_wide_equations_scroll_on_a_phone(crawl):
     """At 390 px some display equations are wider than the page: they scroll in
     their own box (with the cue), and the page itself does not."""
     states, _ = crawl
-    wide = [m for st in states[390].values() for m in st["math"]
-            if m["display"] and m["overflows"]]
+    wide = [m for st in states[390].values() for m in st["math"] if m["display"] and m["overflows"]]
     assert wide, "no equation wider than a phone: the scroll box is untested"
     assert all(m["cue"] and m["overflowX"] in ("auto", "scroll") for m in wide)
 
@@ -380,8 +420,9 @@ def test_wide_tables_scroll_on_a_phone_with_a_cue(crawl):
     wide = [t for st in states[390].values() for t in st["tables"] if t["overflows"]]
     assert wide, "no table wider than a phone: the scroll box is untested"
     assert all(t["cue"] and t["overflowX"] in ("auto", "scroll") for t in wide)
-    assert not any(t["cue"] for st in states[1366].values() for t in st["tables"]
-                   if not t["overflows"])
+    assert not any(
+        t["cue"] for st in states[1366].values() for t in st["tables"] if not t["overflows"]
+    )
 
 
 def test_internal_links_resolve(crawl, server, site):
@@ -398,8 +439,7 @@ def test_internal_links_resolve(crawl, server, site):
                 path += "index.html"
             if not (site / path).is_file():
                 bad.append(f"{page}: {href} (no such file)")
-            elif fragment and path.endswith(".html") and path in ids and \
-                    fragment not in ids[path]:
+            elif fragment and path.endswith(".html") and path in ids and fragment not in ids[path]:
                 bad.append(f"{page}: {href} (no anchor #{fragment})")
     assert not bad, "broken links:\n" + "\n".join(sorted(set(bad))[:40])
 
@@ -413,10 +453,12 @@ def test_search_finds_coriolis(site, server, chromium_paths):
         for _ in range(200):
             hits = driver.execute_script(
                 "return [...document.querySelectorAll('#search-results ul.search li a')]"
-                ".map(a => a.getAttribute('href'))")
+                ".map(a => a.getAttribute('href'))"
+            )
             done = driver.execute_script(
                 "const s = document.querySelector('#search-results .search-summary');"
-                "return s ? s.innerText : ''")
+                "return s ? s.innerText : ''"
+            )
             if hits and done:
                 break
             time.sleep(0.1)
@@ -431,6 +473,7 @@ def test_search_finds_coriolis(site, server, chromium_paths):
 def test_course_pages_download_their_notebooks(crawl, site, server, chromium_paths):
     """Each course page links its notebook; clicking the link downloads it."""
     import nbformat
+
     states, _ = crawl
     course = sorted(p for p in states[1366] if p.startswith("course/") and p[7:9].isdigit())
     assert len(course) >= 11

@@ -16,11 +16,25 @@ def test_assign_checks_every_roster_student_and_says_which_fails(tmp_path):
     course = str(tmp_path / "c")
     roster = tmp_path / "roster.csv"
     roster.write_text("id\nann\nbob\n")
-    proc = subprocess.run([*ACCELAB, "assign", "--course", course, "--assignment", "A",
-                           "--roster", str(roster), "--families", "fourbar", "--ranges",
-                           json.dumps({"fourbar": {"a": [20, 20], "b": [1, 1], "c": [1, 1],
-                                                   "d": [3, 3]}}), "--no-generate"],
-                          capture_output=True, text=True)
+    proc = subprocess.run(
+        [
+            *ACCELAB,
+            "assign",
+            "--course",
+            course,
+            "--assignment",
+            "A",
+            "--roster",
+            str(roster),
+            "--families",
+            "fourbar",
+            "--ranges",
+            json.dumps({"fourbar": {"a": [20, 20], "b": [1, 1], "c": [1, 1], "d": [3, 3]}}),
+            "--no-generate",
+        ],
+        capture_output=True,
+        text=True,
+    )
     assert proc.returncode == 2
     assert "gets no valid problem" in proc.stderr and "widen the ranges" in proc.stderr
     assert "Traceback" not in proc.stderr
@@ -31,10 +45,13 @@ def test_an_assignment_with_submissions_is_replaced_only_when_forced(tmp_path):
     course = str(tmp_path / "c")
     assign(course, "A", ["rotation"], roster=["ann"], generate=False, say=lambda *a: None)
     from accelab.exercises.notebook import read_spec
+
     submit_spec = read_spec(course, "A")
     os.makedirs(os.path.join(course, "release", "A"))
-    from accelab.exercises.notebook import build_notebook
     import nbformat
+
+    from accelab.exercises.notebook import build_notebook
+
     nbformat.write(build_notebook(submit_spec), os.path.join(course, "release", "A", "A.ipynb"))
     submit(course, "A", "ann", key_code(submit_spec, "ann"))
     try:
@@ -54,7 +71,8 @@ def test_demo_never_deletes_a_folder_it_did_not_make(tmp_path):
     folder = tmp_path / "mine"
     folder.mkdir()
     (folder / "thesis.tex").write_text("years of work")
-    proc = subprocess.run([*ACCELAB, "demo", "--course", str(folder)], capture_output=True,
-                          text=True)
+    proc = subprocess.run(
+        [*ACCELAB, "demo", "--course", str(folder)], capture_output=True, text=True
+    )
     assert proc.returncode == 2 and "was not made by accelab demo" in proc.stderr
     assert (folder / "thesis.tex").read_text() == "years of work"

@@ -11,10 +11,9 @@ import sys
 
 import nbformat
 import pytest
+from _exercises_helpers import answers_code
 
 from accelab.exercises.variant import variant_json
-
-from _exercises_helpers import answers_code
 
 pytestmark = pytest.mark.slow
 
@@ -22,7 +21,7 @@ pytestmark = pytest.mark.slow
 def run(args, cwd, user=None, check=True):
     env = dict(os.environ)
     env.pop("JUPYTERHUB_USER", None)
-    if user:   # each student has a home of their own (nbgrader keeps its cache there)
+    if user:  # each student has a home of their own (nbgrader keeps its cache there)
         env["USER"] = env["LOGNAME"] = user
         env["HOME"] = cwd
         env.pop("JUPYTER_DATA_DIR", None)
@@ -47,8 +46,10 @@ def accelab(*args, cwd):
 def student_config(home, exchange):
     os.makedirs(home, exist_ok=True)
     with open(os.path.join(home, "nbgrader_config.py"), "w") as fh:
-        fh.write(f"c = get_config()\nc.CourseDirectory.course_id = 'mech101'\n"
-                 f"c.Exchange.root = {exchange!r}\n")
+        fh.write(
+            f"c = get_config()\nc.CourseDirectory.course_id = 'mech101'\n"
+            f"c.Exchange.root = {exchange!r}\n"
+        )
 
 
 def work(home, student, course):
@@ -58,11 +59,14 @@ def work(home, student, course):
     code = answers_code(json.loads(json.dumps(variant_json(course, "A", student))))
     for cell in nb.cells:
         gid = cell.metadata.get("nbgrader", {}).get("grade_id", "")
-        if gid.startswith("answer_") and gid[len("answer_"):] in code:
-            cell.source = code[gid[len("answer_"):]]
-    if student == "hal":   # one wrong answer
-        first = next(c for c in nb.cells if c.metadata.get("nbgrader", {}).get(
-            "grade_id", "").startswith("answer_"))
+        if gid.startswith("answer_") and gid[len("answer_") :] in code:
+            cell.source = code[gid[len("answer_") :]]
+    if student == "hal":  # one wrong answer
+        first = next(
+            c
+            for c in nb.cells
+            if c.metadata.get("nbgrader", {}).get("grade_id", "").startswith("answer_")
+        )
         first.source = first.source.replace("Q_(", "-Q_(")
     nbformat.write(nb, path)
 
@@ -74,16 +78,30 @@ def test_assign_release_fetch_submit_collect_grade_feedback_export(tmp_path):
     os.chmod(exchange, 0o777)
     roster = tmp_path / "roster.csv"
     roster.write_text("id,first_name,last_name\nann,Ann,A\nhal,Hal,H\nivy,Ivy,I\n")
-    accelab("assign", "--course", course, "--assignment", "A", "--course-id", "mech101",
-            "--roster", str(roster), "--families", "rotation,fourbar", cwd=str(tmp_path))
+    accelab(
+        "assign",
+        "--course",
+        course,
+        "--assignment",
+        "A",
+        "--course-id",
+        "mech101",
+        "--roster",
+        str(roster),
+        "--families",
+        "rotation,fourbar",
+        cwd=str(tmp_path),
+    )
     with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
         fh.write(f"c.Exchange.root = {exchange!r}\n")
     nbgrader("release_assignment", "A", "--force", cwd=course)
     for student in ("ann", "hal"):
         home = str(tmp_path / student)
         student_config(home, exchange)
-        listing = nbgrader("list", cwd=home, user=student).stdout + \
-            nbgrader("list", cwd=home, user=student).stderr
+        listing = (
+            nbgrader("list", cwd=home, user=student).stdout
+            + nbgrader("list", cwd=home, user=student).stderr
+        )
         assert "mech101 A" in listing
         nbgrader("fetch_assignment", "A", cwd=home, user=student)
         work(home, student, course)
@@ -103,8 +121,12 @@ def test_assign_release_fetch_submit_collect_grade_feedback_export(tmp_path):
     for student in ("ann", "hal"):
         home = str(tmp_path / student)
         nbgrader("fetch_feedback", "A", cwd=home, user=student)
-        pages = [os.path.join(root, f) for root, _, files in os.walk(os.path.join(home, "A"))
-                 for f in files if f.endswith(".html")]
+        pages = [
+            os.path.join(root, f)
+            for root, _, files in os.walk(os.path.join(home, "A"))
+            for f in files
+            if f.endswith(".html")
+        ]
         assert len(pages) == 1, f"feedback fetched for {student}: {pages}"
         text = open(pages[0]).read()
         assert "Graded against the values of student " + student in text

@@ -9,7 +9,6 @@ check (its own solver, from `accelab variant --json`), never from the package.
 """
 
 import csv
-import glob
 import hashlib
 import importlib
 import json
@@ -21,14 +20,13 @@ import time
 
 import nbformat
 import pytest
+from _exercises_helpers import answers_code
 from nbformat.v4 import new_code_cell
 
 from accelab.exercises.grader.gradetable import question_names
 from accelab.exercises.grader.sandbox import check_sandbox
-from accelab.exercises.simulate import key_code, submit
 from accelab.exercises.notebook import read_spec
-
-from _exercises_helpers import answers_code
+from accelab.exercises.simulate import key_code, submit
 
 pytestmark = pytest.mark.slow
 
@@ -50,6 +48,7 @@ def outside(course, student):
     --json` prints; the command itself is run once in the fixture) and the
     independent solver."""
     from accelab.exercises.variant import variant_json
+
     return answers_code(json.loads(json.dumps(variant_json(course, "A", student))))
 
 
@@ -67,8 +66,7 @@ def own_answers_after(course, student, probe, which=0):
 
 
 def all_wrong(code, units):
-    return {n: (f"{n} = Q_(1.0, {units[n]!r})" if units[n] else f"{n} = 'gentle'")
-            for n in code}
+    return {n: (f"{n} = Q_(1.0, {units[n]!r})" if units[n] else f"{n} = 'gentle'") for n in code}
 
 
 def course_snapshot(course):
@@ -113,28 +111,37 @@ def patch_checks(course, units, name_of):
     """Replace the notebook's checks, then give wrong answers."""
     code = all_wrong(units, units)
     first = next(iter(code))
-    code[first] = ("import accelab.exercises.student.runtime as r\n"
-                   "r.check_format = lambda *a, **k: print('right')\n"
-                   "import builtins; builtins.AssertionError = type('X', (Exception,), {})\n"
-                   + code[first])
+    code[first] = (
+        "import accelab.exercises.student.runtime as r\n"
+        "r.check_format = lambda *a, **k: print('right')\n"
+        "import builtins; builtins.AssertionError = type('X', (Exception,), {})\n" + code[first]
+    )
     return code, None
 
 
 @attack
 def load_alice(course, units, name_of):
     """Load another student's values in the notebook, then give her right answers."""
+
     def edit(nb):
         nb.cells.insert(2, new_code_cell("v = load_variant(SPEC, 'ann')\nv.show(1)"))
+
     return outside(course, "ann"), edit
 
 
 @attack
 def id_alice(course, units, name_of):
     """Change the notebook's own student id to another student's, then her answers."""
+
     def edit(nb):
-        nb.cells.insert(2, new_code_cell(
-            "import os\nos.environ['ACCELAB_STUDENT_ID'] = 'ann'\n"
-            "v = load_variant(SPEC, student_id())"))
+        nb.cells.insert(
+            2,
+            new_code_cell(
+                "import os\nos.environ['ACCELAB_STUDENT_ID'] = 'ann'\n"
+                "v = load_variant(SPEC, student_id())"
+            ),
+        )
+
     return outside(course, "ann"), edit
 
 
@@ -153,7 +160,7 @@ def self_study(course, units, name_of):
 @attack
 def key_from_imports(course, units, name_of):
     """Look for the key in anything importable or readable in the kernel."""
-    probe = '''
+    probe = """
 import importlib, os, sys, glob
 found = []
 for mod in ("accelab.exercises.grader", "accelab.exercises.grader.key", "accelab.exercises.assignment",
@@ -168,7 +175,7 @@ print("exercises files:", sorted(os.listdir(os.path.dirname(exercises.__file__))
 print("readable json:", [p for d in ("/tmp", "/work", "/root", "/home", os.path.dirname(
     exercises.__file__)) for p in glob.glob(d + "/**/*.json", recursive=True)][:5])
 print("FOUND", found)
-'''
+"""
     code = all_wrong(units, units)
     first = next(iter(code))
     code[first] = probe + code[first]
@@ -178,7 +185,7 @@ print("FOUND", found)
 @attack
 def read_course(course, units, name_of):
     """Read the course folder, the gradebook, other submissions and /proc; write into the course."""
-    probe = f'''
+    probe = f"""
 import os, glob
 for path in [{course!r}, {course + "/gradebook.db"!r}, {course + "/source/A/A.ipynb"!r},
              {course + "/submitted"!r}, "/root", "/home", "/work"]:
@@ -199,14 +206,14 @@ try:
 except Exception as exc:
     print("write ->", type(exc).__name__)
 print(sorted(os.environ))
-'''
+"""
     return own_answers_after(course, "read_course", probe), None
 
 
 @attack
 def background_gradebook(course, units, name_of):
     """A detached process that outlives the notebook and edits the gradebook."""
-    probe = f'''
+    probe = f"""
 import os, time, sqlite3
 if os.fork() == 0:
     os.setsid()
@@ -221,7 +228,7 @@ if os.fork() == 0:
         open("/tmp/still-alive", "w").write("yes")
         time.sleep(120)
     os._exit(0)
-'''
+"""
     return own_answers_after(course, "background_gradebook", probe), None
 
 
@@ -239,38 +246,46 @@ def ignore_interrupt(course, units, name_of):
     """A loop that ignores Ctrl-C and SIGINT in one answer cell; the rest right."""
     code = outside(course, "ignore_interrupt")
     name = list(code)[1]
-    code[name] = ("import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n"
-                  "    try:\n        pass\n    except BaseException:\n        pass")
+    code[name] = (
+        "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n"
+        "    try:\n        pass\n    except BaseException:\n        pass"
+    )
     return code, None
 
 
 @attack
 def sleepy(course, units, name_of):
     """Many cells each under the cell limit: the whole submission is limited."""
+
     def edit(nb):
         for _ in range(20):
             nb.cells.insert(2, new_code_cell(f"import time\ntime.sleep({CELL_SECONDS - 0.5})"))
+
     return outside(course, "sleepy"), edit
 
 
 @attack
 def duplicated_pair(course, units, name_of):
     """A copy-pasted answer + test cell pair; the answers right."""
+
     def edit(nb):
         name = next(iter(units))
         answer, test = _cell(nb, f"answer_{name}"), _cell(nb, f"test_{name}")
         at = nb.cells.index(test) + 1
         nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(test))))
         nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(answer))))
+
     return outside(course, "duplicated_pair"), edit
 
 
 @attack
 def fork_bomb(course, units, name_of):
     """A fork bomb in one answer cell; the rest right."""
-    probe = ("import os\npids = []\nwhile True:\n    try:\n        pids.append(os.fork())\n"
-             "    except OSError:\n        break\n    if pids[-1] == 0:\n"
-             "        import time; time.sleep(60); os._exit(0)\n")
+    probe = (
+        "import os\npids = []\nwhile True:\n    try:\n        pids.append(os.fork())\n"
+        "    except OSError:\n        break\n    if pids[-1] == 0:\n"
+        "        import time; time.sleep(60); os._exit(0)\n"
+    )
     return own_answers_after(course, "fork_bomb", probe, which=1), None
 
 
@@ -279,18 +294,22 @@ def memory_hog(course, units, name_of):
     """Ask for 10 GB, then grow a list until the limit; the answers right."""
     code = outside(course, "memory_hog")
     first = next(iter(code))
-    code[first] = ("try:\n    big = bytearray(10 ** 10)\nexcept MemoryError:\n"
-                   "    print('no 10 GB')\nhog = []\nwhile True:\n    hog.append(bytearray(10 ** 7))\n")
+    code[first] = (
+        "try:\n    big = bytearray(10 ** 10)\nexcept MemoryError:\n"
+        "    print('no 10 GB')\nhog = []\nwhile True:\n    hog.append(bytearray(10 ** 7))\n"
+    )
     return code, None
 
 
 @attack
 def disk_filler(course, units, name_of):
     """Fill the disk: one huge file, then many files; the answers right."""
-    probe = ("import os\nfor i in range(10 ** 6):\n    try:\n"
-             "        open(f'/tmp/fill{i}', 'wb').write(b'x' * 10 ** 7)\n"
-             "    except OSError as exc:\n        print('stopped at', i, exc.errno)\n"
-             "        break\n")
+    probe = (
+        "import os\nfor i in range(10 ** 6):\n    try:\n"
+        "        open(f'/tmp/fill{i}', 'wb').write(b'x' * 10 ** 7)\n"
+        "    except OSError as exc:\n        print('stopped at', i, exc.errno)\n"
+        "        break\n"
+    )
     return own_answers_after(course, "disk_filler", probe), None
 
 
@@ -320,9 +339,16 @@ def forged_metadata(course, units, name_of):
         test.source = "pass"
         test.metadata["nbgrader"].update(solution=True, locked=False)
         bonus = new_code_cell("print('all right')")
-        bonus.metadata["nbgrader"] = {"grade": True, "solution": False, "locked": False,
-                                      "grade_id": "bonus", "points": 1000, "schema_version": 3}
+        bonus.metadata["nbgrader"] = {
+            "grade": True,
+            "solution": False,
+            "locked": False,
+            "grade_id": "bonus",
+            "points": 1000,
+            "schema_version": 3,
+        }
         nb.cells.append(bonus)
+
     return code, edit
 
 
@@ -330,12 +356,22 @@ def forged_metadata(course, units, name_of):
 def script_for_the_instructor(course, units, name_of):
     """HTML and script in a markdown cell, a javascript: link and an HTML raw cell,
     meant to run in the instructor's formgrader or feedback page; the answers right."""
+
     def edit(nb):
-        nb.cells.insert(3, nbformat.v4.new_markdown_cell(
-            "Notes <script>window.accelabOwned = 1</script> [see](javascript:accelabOwned=1)\n"
-            "<img src=x onerror=\"accelabOwned=1\">"))
-        nb.cells.insert(3, nbformat.v4.new_raw_cell(
-            "<script>window.accelabOwned = 2</script>", metadata={"raw_mimetype": "text/html"}))
+        nb.cells.insert(
+            3,
+            nbformat.v4.new_markdown_cell(
+                "Notes <script>window.accelabOwned = 1</script> [see](javascript:accelabOwned=1)\n"
+                '<img src=x onerror="accelabOwned=1">'
+            ),
+        )
+        nb.cells.insert(
+            3,
+            nbformat.v4.new_raw_cell(
+                "<script>window.accelabOwned = 2</script>", metadata={"raw_mimetype": "text/html"}
+            ),
+        )
+
     return outside(course, "script_for_the_instructor"), edit
 
 
@@ -349,48 +385,90 @@ def graded(tmp_path_factory):
     course = str(tmp_path_factory.mktemp("course") / "mech")
     roster = tmp_path_factory.mktemp("roster") / "roster.csv"
     roster.write_text("id\n" + "\n".join(ROSTER) + "\n")
-    accelab("assign", "--course", course, "--assignment", "A", "--course-id", "attacks",
-            "--roster", str(roster), "--timeout", str(CELL_SECONDS), "--time-limit",
-            str(TOTAL_SECONDS), "--release", "--due", "2040-01-01 00:00")
+    accelab(
+        "assign",
+        "--course",
+        course,
+        "--assignment",
+        "A",
+        "--course-id",
+        "attacks",
+        "--roster",
+        str(roster),
+        "--timeout",
+        str(CELL_SECONDS),
+        "--time-limit",
+        str(TOTAL_SECONDS),
+        "--release",
+        "--due",
+        "2040-01-01 00:00",
+    )
     with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
         fh.write("c.LateSubmissionPlugin.penalty_method = 'zero'\n")
-    published = json.loads(accelab("variant", "--course", course, "--assignment", "A",
-                                   "--student", "ann", "--json").stdout)
-    assert published == json.loads(json.dumps(
-        importlib.import_module("accelab.exercises.variant").variant_json(course, "A", "ann")))
+    published = json.loads(
+        accelab(
+            "variant", "--course", course, "--assignment", "A", "--student", "ann", "--json"
+        ).stdout
+    )
+    assert published == json.loads(
+        json.dumps(
+            importlib.import_module("accelab.exercises.variant").variant_json(course, "A", "ann")
+        )
+    )
     units = {a["name"]: a["unit"] for a in published["answers"]}
     for s in HONEST:
         submit(course, "A", s, outside(course, s))
     for name, make in ATTACKS.items():
         code, edit = make(course, units, None)
         submit(course, "A", name, code, edit=edit)
-    submit(course, "A", "stranger", outside(course, "stranger"))        # not on the roster
+    submit(course, "A", "stranger", outside(course, "stranger"))  # not on the roster
     late = submit(course, "A", "late", outside(course, "late"))
     with open(os.path.join(os.path.dirname(late), "timestamp.txt"), "w") as fh:
         fh.write("2040-01-02 10:00:00.000000 UTC")
     os.makedirs(os.path.join(course, "submitted", "broken", "A"))
     with open(os.path.join(course, "submitted", "broken", "A", "A.ipynb"), "w") as fh:
-        fh.write('{"cells": [ ' + SECRET)      # as if collect had copied a secret file
+        fh.write('{"cells": [ ' + SECRET)  # as if collect had copied a secret file
     os.makedirs(os.path.join(course, "submitted", "linked", "A"))
-    os.symlink(os.path.join(course, "nbgrader_config.py"),
-               os.path.join(course, "submitted", "linked", "A", "A.ipynb"))
+    os.symlink(
+        os.path.join(course, "nbgrader_config.py"),
+        os.path.join(course, "submitted", "linked", "A", "A.ipynb"),
+    )
     huge = submit(course, "A", "huge", outside(course, "huge"))
-    nb = nbformat.read(huge, as_version=4)      # 60 MB of text that would be read in full
+    nb = nbformat.read(huge, as_version=4)  # 60 MB of text that would be read in full
     nb.cells.append(nbformat.v4.new_markdown_cell("x" * 60_000_000))
     nbformat.write(nb, huge)
     before = course_snapshot(course)
     env = dict(os.environ, ACCELAB_TEST_SECRET=SECRET)
     start = time.monotonic()
-    proc = accelab("grade", "--course", course, "--assignment", "A", "--jobs", "2", "--quiet",
-                   env=env, check=False)
+    proc = accelab(
+        "grade",
+        "--course",
+        course,
+        "--assignment",
+        "A",
+        "--jobs",
+        "2",
+        "--quiet",
+        env=env,
+        check=False,
+    )
     seconds = time.monotonic() - start
-    print(f"\naccelab grade: {len(os.listdir(os.path.join(course, 'submitted')))} submissions "
-          f"in {seconds:.1f} s\n{proc.stdout[-600:]}")
-    time.sleep(5)     # long enough for a process that outlived its notebook to act
+    print(
+        f"\naccelab grade: {len(os.listdir(os.path.join(course, 'submitted')))} submissions "
+        f"in {seconds:.1f} s\n{proc.stdout[-600:]}"
+    )
+    time.sleep(5)  # long enough for a process that outlived its notebook to act
     with open(os.path.join(course, "grades_A.csv")) as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
-    return {"course": course, "rows": rows, "proc": proc, "before": before, "units": units,
-            "seconds": seconds, "names": question_names(course, "A")}
+    return {
+        "course": course,
+        "rows": rows,
+        "proc": proc,
+        "before": before,
+        "units": units,
+        "seconds": seconds,
+        "names": question_names(course, "A"),
+    }
 
 
 def score(g, student):
@@ -417,6 +495,7 @@ def feedback_text(g, student):
 
 # ---- the honest and the outside check -------------------------------------------------------
 
+
 def test_outside_check_gets_full_marks(graded):
     n = len(graded["names"])
     for s in HONEST:
@@ -436,6 +515,7 @@ def test_another_students_answers_get_zero_and_say_whose(graded):
 
 
 # ---- one test per attack ----------------------------------------------------------------------
+
 
 def test_solution_from_the_notebook_gets_nothing(graded):
     assert total(graded, "solution") == 0.0
@@ -458,7 +538,7 @@ def test_course_files_and_other_processes_are_invisible(graded):
     assert SECRET not in text and SECRET not in feedback_text(graded, "read_course")
     assert "SQLite format" not in text and "BEGIN SOLUTION" not in text
     assert not os.path.exists(os.path.join(graded["course"], "source", "A", "owned.txt"))
-    assert total(graded, "read_course") == len(graded["names"])   # its own answers still count
+    assert total(graded, "read_course") == len(graded["names"])  # its own answers still count
 
 
 def test_nothing_outside_a_submission_changed(graded):
@@ -470,6 +550,7 @@ def test_a_process_that_outlives_its_notebook_is_gone_and_did_nothing(graded):
     assert total(graded, "background_gradebook") == len(graded["names"])
     # the gradebook still holds the honest students' full marks (read again after the wait)
     from accelab.exercises.grader.gradetable import rows_of
+
     _, rows = rows_of(graded["course"], "A")
     for r in rows:
         if r["student"] in HONEST:
@@ -491,8 +572,9 @@ def test_a_loop_that_ignores_interrupts_costs_only_its_answer(graded):
 
 
 def test_the_whole_submission_is_time_limited(graded):
-    outcome = json.load(open(os.path.join(graded["course"], ".accelab", "outcomes", "A",
-                                          "sleepy.json")))
+    outcome = json.load(
+        open(os.path.join(graded["course"], ".accelab", "outcomes", "A", "sleepy.json"))
+    )
     assert outcome["seconds"] <= TOTAL_SECONDS + 5
     assert "ran out" in feedback_text(graded, "sleepy")
 
@@ -514,8 +596,10 @@ def test_printing_100_mb_is_cut(graded):
     assert total(graded, "print_100mb") >= len(graded["names"]) - 1
     path = os.path.join(graded["course"], "autograded", "print_100mb", "A", "A.ipynb")
     assert os.path.getsize(path) < 2_000_000
-    assert os.path.getsize(os.path.join(graded["course"], "feedback", "print_100mb", "A",
-                                        "A.html")) < 3_000_000
+    assert (
+        os.path.getsize(os.path.join(graded["course"], "feedback", "print_100mb", "A", "A.html"))
+        < 3_000_000
+    )
 
 
 def test_forged_cell_metadata_earns_nothing(graded):
@@ -526,6 +610,7 @@ def test_forged_cell_metadata_earns_nothing(graded):
     notes = graded["rows"]["forged_metadata"]["notes"]
     assert "metadata of 11 cell(s) was changed" in notes and "bonus (not graded)" in notes, notes
     from nbgrader.api import Gradebook
+
     db = "sqlite:///" + os.path.join(graded["course"], "gradebook.db")
     with Gradebook(db, course_id="attacks") as gb:
         sub = gb.find_submission("A", "forged_metadata")
@@ -534,22 +619,30 @@ def test_forged_cell_metadata_earns_nothing(graded):
 
 def test_a_students_html_never_runs_in_the_instructors_pages(graded):
     assert total(graded, "script_for_the_instructor") == len(graded["names"])
-    html = open(os.path.join(graded["course"], "feedback", "script_for_the_instructor", "A",
-                             "A.html")).read()
-    assert "accelabOwned" in html      # what the student wrote is shown, as text
+    html = open(
+        os.path.join(graded["course"], "feedback", "script_for_the_instructor", "A", "A.html")
+    ).read()
+    assert "accelabOwned" in html  # what the student wrote is shown, as text
     for live in ("<script>window.accelabOwned", "<img src=x onerror", 'href="javascript:'):
         assert live not in html, live
     # formgrader renders the autograded notebook with the same markdown filter
     from nbconvert.filters.markdown import markdown2html
-    nb = nbformat.read(os.path.join(graded["course"], "autograded", "script_for_the_instructor",
-                                    "A", "A.ipynb"), as_version=4)
-    shown = "".join(markdown2html(c.source) for c in nb.cells if c.cell_type != "code"
-                    and not c.metadata.get("nbgrader", {}).get("locked"))
+
+    nb = nbformat.read(
+        os.path.join(graded["course"], "autograded", "script_for_the_instructor", "A", "A.ipynb"),
+        as_version=4,
+    )
+    shown = "".join(
+        markdown2html(c.source)
+        for c in nb.cells
+        if c.cell_type != "code" and not c.metadata.get("nbgrader", {}).get("locked")
+    )
     assert "accelabOwned" in shown and "<script>window" not in shown
     assert all(c.cell_type != "raw" for c in nb.cells)
 
 
 # ---- the instructor's side -------------------------------------------------------------------
+
 
 def test_csv_covers_the_roster_and_the_submitters(graded):
     rows = graded["rows"]
@@ -589,8 +682,13 @@ def test_feedback_never_shows_an_expected_value(graded):
     spec = read_spec(graded["course"], "A")
     first = graded["names"][0]
     # the answers each of them did not give (its own right values are in its own cells)
-    for student, names in (("copy_alice", None), ("patch_checks", None), ("solution", None),
-                           ("exit_first", [first]), ("key_from_imports", None)):
+    for student, names in (
+        ("copy_alice", None),
+        ("patch_checks", None),
+        ("solution", None),
+        ("exit_first", [first]),
+        ("key_from_imports", None),
+    ):
         html = feedback_text(graded, student)
         assert html
         # an embedded image's base64 text is no number shown (its letters may hold any digits)
@@ -604,27 +702,32 @@ def test_feedback_never_shows_an_expected_value(graded):
                 for text in (repr(value), f"{value:.6g}", f"{value:.5g}", f"{value:.4g}"):
                     pattern = r"(?<![\w.])" + re.escape(text) + r"(?![\w])"
                     found = re.search(pattern, html)
-                    assert not found, (student, name, text,
-                                       html[max(0, found.start() - 300):found.end() + 100])
+                    assert not found, (
+                        student,
+                        name,
+                        text,
+                        html[max(0, found.start() - 300) : found.end() + 100],
+                    )
 
 
 def test_grading_again_gives_the_same_grades_and_one_student_can_be_regraded(graded):
     course = graded["course"]
-    proc = accelab("grade", "--course", course, "--assignment", "A", "--student", "ann",
-                   "--quiet", check=False)
+    proc = accelab(
+        "grade", "--course", course, "--assignment", "A", "--student", "ann", "--quiet", check=False
+    )
     assert proc.returncode == 0, proc.stderr
     with open(os.path.join(course, "grades_A.csv")) as fh:
         again = {r["student"]: r for r in csv.DictReader(fh)}
     assert again == graded["rows"]
-    proc = accelab("grade", "--course", course, "--assignment", "A", "--new", "--quiet",
-                   check=False)
+    proc = accelab(
+        "grade", "--course", course, "--assignment", "A", "--new", "--quiet", check=False
+    )
     assert "0 submission(s) graded" in proc.stdout, proc.stdout[-500:]
 
 
 def test_assign_refuses_an_assignment_with_submissions_unless_forced(graded):
     course = graded["course"]
-    proc = accelab("assign", "--course", course, "--assignment", "A", "--units", "SI",
-                   check=False)
+    proc = accelab("assign", "--course", course, "--assignment", "A", "--units", "SI", check=False)
     assert proc.returncode == 2 and "already has" in proc.stderr and "--force" in proc.stderr
     assert "Traceback" not in proc.stderr
 
@@ -633,6 +736,7 @@ def test_the_csv_never_hands_a_spreadsheet_a_formula():
     """A student id or note taken from a submission may begin with "=" (the
     exchange takes the id from the student's own environment)."""
     from accelab.exercises.grader.gradetable import _cell_text
+
     assert _cell_text('=HYPERLINK("http://x", "ok")') == '\'=HYPERLINK("http://x", "ok")'
     assert [_cell_text(t) for t in ("+1", "-x", "@SUM(A1)")] == ["'+1", "'-x", "'@SUM(A1)"]
     assert _cell_text("ann") == "ann" and _cell_text(-1.5) == -1.5 and _cell_text("") == ""

@@ -5,8 +5,8 @@ import math
 
 import pytest
 
-from accelab.exercises.student.answers import Asked, MISSING, describe, read
 from accelab.exercises.grader.judge import judge
+from accelab.exercises.student.answers import MISSING, Asked, describe, read
 from accelab.solver.units import Q_, ureg
 
 ACC = Asked("A_B_mag", "in/s^2", "magnitude")
@@ -15,18 +15,25 @@ ANG = Asked("A_B_ang", "deg", "direction", kind="angle")
 QTY = Asked("A_BA_mag", "in/s^2", "with unit", quantity_required=True)
 CHOICE = Asked("verdict", "", "judge", kind="choice", choices=("gentle", "strong"))
 OMEGA = Asked("omega3", "rad/s", "angular velocity")
-EXPECTED = 100 * 0.0254   # 100 in/s^2 in SI
+EXPECTED = 100 * 0.0254  # 100 in/s^2 in SI
 
 
 def grade(asked, value, expected, tolerance=0.01, angle_tolerance=1.0):
     return judge(asked, describe(value), expected, tolerance, angle_tolerance, ureg)
 
 
-
-
-@pytest.mark.parametrize("value, ok", [
-    (100.0, True), (100.9, True), (101.1, False), (Q_(100, "in/s^2"), True),
-    (Q_(2.54, "m/s^2"), True), (Q_(8.3333, "ft/s^2"), True), (Q_(2540, "mm/s^2"), True)])
+@pytest.mark.parametrize(
+    "value, ok",
+    [
+        (100.0, True),
+        (100.9, True),
+        (101.1, False),
+        (Q_(100, "in/s^2"), True),
+        (Q_(2.54, "m/s^2"), True),
+        (Q_(8.3333, "ft/s^2"), True),
+        (Q_(2540, "mm/s^2"), True),
+    ],
+)
 def test_value_within_relative_tolerance_in_any_unit(value, ok):
     assert grade(ACC, value, EXPECTED).ok is ok
 
@@ -41,11 +48,11 @@ def test_wrong_dimension_gets_nothing_and_names_both_dimensions():
 def test_sign_error_hint_and_units_hint():
     r = grade(SIGNED, Q_(-5.0, "rad/s^2"), 5.0)
     assert not r.ok and "sense of rotation" in r.message
-    r = grade(ACC, 2.54, EXPECTED)          # bare SI number where in/s^2 is asked
+    r = grade(ACC, 2.54, EXPECTED)  # bare SI number where in/s^2 is asked
     assert not r.ok and "m/s²" in r.message
     r = grade(ANG, -90.0 + 180.0, math.radians(-90.0))
     assert not r.ok and "opposite way" in r.message
-    r = grade(ANG, math.radians(120.0), math.radians(120.0))   # radians typed as degrees
+    r = grade(ANG, math.radians(120.0), math.radians(120.0))  # radians typed as degrees
     assert not r.ok and "radians" in r.message
 
 
@@ -57,8 +64,8 @@ def test_negative_magnitude_gets_a_magnitude_hint():
 def test_angles_compare_modulo_a_turn_within_the_stated_band():
     assert grade(ANG, 270.0, math.radians(-90.0)).ok
     assert grade(ANG, Q_(-math.pi / 2, "rad"), math.radians(270.0)).ok
-    assert grade(ANG, -89.1, math.radians(-90.0)).ok              # 0.9 deg off: inside 1 deg
-    assert not grade(ANG, -88.8, math.radians(-90.0)).ok          # 1.2 deg off
+    assert grade(ANG, -89.1, math.radians(-90.0)).ok  # 0.9 deg off: inside 1 deg
+    assert not grade(ANG, -88.8, math.radians(-90.0)).ok  # 1.2 deg off
     assert not grade(ANG, -86.0, math.radians(-90.0)).ok
     # the band is what the statement says, not the relative tolerance times 180 deg
     assert not grade(ANG, -87.0, math.radians(-90.0), tolerance=0.05).ok
@@ -79,12 +86,14 @@ def test_format_problems():
 
 def test_quantities_of_another_registry_are_accepted():
     import pint
+
     other = pint.UnitRegistry()
     assert grade(ACC, other.Quantity(100, "inch / second ** 2"), EXPECTED).ok
 
 
 def test_messages_never_show_the_expected_value_and_nothing_goes_to_stderr(capfd):
     import warnings
+
     expected = 123.456789
     for value in (1.0, -expected, Q_(1, "m"), "x", float("nan")):
         with warnings.catch_warnings():
@@ -94,10 +103,8 @@ def test_messages_never_show_the_expected_value_and_nothing_goes_to_stderr(capfd
     assert capfd.readouterr().err == ""
 
 
-
-
 def test_units_that_mean_two_things_are_refused_with_both_readings():
-    expected = 2 * math.pi * 10 / (2 * math.pi)     # 10 rad/s
+    expected = 2 * math.pi * 10 / (2 * math.pi)  # 10 rad/s
     for unit in ("Hz", "1/s"):
         r = grade(OMEGA, Q_(10, unit), 10.0)
         assert not r.ok and "cycles or radians" in r.message and "rpm" in r.message
@@ -115,14 +122,17 @@ def test_describe_reports_plain_data_and_survives_hostile_objects():
         @property
         def magnitude(self):
             raise RuntimeError("boom")
+
         units = "m"
+
     assert describe(Evil())["state"] == "unreadable"
     assert describe(MISSING) == {"state": "missing"}
     assert describe(True)["state"] == "other"
     assert describe("x" * 10000)["text"] == "x" * 200
-    assert describe(10 ** 400)["nonfinite"] == "overflow"
+    assert describe(10**400)["nonfinite"] == "overflow"
     assert describe(Q_(1 + 2j, "m"))["complex"]
     import numpy as np
+
     assert describe(np.float32(2.5)) == {"state": "number", "magnitude": 2.5}
     assert describe(np.array([1.0, 2.0]))["state"] == "array"
     assert "inch" in describe(Q_(3, "in"))["units"]
@@ -140,23 +150,30 @@ def test_reading_gives_si_once():
 # ---- a report is the student's: the kernel can send anything ------------------------
 
 FORGED = [
-    {}, {"state": None}, {"state": ["number"]}, {"state": "number"},
-    {"state": "number", "magnitude": [1, 2]}, {"state": "number", "magnitude": {"a": 1}},
-    {"state": "number", "magnitude": "100"}, {"state": "number", "magnitude": True},
-    {"state": "number", "magnitude": 10 ** 400}, {"state": "number", "magnitude": None},
+    {},
+    {"state": None},
+    {"state": ["number"]},
+    {"state": "number"},
+    {"state": "number", "magnitude": [1, 2]},
+    {"state": "number", "magnitude": {"a": 1}},
+    {"state": "number", "magnitude": "100"},
+    {"state": "number", "magnitude": True},
+    {"state": "number", "magnitude": 10**400},
+    {"state": "number", "magnitude": None},
     {"state": "quantity", "magnitude": 100.0, "units": ["in/s^2"]},
     {"state": "quantity", "magnitude": 100.0, "units": "in/s^2" * 10000},
     {"state": "quantity", "magnitude": 100.0, "units": {"in": 1}},
-    {"state": "other", "type": "x" * 1_000_000}, {"state": "other", "type": [[["deep"]]]},
+    {"state": "other", "type": "x" * 1_000_000},
+    {"state": "other", "type": [[["deep"]]]},
     {"state": "number", "magnitude": 1.0, "nonfinite": "z" * 1_000_000},
-    {"state": "text", "text": ["gentle"]}, {"state": "text", "text": "g" * 1_000_000},
+    {"state": "text", "text": ["gentle"]},
+    {"state": "text", "text": "g" * 1_000_000},
 ]
 
 
 @pytest.mark.parametrize("report", FORGED, ids=range(len(FORGED)))
 @pytest.mark.parametrize("asked", [ACC, ANG, QTY, CHOICE], ids=lambda a: a.name)
 def test_a_forged_report_is_refused_briefly_and_never_raises(asked, report):
-    verdict = judge(asked, report, EXPECTED if asked is not CHOICE else "gentle", 0.01, 1.0,
-                    ureg)
+    verdict = judge(asked, report, EXPECTED if asked is not CHOICE else "gentle", 0.01, 1.0, ureg)
     assert not verdict.ok and verdict.credit == 0
     assert len(verdict.message) < 600, verdict.message[:700]

@@ -21,8 +21,7 @@ def test_practice_accepts_the_right_answer_and_refuses_a_wrong_one(family, capsy
             wrong = right * 1.5
         assert not p.check(name, wrong)
         out = capsys.readouterr().out
-        assert "right" in out and ("not within" in out or "judgement" in out
-                                   or "direction" in out)
+        assert "right" in out and ("not within" in out or "judgement" in out or "direction" in out)
     assert practice(family, seed=11).problem.given == p.problem.given
     assert "not graded" in p._repr_markdown_()
 
@@ -39,8 +38,11 @@ def test_practice_says_why_not():
 
 def test_practice_values_are_never_a_graded_variants():
     spec = make_spec("mech101", "A", sorted(FAMILIES))
-    graded = {(p.family, tuple(sorted(p.given.items())))
-              for s in ("ann", "bob", "cy", "di", "ed") for p in build_variant(spec, s).problems}
+    graded = {
+        (p.family, tuple(sorted(p.given.items())))
+        for s in ("ann", "bob", "cy", "di", "ed")
+        for p in build_variant(spec, s).problems
+    }
     for family in FAMILIES:
         for seed in range(8):
             p = practice(family, seed=seed)

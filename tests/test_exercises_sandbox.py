@@ -10,15 +10,36 @@ from accelab.exercises.grader.plan import Step
 from accelab.exercises.grader.sandbox import check_sandbox, sandbox
 from accelab.exercises.grader.supervisor import Limits, run_plan
 
-STATEMENT = {"student": "bob", "course": "c", "assignment": "A", "units": "US",
-             "tolerance": 0.01, "angle_tolerance": 1.0,
-             "problems": [{"family": "rotation", "title": "t", "statement": "s",
-                           "given": {"p": "2 in"},
-                           "asked": [{"name": "x", "unit": "in/s^2", "description": "d",
-                                      "kind": "number", "choices": [],
-                                      "quantity_required": False}]}]}
-LOAD = ("from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
-        "v = load_variant({}, student_id())\n")
+STATEMENT = {
+    "student": "bob",
+    "course": "c",
+    "assignment": "A",
+    "units": "US",
+    "tolerance": 0.01,
+    "angle_tolerance": 1.0,
+    "problems": [
+        {
+            "family": "rotation",
+            "title": "t",
+            "statement": "s",
+            "given": {"p": "2 in"},
+            "asked": [
+                {
+                    "name": "x",
+                    "unit": "in/s^2",
+                    "description": "d",
+                    "kind": "number",
+                    "choices": [],
+                    "quantity_required": False,
+                }
+            ],
+        }
+    ],
+}
+LOAD = (
+    "from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
+    "v = load_variant({}, student_id())\n"
+)
 
 
 @pytest.fixture(scope="module")
@@ -31,17 +52,21 @@ def command():
 def run(command, *sources, report=("x",), **limits):
     steps = [Step(k, "code", source) for k, source in enumerate(sources)]
     steps += [Step(len(steps) + k, "report", name=name) for k, name in enumerate(report)]
-    return run_plan(steps, STATEMENT, command, Limits(**{"cell_seconds": 4,
-                                                         "total_seconds": 20, **limits}))
+    return run_plan(
+        steps, STATEMENT, command, Limits(**{"cell_seconds": 4, "total_seconds": 20, **limits})
+    )
 
 
 def text(result):
-    return "".join(o.get("text", "") + o.get("evalue", "") + str(o.get("data", ""))
-                   for c in result.cells.values() for o in c.outputs)
+    return "".join(
+        o.get("text", "") + o.get("evalue", "") + str(o.get("data", ""))
+        for c in result.cells.values()
+        for o in c.outputs
+    )
 
 
 def test_the_sandbox_sees_only_what_a_notebook_needs(command):
-    probe = f'''
+    probe = f"""
 import os, socket, sys
 print("uid", os.getuid(), "pids", sorted(p for p in os.listdir("/proc") if p.isdigit()))
 print("env", sorted(os.environ))
@@ -56,19 +81,18 @@ from accelab import exercises
 print("exercises", sorted(os.listdir(os.path.dirname(exercises.__file__))))
 print("student", sorted(f for f in os.listdir(os.path.dirname(exercises.__file__) + "/student")
                         if f.endswith(".py")))
-'''
+"""
     r = run(command, LOAD, probe, "x = Q_(3, 'in/s^2')")
     out = text(r)
     assert "uid 0" not in out and "NETWORK" not in out and "no network" in out
     assert "exercises ['__init__.py', 'student']" in out
     assert "student ['__init__.py', 'answers.py', 'kernel.py', 'runtime.py']" in out
-    assert "True" not in out.split("env")[1]         # no test folder, no /etc/shadow, no /root
+    assert "True" not in out.split("env")[1]  # no test folder, no /etc/shadow, no /root
     env = out.split("env ")[1].split("\n")[0]
     assert "ACCELAB_STUDENT_ID" in env and "SECRET" not in env and "USER" not in env
     pids = out.split("pids ")[1].split("\n")[0]
-    assert len(eval(pids)) <= 4                        # its own processes only
-    assert r.reports["x"] == {"state": "quantity", "magnitude": 3.0,
-                              "units": "inch / second ** 2"}
+    assert len(eval(pids)) <= 4  # its own processes only
+    assert r.reports["x"] == {"state": "quantity", "magnitude": 3.0, "units": "inch / second ** 2"}
 
 
 def test_only_the_submitters_values_can_be_loaded(command):
@@ -82,25 +106,36 @@ def test_a_dead_kernel_is_restarted_and_earlier_cells_replayed(command):
     statuses = [r.cells[k].status for k in sorted(r.cells)]
     assert statuses[:4] == ["ok", "ok", "died", "ok"] and r.starts == 2
     assert "exit status 7" in r.cells[2].message
-    assert r.reports["x"]["magnitude"] == 5.0          # replayed after the restart
+    assert r.reports["x"]["magnitude"] == 5.0  # replayed after the restart
 
 
 def test_limits_hold(command):
-    r = run(command, LOAD,
-            "import resource\nprint(resource.getrlimit(resource.RLIMIT_NPROC), "
-            "resource.getrlimit(resource.RLIMIT_AS))",
-            "open('/tmp/big', 'wb').write(b'x' * (64 << 20))",
-            "import time\ntime.sleep(30)", "x = 1.0", cell_seconds=2)
+    r = run(
+        command,
+        LOAD,
+        "import resource\nprint(resource.getrlimit(resource.RLIMIT_NPROC), "
+        "resource.getrlimit(resource.RLIMIT_AS))",
+        "open('/tmp/big', 'wb').write(b'x' * (64 << 20))",
+        "import time\ntime.sleep(30)",
+        "x = 1.0",
+        cell_seconds=2,
+    )
     out = text(r)
     assert "(64, 64)" in out
-    assert r.cells[2].status == "error"                # file size / disk limit
+    assert r.cells[2].status == "error"  # file size / disk limit
     assert r.cells[3].status == "timeout" and "2 s" in r.cells[3].message
     assert r.reports["x"]["magnitude"] == 1.0
 
 
 def test_the_whole_run_is_time_limited(command):
-    r = run(command, LOAD, *["import time\ntime.sleep(1.5)"] * 10, "x = 1.0",
-            cell_seconds=2, total_seconds=5)
+    r = run(
+        command,
+        LOAD,
+        *["import time\ntime.sleep(1.5)"] * 10,
+        "x = 1.0",
+        cell_seconds=2,
+        total_seconds=5,
+    )
     assert r.seconds < 8
     assert "x" not in r.reports
     assert any(c.status == "not_run" for c in r.cells.values())
@@ -115,11 +150,14 @@ def test_a_kernel_that_writes_garbage_on_the_protocol_costs_its_cell(command):
 FRAME = "import os, sys, struct\nos.write(int(sys.argv[2]), struct.pack('>I', len(body)) + body)"
 
 
-@pytest.mark.parametrize("body", [
-    "b'[' * 1_000_000",                                         # JSON nested too deep to read
-    "b'{\"status\": \"ok\", \"outputs\": 5, \"refused\": 7, \"values\": [1]}'",  # odd shapes
-    "b'{\"status\": \"error\", \"outputs\": [[[]]], \"ename\": {}, \"evalue\": []}'",
-])
+@pytest.mark.parametrize(
+    "body",
+    [
+        "b'[' * 1_000_000",  # JSON nested too deep to read
+        'b\'{"status": "ok", "outputs": 5, "refused": 7, "values": [1]}\'',  # odd shapes
+        'b\'{"status": "error", "outputs": [[[]]], "ename": {}, "evalue": []}\'',
+    ],
+)
 def test_a_forged_reply_costs_only_the_submission_never_the_grader(command, body):
     """The kernel is the student's: a reply of any shape, sent in place of the real
     one, is that cell's failure (or garbles that student's own reports) and

@@ -22,10 +22,19 @@ import time
 import numpy as np
 import pint
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from accelab.solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, Q_,
-                    RotatingPoint, SliderCrank, VectorLoopLinkage)
+from accelab.solver import (
+    Q_,
+    FourBar,
+    GearedFiveBar,
+    InvalidInput,
+    InvertedSliderCrank,
+    RotatingPoint,
+    SliderCrank,
+    VectorLoopLinkage,
+)
 from accelab.solver.batch import solve_case
 from accelab.solver.errors import AccelabError
 from accelab.solver.units import MAX_TEXT, parse_quantity
@@ -38,18 +47,35 @@ BASE = {
     "fivebar": dict(a=1.0, b=4.0, c=4.0, d=1.0, f=3.0),
     "rotation": dict(p=4.0),
 }
-EXTRA = {"fourbar": {"p": "3 in", "delta3": "30 deg"}, "invertedslidercrank": {"gamma": "90 deg"},
-         "fivebar": {"lam": -2, "phi": "30 deg"}}
-ANGLES = {"fourbar": ("theta3", "theta4"), "slidercrank": ("theta3",),
-          "invertedslidercrank": ("theta3", "theta4"), "fivebar": ("theta3", "theta4", "theta5"),
-          "rotation": ()}
-LENGTHS = {"slidercrank": ("d",), "invertedslidercrank": ("b",), "fourbar": ("R_B",),
-           "fivebar": ("R_C",), "rotation": ("R",)}
+EXTRA = {
+    "fourbar": {"p": "3 in", "delta3": "30 deg"},
+    "invertedslidercrank": {"gamma": "90 deg"},
+    "fivebar": {"lam": -2, "phi": "30 deg"},
+}
+ANGLES = {
+    "fourbar": ("theta3", "theta4"),
+    "slidercrank": ("theta3",),
+    "invertedslidercrank": ("theta3", "theta4"),
+    "fivebar": ("theta3", "theta4", "theta5"),
+    "rotation": (),
+}
+LENGTHS = {
+    "slidercrank": ("d",),
+    "invertedslidercrank": ("b",),
+    "fourbar": ("R_B",),
+    "fivebar": ("R_C",),
+    "rotation": ("R",),
+}
 
 
 def case(mechanism, factor=1.0, unit="in", **motion):
-    c = {"mechanism": mechanism, "theta2": "30 deg", "omega2": "10 rad/s",
-         "alpha2": "-5 rad/s^2", **EXTRA.get(mechanism, {})}
+    c = {
+        "mechanism": mechanism,
+        "theta2": "30 deg",
+        "omega2": "10 rad/s",
+        "alpha2": "-5 rad/s^2",
+        **EXTRA.get(mechanism, {}),
+    }
     c.update({k: f"{v * factor!r} {unit}" for k, v in BASE[mechanism].items()})
     c.update(motion)
     return c
@@ -86,8 +112,12 @@ def test_powers_of_two_give_the_same_angles_bit_for_bit(mechanism, exponent):
     for k in ANGLES[mechanism]:
         assert scaled[k] == base[k], (k, exponent)
     for k in LENGTHS[mechanism]:
-        assert np.allclose(np.asarray(scaled[k]) / math.ldexp(1.0, exponent),
-                           np.asarray(base[k]), rtol=1e-15, atol=0), (k, exponent)
+        assert np.allclose(
+            np.asarray(scaled[k]) / math.ldexp(1.0, exponent),
+            np.asarray(base[k]),
+            rtol=1e-15,
+            atol=0,
+        ), (k, exponent)
 
 
 @pytest.mark.parametrize("mechanism", sorted(BASE))
@@ -95,14 +125,14 @@ def test_powers_of_two_give_the_same_angles_bit_for_bit(mechanism, exponent):
 @given(exponent=st.integers(-300, 300))
 def test_any_decimal_scale_gives_the_same_angles(mechanism, exponent):
     base = solve_case(case(mechanism))
-    scaled = right_or_refused(solve_case(case(mechanism, 10.0 ** exponent)))
+    scaled = right_or_refused(solve_case(case(mechanism, 10.0**exponent)))
     if scaled["ok"]:
         for k in ANGLES[mechanism]:
             assert angle_gap(scaled[k], base[k]) < 1e-13, (k, exponent)
         for k in ("omega3", "alpha3", "jerk3"):
             if k in base:
                 assert scaled[k] == pytest.approx(base[k], rel=1e-12), (k, exponent)
-    else:   # only where the points' accelerations leave float64 (lengths past ~1e306 m)
+    else:  # only where the points' accelerations leave float64 (lengths past ~1e306 m)
         assert exponent > 290 and "overflow" in scaled["message"], scaled
 
 
@@ -112,8 +142,11 @@ def test_the_issue_scales_and_rates():
         for factor in (1e80, 1e-90, 1e150, 1e-160, 1e200, 1e-200):
             r = right_or_refused(solve_case(case(mechanism, factor)))
             assert r["ok"], (mechanism, factor, r)
-        for motion in ({"omega2": "1e200 rad/s"}, {"alpha2": "1e308 rad/s^2"},
-                       {"omega2": "1e-200 rad/s"}):
+        for motion in (
+            {"omega2": "1e200 rad/s"},
+            {"alpha2": "1e308 rad/s^2"},
+            {"omega2": "1e-200 rad/s"},
+        ):
             r = right_or_refused(solve_case(case(mechanism, **motion)))
             big = "1e200" in motion.get("omega2", "") or "1e308" in motion.get("alpha2", "")
             assert r["ok"] != big, (mechanism, motion, r)
@@ -122,12 +155,25 @@ def test_the_issue_scales_and_rates():
 
 
 @settings(max_examples=150, deadline=None)
-@given(mechanism=st.sampled_from(sorted(BASE)), scale=st.integers(-305, 305),
-       omega=st.integers(-310, 310), alpha=st.integers(-310, 310),
-       theta=st.floats(-1e6, 1e6, allow_nan=False))
+@given(
+    mechanism=st.sampled_from(sorted(BASE)),
+    scale=st.integers(-305, 305),
+    omega=st.integers(-310, 310),
+    alpha=st.integers(-310, 310),
+    theta=st.floats(-1e6, 1e6, allow_nan=False),
+)
 def test_random_scales_and_rates_are_answered_or_refused(mechanism, scale, omega, alpha, theta):
-    r = right_or_refused(solve_case(case(mechanism, 10.0 ** scale, theta2=f"{theta!r} deg",
-                                         omega2=f"1e{omega} rad/s", alpha2=f"-1e{alpha} rad/s^2")))
+    r = right_or_refused(
+        solve_case(
+            case(
+                mechanism,
+                10.0**scale,
+                theta2=f"{theta!r} deg",
+                omega2=f"1e{omega} rad/s",
+                alpha2=f"-1e{alpha} rad/s^2",
+            )
+        )
+    )
     if r["ok"]:
         for k, v in r.items():
             assert k in ("ok", "circuit") or np.all(np.isfinite(v)), k
@@ -142,24 +188,28 @@ def test_loops_are_scale_free():
             for key in ("length", "guess"):
                 if isinstance(v.get(key), str) and v[key].endswith(" in"):
                     v[key] = f"{float(v[key][:-3]) * math.ldexp(1.0, exponent)!r} in"
-        r = right_or_refused(solve_case(dict(scaled, mechanism="loops", theta2="57 deg",
-                                             omega2="12 rad/s")))
+        r = right_or_refused(
+            solve_case(dict(scaled, mechanism="loops", theta2="57 deg", omega2="12 rad/s"))
+        )
         assert r["ok"], (exponent, r)
         for name, vec in base["vectors"].items():
             assert r["vectors"][name]["angle"] == vec["angle"], (exponent, name)
 
 
 # --- units with two readings --------------------------------------------------------------
-@pytest.mark.parametrize("field, text, words", [
-    ("omega2", "10 Hz", ["10 rad/s", "62.8319 rad/s", "rev/s"]),
-    ("omega2", "3 kHz", ["3000 rad/s", "rev/s"]),
-    ("alpha2", "5 Hz/s", ["rad/s^2", "rev/s^2"]),
-    ("lam", "30 deg", ["30", "0.523599", "plain number"]),
-    ("lam", "50 percent", ["50", "0.5", "plain number"]),
-    ("a", "30 deg", ["angle units", "deg"]),
-    ("theta2", "30", ["degrees or radians"]),
-    ("theta2", "30 percent", ["not angle units"]),
-])
+@pytest.mark.parametrize(
+    "field, text, words",
+    [
+        ("omega2", "10 Hz", ["10 rad/s", "62.8319 rad/s", "rev/s"]),
+        ("omega2", "3 kHz", ["3000 rad/s", "rev/s"]),
+        ("alpha2", "5 Hz/s", ["rad/s^2", "rev/s^2"]),
+        ("lam", "30 deg", ["30", "0.523599", "plain number"]),
+        ("lam", "50 percent", ["50", "0.5", "plain number"]),
+        ("a", "30 deg", ["angle units", "deg"]),
+        ("theta2", "30", ["degrees or radians"]),
+        ("theta2", "30 percent", ["not angle units"]),
+    ],
+)
 def test_units_that_mean_two_things_are_refused_with_both_readings(field, text, words):
     mechanism = "fivebar" if field == "lam" else "fourbar"
     r = right_or_refused(solve_case(case(mechanism, **{field: text})))
@@ -179,8 +229,9 @@ def test_the_grading_rule_is_the_same_function():
     """Exercises grade a student's text with the same rule (accelab.solver.units.parse_quantity)."""
     with pytest.raises(InvalidInput, match="two readings"):
         parse_quantity("10 Hz", "angular_velocity", "omega3")
-    assert parse_quantity("600 rpm", "angular_velocity", "omega3").m_as("rad/s") == \
-        pytest.approx(20 * math.pi)
+    assert parse_quantity("600 rpm", "angular_velocity", "omega3").m_as("rad/s") == pytest.approx(
+        20 * math.pi
+    )
 
 
 # --- every field in bounded time ----------------------------------------------------------
@@ -193,7 +244,7 @@ def test_any_text_in_any_field_is_read_or_refused_in_bounded_time(text):
         r = right_or_refused(solve_case(dict(case(mechanism), **{field: text})))
         assert time.perf_counter() - start < 0.5, (field, text)
         if not r["ok"] and len(text) > 40:
-            assert text not in r["message"]      # a long text is not echoed whole
+            assert text not in r["message"]  # a long text is not echoed whole
 
 
 def test_a_megabyte_field_is_refused_at_once():
@@ -203,9 +254,24 @@ def test_a_megabyte_field_is_refused_at_once():
     assert r["error"] == "invalid_input" and "1000000 characters" in r["message"]
 
 
-@pytest.mark.parametrize("text", ["9**9**9 m", "2**(9**9) m", "1e999 in", "-1e999 in",
-                                  "((((((((((((((((((((((((((((((((((((((( m", "1/0 m", "nan in",
-                                  "inf in", "2 in in", "", "   ", "\x00", "2 m\n3 m"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "9**9**9 m",
+        "2**(9**9) m",
+        "1e999 in",
+        "-1e999 in",
+        "((((((((((((((((((((((((((((((((((((((( m",
+        "1/0 m",
+        "nan in",
+        "inf in",
+        "2 in in",
+        "",
+        "   ",
+        "\x00",
+        "2 m\n3 m",
+    ],
+)
 def test_pathological_quantities_are_refused(text):
     start = time.perf_counter()
     r = right_or_refused(solve_case(case("fourbar", a=text)))
@@ -219,8 +285,10 @@ def test_any_mechanism_value_is_refused(value):
     assert r["error"] == "invalid_input" and len(r["message"]) < 300, r
 
 
-@pytest.mark.parametrize("value", [["2 in"], {"v": "2 in"}, None, True, 2, 2.5, [], "NaN",
-                                   float("nan"), float("inf"), 10 ** 400])
+@pytest.mark.parametrize(
+    "value",
+    [["2 in"], {"v": "2 in"}, None, True, 2, 2.5, [], "NaN", float("nan"), float("inf"), 10**400],
+)
 def test_any_field_value_is_refused_or_read(value):
     for field in ("a", "omega2", "lam", "circuit", "p"):
         mechanism = "fivebar" if field == "lam" else "fourbar"
@@ -228,41 +296,65 @@ def test_any_field_value_is_refused_or_read(value):
 
 
 @settings(max_examples=200, deadline=None)
-@given(st.recursive(st.none() | st.booleans() | st.floats() | st.integers() | st.text(max_size=20),
-                    lambda children: st.lists(children, max_size=4)
-                    | st.dictionaries(st.text(max_size=8), children, max_size=4), max_leaves=20))
+@given(
+    st.recursive(
+        st.none() | st.booleans() | st.floats() | st.integers() | st.text(max_size=20),
+        lambda children: (
+            st.lists(children, max_size=4)
+            | st.dictionaries(st.text(max_size=8), children, max_size=4)
+        ),
+        max_leaves=20,
+    )
+)
 def test_any_json_value_as_a_case_is_answered_or_refused(value):
-    for c in (value, {"mechanism": "fourbar", "a": value}, {"mechanism": "loops", "vectors": value},
-              {"mechanism": "loops", "vectors": {"R1": value}, "loops": value}):
+    for c in (
+        value,
+        {"mechanism": "fourbar", "a": value},
+        {"mechanism": "loops", "vectors": value},
+        {"mechanism": "loops", "vectors": {"R1": value}, "loops": value},
+    ):
         right_or_refused(solve_case(c))
 
 
 def test_long_follow_chains_and_many_vectors():
-    vectors = {"R1": {"length": "7 in", "angle": "0 deg"},
-               "R2": {"length": "2 in", "angle": "input"},
-               "R3": {"length": "6 in", "angle": "unknown", "guess": "90 deg"},
-               "R4": {"length": "9 in", "angle": "unknown", "guess": "130 deg"}}
+    vectors = {
+        "R1": {"length": "7 in", "angle": "0 deg"},
+        "R2": {"length": "2 in", "angle": "input"},
+        "R3": {"length": "6 in", "angle": "unknown", "guess": "90 deg"},
+        "R4": {"length": "9 in", "angle": "unknown", "guess": "130 deg"},
+    }
     prev = "R3"
     for i in range(190):
         vectors[f"F{i}"] = {"length": "1 in", "angle": {"follow": prev, "offset": "1 deg"}}
         prev = f"F{i}"
-    loops = {"mechanism": "loops", "vectors": vectors, "loops": ["R2 + R3 - R4 - R1"],
-             "points": {"P": "R2 + " + prev}, "theta2": "30 deg", "omega2": "10 rad/s"}
+    loops = {
+        "mechanism": "loops",
+        "vectors": vectors,
+        "loops": ["R2 + R3 - R4 - R1"],
+        "points": {"P": "R2 + " + prev},
+        "theta2": "30 deg",
+        "omega2": "10 rad/s",
+    }
     assert right_or_refused(solve_case(loops))["ok"]
     for i in range(190, 1000):
         vectors[f"F{i}"] = {"length": "1 in", "angle": {"follow": prev}}
         prev = f"F{i}"
     r = right_or_refused(solve_case(loops))
     assert r["error"] == "invalid_input" and "at most" in r["message"]
-    vectors = dict(list(vectors.items())[:4], L={"length": "1 in", "angle": {"follow": "M"}},
-                   M={"length": "1 in", "angle": {"follow": "L"}})
+    vectors = dict(
+        list(vectors.items())[:4],
+        L={"length": "1 in", "angle": {"follow": "M"}},
+        M={"length": "1 in", "angle": {"follow": "L"}},
+    )
     r = right_or_refused(solve_case(dict(loops, vectors=vectors, points={})))
     assert "loops back" in r["message"]
 
 
 def test_duplicate_keys_are_refused_not_the_last_winning(tmp_path):
-    text = ('[{"mechanism": "fourbar", "a": "2 in", "a": "3 in", "b": "6 in", "c": "9 in", '
-            '"d": "7 in", "theta2": "30 deg", "omega2": "10 rad/s"}]')
+    text = (
+        '[{"mechanism": "fourbar", "a": "2 in", "a": "3 in", "b": "6 in", "c": "9 in", '
+        '"d": "7 in", "theta2": "30 deg", "omega2": "10 rad/s"}]'
+    )
     p = run(["solve", "--cases", "-"], stdin=text)
     out = json.loads(p.stdout)
     assert p.returncode == 1 and out[0]["error"] == "invalid_input"
@@ -271,17 +363,31 @@ def test_duplicate_keys_are_refused_not_the_last_winning(tmp_path):
 
 # --- the command line ------------------------------------------------------------------------------
 def run(args, stdin=None, stdout=subprocess.PIPE):
-    p = subprocess.run([sys.executable, "-m", "accelab", *args], input=stdin, stdout=stdout,
-                       stderr=subprocess.PIPE, text=True, timeout=120)
+    p = subprocess.run(
+        [sys.executable, "-m", "accelab", *args],
+        input=stdin,
+        stdout=stdout,
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=120,
+    )
     assert "Traceback" not in p.stderr, p.stderr
     return p
 
 
-@pytest.mark.parametrize("content, code", [
-    ("[" * 100_000, 2), ("", 2), ("{not json", 2), ('{"a": 1}', 2), ("[1, 2]", 1),
-    ("\ufeff" + json.dumps([case("fourbar")]), 0), ('[{"mechanism": "fourbar", "a": NaN}]', 1),
-    ("[" + ",".join([json.dumps(case("fourbar"))] * 3) + "]", 0),
-])
+@pytest.mark.parametrize(
+    "content, code",
+    [
+        ("[" * 100_000, 2),
+        ("", 2),
+        ("{not json", 2),
+        ('{"a": 1}', 2),
+        ("[1, 2]", 1),
+        ("\ufeff" + json.dumps([case("fourbar")]), 0),
+        ('[{"mechanism": "fourbar", "a": NaN}]', 1),
+        ("[" + ",".join([json.dumps(case("fourbar"))] * 3) + "]", 0),
+    ],
+)
 def test_batch_files_exit_0_1_or_2_and_print_strict_json(tmp_path, content, code):
     path = tmp_path / "cases.json"
     path.write_text(content, encoding="utf-8")
@@ -302,14 +408,14 @@ def test_invalid_utf8_and_missing_files(tmp_path):
 
 
 def test_command_line_shapes():
-    values = ['a=2 in', 'b=6 in', 'c=9 in', 'd=7 in', 'theta2=30 deg', 'omega2=10 rad/s']
-    p = run(["solve", "fourbar", "--json", *values])         # options before name=value
+    values = ["a=2 in", "b=6 in", "c=9 in", "d=7 in", "theta2=30 deg", "omega2=10 rad/s"]
+    p = run(["solve", "fourbar", "--json", *values])  # options before name=value
     assert p.returncode == 0 and json.loads(p.stdout)["ok"]
     p = run(["solve", "--json", "fourbar", *values])
     assert p.returncode == 0 and json.loads(p.stdout)["condition"] > 0
-    p = run(["solve", "fourbar", "--cases", "x.json"])        # a mechanism and a file
+    p = run(["solve", "fourbar", "--cases", "x.json"])  # a mechanism and a file
     assert p.returncode == 2 and "not both" in p.stderr
-    p = run(["solve", "fourbar", *values, "a=3 in"])         # a name twice
+    p = run(["solve", "fourbar", *values, "a=3 in"])  # a name twice
     assert p.returncode == 2 and "twice" in p.stderr
     p = run(["solve", "fourbar", *values[:-1], "omega2=10 Hz"])
     assert p.returncode == 1 and "two readings" in p.stderr
@@ -323,21 +429,33 @@ def test_a_full_disk_and_a_closed_pipe_are_said_in_one_line(tmp_path):
     path = tmp_path / "cases.json"
     path.write_text(json.dumps([case("fourbar")] * 200))
     with open("/dev/full", "w") as full:
-        p = subprocess.run([sys.executable, "-m", "accelab", "solve", "--cases", str(path)],
-                           stdout=full, stderr=subprocess.PIPE, text=True, timeout=120)
+        p = subprocess.run(
+            [sys.executable, "-m", "accelab", "solve", "--cases", str(path)],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=120,
+        )
     assert p.returncode == 2 and "No space left" in p.stderr and "Traceback" not in p.stderr
-    p = subprocess.run(f"{sys.executable} -m accelab solve --cases {path} | head -c 10",
-                       shell=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                       timeout=120)
+    p = subprocess.run(
+        f"{sys.executable} -m accelab solve --cases {path} | head -c 10",
+        shell=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=120,
+    )
     assert p.stdout == '[{"ok": tr' and "Traceback" not in p.stderr and "Exception" not in p.stderr
 
 
 def test_bench_without_mpmath_says_what_to_install(tmp_path):
     """accelab bench where mpmath cannot be imported: one line, exit 2."""
-    code = ("import sys; sys.modules['mpmath'] = None; import importlib.util as u; "
-            "real = u.find_spec; u.find_spec = lambda n, *a: None if n == 'mpmath' else real(n, *a); "
-            "from accelab.cli import main; sys.exit(main(['bench', '--tiny', '--out', "
-            f"{str(tmp_path)!r}]))")
+    code = (
+        "import sys; sys.modules['mpmath'] = None; import importlib.util as u; "
+        "real = u.find_spec; u.find_spec = lambda n, *a: None if n == 'mpmath' else real(n, *a); "
+        "from accelab.cli import main; sys.exit(main(['bench', '--tiny', '--out', "
+        f"{str(tmp_path)!r}]))"
+    )
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert p.returncode == 2 and 'pip install -e ".[bench]"' in p.stderr
     assert "Traceback" not in p.stderr
@@ -363,8 +481,9 @@ def test_api_rough_edges_get_clear_errors():
     with pytest.raises(InvalidInput, match="complex"):
         FourBar(**FOURBAR).solve(theta2=Q_(np.array([30, 40 + 1j]), "deg"), omega2="10 rad/s")
     with pytest.raises(InvalidInput, match="masked"):
-        FourBar(**FOURBAR).solve(theta2=Q_(np.ma.masked_array([30.0, 40.0], [0, 1]), "deg"),
-                                 omega2="10 rad/s")
+        FourBar(**FOURBAR).solve(
+            theta2=Q_(np.ma.masked_array([30.0, 40.0], [0, 1]), "deg"), omega2="10 rad/s"
+        )
     with pytest.raises(InvalidInput, match="one assembly"):
         RotatingPoint(p="1 in").solve(theta2="0 deg", omega2="1 rad/s", circuit="crossed")
 
@@ -372,15 +491,15 @@ def test_api_rough_edges_get_clear_errors():
 def test_a_quantity_of_another_registry_is_read():
     other = pint.UnitRegistry()
     r = FourBar(a=other.Quantity(2, "inch"), b="6 in", c="9 in", d="7 in").solve(
-        theta2=other.Quantity(30, "degree"), omega2=other.Quantity(10, "rad/s"))
+        theta2=other.Quantity(30, "degree"), omega2=other.Quantity(10, "rad/s")
+    )
     ours = FourBar(**FOURBAR).solve(theta2="30 deg", omega2="10 rad/s")
     assert r.alpha3.m == ours.alpha3.m
 
 
 def test_messages_show_the_users_text_not_float_noise():
     with pytest.raises(AccelabError) as err:
-        FourBar(a="2 in", b="6 in", c="9 in", d="17 in").solve(theta2="30 deg",
-                                                              omega2="10 rad/s")
+        FourBar(a="2 in", b="6 in", c="9 in", d="17 in").solve(theta2="30 deg", omega2="10 rad/s")
     assert "6 in" in str(err.value) and "0.1524" not in str(err.value)
     r = solve_case(dict(case("fourbar"), b="6 in", d="17 in"))
     assert "b = 6 in" in r["message"] and "0.15239999" not in r["message"]
@@ -389,12 +508,18 @@ def test_messages_show_the_users_text_not_float_noise():
     assert str(err.value).count("x" * 20) <= 1 and len(str(err.value)) < 300
 
 
-@pytest.mark.parametrize("cls, geometry", [
-    (FourBar, FOURBAR), (SliderCrank, dict(a="2 in", b="6 in")),
-    (InvertedSliderCrank, dict(a="4 in", c="3 in", d="8 in", gamma="90 deg")),
-    (GearedFiveBar, dict(a="1 in", b="4 in", c="4 in", d="1 in", f="3 in", lam=-2,
-                         phi="30 deg")),
-])
+@pytest.mark.parametrize(
+    "cls, geometry",
+    [
+        (FourBar, FOURBAR),
+        (SliderCrank, dict(a="2 in", b="6 in")),
+        (InvertedSliderCrank, dict(a="4 in", c="3 in", d="8 in", gamma="90 deg")),
+        (
+            GearedFiveBar,
+            dict(a="1 in", b="4 in", c="4 in", d="1 in", f="3 in", lam=-2, phi="30 deg"),
+        ),
+    ],
+)
 def test_api_overflow_is_refused_and_arrays_stay_finite(cls, geometry):
     mech = cls(**geometry)
     with pytest.raises(InvalidInput, match="overflows"):

@@ -9,7 +9,7 @@ import pytest
 
 from accelab.solver.batch import solve_case
 from accelab.solver.errors import InvalidInput, NotAssemblable, Singular
-from accelab.solver.graphical import construct, construct_case, fourbar, geometry, slotted
+from accelab.solver.graphical import construct, construct_case, geometry, slotted
 from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction
 
 RTOL = 1e-9
@@ -43,8 +43,13 @@ def assert_matches(con, ref, rtol=RTOL):
             err = math.hypot(got[0] - want[0], got[1] - want[1])
             assert err <= rtol * scale[k[0]], (k, got, want, err / scale[k[0]])
         else:
-            s = (ang_acc if k in ANGULAR_ACC else ang_vel if k in ANGULAR_VEL
-                 else max(abs(want), 1e-300))
+            s = (
+                ang_acc
+                if k in ANGULAR_ACC
+                else ang_vel
+                if k in ANGULAR_VEL
+                else max(abs(want), 1e-300)
+            )
             if k in ("b", "d"):
                 s = scale.get("R", abs(want))
             elif k.endswith("_ddot"):
@@ -81,7 +86,7 @@ def test_example_7_1_values():
     assert math.degrees(cmath.phase(v["A_B"])) == pytest.approx(-124.017, abs=1e-3)
     assert abs(v["A_P"]) / inch == pytest.approx(245.351, abs=1e-3)
     # eq. 7.6: the magnitudes of the components are r alpha and r omega^2
-    assert abs(v["A_A_n"]) == pytest.approx(2 * inch * 10 ** 2)
+    assert abs(v["A_A_n"]) == pytest.approx(2 * inch * 10**2)
     assert abs(v["A_A_t"]) == pytest.approx(2 * inch * 5)
     assert abs(v["A_B_t"]) == pytest.approx(9 * inch * abs(v["alpha4"]))
     assert abs(v["A_BA_n"]) == pytest.approx(6 * inch * v["omega3"] ** 2)
@@ -122,50 +127,110 @@ def test_step_items_accumulate():
 # Copied from shared/reference/cases.json (ids fourbar-014, slidercrank-016,
 # invertedslidercrank-017); the project must not need shared/ to run.
 REFERENCE = [
-    ({"mechanism": "fourbar", "a": "0.824878392346156 ft", "b": "0.9661603155025213 ft",
-      "c": "0.6694065681302019 ft", "d": "0.38751346261187924 ft",
-      "theta2": "-3.052101633836283 rad", "omega2": "-42.36319324437491 rad/s",
-      "alpha2": "346.89984404594134 rad/s^2", "jerk2": "-4720.0627437357 rad/s^3",
-      "p": "155.336956752512 mm", "delta3": "94.92472239671184 deg", "circuit": "crossed"},
-     {"theta3": -0.523147478648748, "theta4": -2.160296538978077, "omega3": -28.20857064264832,
-      "omega4": -30.083921784782337, "alpha3": -52.05076769104836, "alpha4": 848.4534183005562,
-      "A_A": [457.20295608958753, -46.54386118794408],
-      "A_B": [246.5569923130138, 57.25104613832898],
-      "A_BA": [-210.64596377657375, 103.79490732627306],
-      "V_A": [-0.9519040972166571, 10.608456455296436],
-      "V_B": [-5.102166833884508, 3.41249266561678],
-      "A_P": [412.1934271828616, -161.94653234592874],
-      "A_PA": [-45.009528906725926, -115.40267115798467],
-      "V_P": [3.0177869665719776, 8.753188863476367]}),
-    ({"mechanism": "slidercrank", "a": "0.23742172398619504 m", "b": "0.19039529890642382 m",
-      "c": "-35.019751509765754 mm", "theta2": "-2.252151406535411 rad",
-      "omega2": "-44.73981217972595 rad/s", "alpha2": "-139.21427916090875 rad/s^2",
-      "circuit": "open"},
-     {"theta3": -2.2394887112444524, "omega3": -56.67986597087126, "alpha3": 762.3844585061377,
-      "d": -0.03150158318918674, "d_dot": 0.21695273419326477, "d_ddot": -219.44865909757306,
-      "A_A": [273.65263006001766, 389.94278301053487], "A_B": [-219.44865909757306, 0.0],
-      "A_BA": [-493.1012891575907, -389.94278301053487]}),
-    ({"mechanism": "invertedslidercrank", "a": "97.53677973013883 mm", "c": "236.23310765153667 mm",
-      "d": "162.15991770184974 mm", "gamma": "-126.049732677155 deg",
-      "theta2": "148.49569307873233 deg", "omega2": "1511.8227199893079 deg/s",
-      "alpha2": "21697.235688259694 deg/s^2"},
-     {"theta3": 2.0699122650199318, "theta4": 4.269895121494973, "omega3": 13.757551503962468,
-      "omega4": 13.757551503962468, "alpha3": -16.53486943540957, "alpha4": -16.53486943540957,
-      "b": 0.3011935664534589, "b_dot": 1.3447728452229517, "b_ddot": -49.745464881731564,
-      "A_A": [38.59755794955004, -66.9781969953191],
-      "A_B": [15.615509485288435, 42.078102775478044],
-      "A_BA": [-22.982048464261602, 109.05629977079714],
-      "A_coriolis": [-32.4875968836, -17.710780324620366]}),
+    (
+        {
+            "mechanism": "fourbar",
+            "a": "0.824878392346156 ft",
+            "b": "0.9661603155025213 ft",
+            "c": "0.6694065681302019 ft",
+            "d": "0.38751346261187924 ft",
+            "theta2": "-3.052101633836283 rad",
+            "omega2": "-42.36319324437491 rad/s",
+            "alpha2": "346.89984404594134 rad/s^2",
+            "jerk2": "-4720.0627437357 rad/s^3",
+            "p": "155.336956752512 mm",
+            "delta3": "94.92472239671184 deg",
+            "circuit": "crossed",
+        },
+        {
+            "theta3": -0.523147478648748,
+            "theta4": -2.160296538978077,
+            "omega3": -28.20857064264832,
+            "omega4": -30.083921784782337,
+            "alpha3": -52.05076769104836,
+            "alpha4": 848.4534183005562,
+            "A_A": [457.20295608958753, -46.54386118794408],
+            "A_B": [246.5569923130138, 57.25104613832898],
+            "A_BA": [-210.64596377657375, 103.79490732627306],
+            "V_A": [-0.9519040972166571, 10.608456455296436],
+            "V_B": [-5.102166833884508, 3.41249266561678],
+            "A_P": [412.1934271828616, -161.94653234592874],
+            "A_PA": [-45.009528906725926, -115.40267115798467],
+            "V_P": [3.0177869665719776, 8.753188863476367],
+        },
+    ),
+    (
+        {
+            "mechanism": "slidercrank",
+            "a": "0.23742172398619504 m",
+            "b": "0.19039529890642382 m",
+            "c": "-35.019751509765754 mm",
+            "theta2": "-2.252151406535411 rad",
+            "omega2": "-44.73981217972595 rad/s",
+            "alpha2": "-139.21427916090875 rad/s^2",
+            "circuit": "open",
+        },
+        {
+            "theta3": -2.2394887112444524,
+            "omega3": -56.67986597087126,
+            "alpha3": 762.3844585061377,
+            "d": -0.03150158318918674,
+            "d_dot": 0.21695273419326477,
+            "d_ddot": -219.44865909757306,
+            "A_A": [273.65263006001766, 389.94278301053487],
+            "A_B": [-219.44865909757306, 0.0],
+            "A_BA": [-493.1012891575907, -389.94278301053487],
+        },
+    ),
+    (
+        {
+            "mechanism": "invertedslidercrank",
+            "a": "97.53677973013883 mm",
+            "c": "236.23310765153667 mm",
+            "d": "162.15991770184974 mm",
+            "gamma": "-126.049732677155 deg",
+            "theta2": "148.49569307873233 deg",
+            "omega2": "1511.8227199893079 deg/s",
+            "alpha2": "21697.235688259694 deg/s^2",
+        },
+        {
+            "theta3": 2.0699122650199318,
+            "theta4": 4.269895121494973,
+            "omega3": 13.757551503962468,
+            "omega4": 13.757551503962468,
+            "alpha3": -16.53486943540957,
+            "alpha4": -16.53486943540957,
+            "b": 0.3011935664534589,
+            "b_dot": 1.3447728452229517,
+            "b_ddot": -49.745464881731564,
+            "A_A": [38.59755794955004, -66.9781969953191],
+            "A_B": [15.615509485288435, 42.078102775478044],
+            "A_BA": [-22.982048464261602, 109.05629977079714],
+            "A_coriolis": [-32.4875968836, -17.710780324620366],
+        },
+    ),
 ]
 
 
 REFERENCE.append(
     # shared/reference/cases.json id fivebar-021 (open circuit)
-    ({"mechanism": "fivebar", "a": "4.581432731600279 cm", "b": "12.246670399200333 cm",
-      "c": "11.463431205700386 cm", "d": "14.842781516409115 cm", "f": "21.688238505320957 cm",
-      "lam": -1, "phi": "-60.660759908883364 deg", "theta2": "44.61374660107102 deg",
-      "omega2": "-9.471571671322863 rad/s", "alpha2": "334.8385202191058 rad/s^2"},
-     None))
+    (
+        {
+            "mechanism": "fivebar",
+            "a": "4.581432731600279 cm",
+            "b": "12.246670399200333 cm",
+            "c": "11.463431205700386 cm",
+            "d": "14.842781516409115 cm",
+            "f": "21.688238505320957 cm",
+            "lam": -1,
+            "phi": "-60.660759908883364 deg",
+            "theta2": "44.61374660107102 deg",
+            "omega2": "-9.471571671322863 rad/s",
+            "alpha2": "334.8385202191058 rad/s^2",
+        },
+        None,
+    )
+)
 
 
 @pytest.mark.parametrize("case,expect", REFERENCE, ids=[c["mechanism"] for c, _ in REFERENCE])
@@ -185,26 +250,47 @@ def _random_cases(mechanism, n, seed):
     out = []
     while len(out) < n:
         theta1 = rng.uniform(-math.pi, math.pi) if rng.random() < 0.5 else 0.0
-        motion = {"theta2": si(rng.uniform(-math.pi, math.pi), "rad"),
-                  "omega2": si(rng.uniform(-100, 100), "rad/s"),
-                  "alpha2": si(rng.uniform(-2000, 2000), "rad/s^2"),
-                  "theta1": si(theta1, "rad"),
-                  "circuit": str(rng.choice(["open", "crossed"]))}
+        motion = {
+            "theta2": si(rng.uniform(-math.pi, math.pi), "rad"),
+            "omega2": si(rng.uniform(-100, 100), "rad/s"),
+            "alpha2": si(rng.uniform(-2000, 2000), "rad/s^2"),
+            "theta1": si(theta1, "rad"),
+            "circuit": str(rng.choice(["open", "crossed"])),
+        }
         L = lambda lo=0.02, hi=0.5: si(rng.uniform(lo, hi), "m")  # noqa: E731
         if mechanism == "fourbar":
             case = {"mechanism": "fourbar", "a": L(), "b": L(), "c": L(), "d": L(), **motion}
             if rng.random() < 0.5:
                 case.update(p=L(), delta3=si(rng.uniform(-math.pi, math.pi), "rad"))
         elif mechanism == "slidercrank":
-            case = {"mechanism": "slidercrank", "a": L(), "b": L(),
-                    "c": si(rng.uniform(-0.2, 0.2), "m"), **motion}
+            case = {
+                "mechanism": "slidercrank",
+                "a": L(),
+                "b": L(),
+                "c": si(rng.uniform(-0.2, 0.2), "m"),
+                **motion,
+            }
         elif mechanism == "fivebar":
-            case = {"mechanism": "fivebar", "a": L(), "b": L(), "c": L(), "d": L(), "f": L(),
-                    "lam": float(rng.choice([-3, -2, -1, -0.5, 0.5, 2])),
-                    "phi": si(rng.uniform(-math.pi, math.pi), "rad"), **motion}
+            case = {
+                "mechanism": "fivebar",
+                "a": L(),
+                "b": L(),
+                "c": L(),
+                "d": L(),
+                "f": L(),
+                "lam": float(rng.choice([-3, -2, -1, -0.5, 0.5, 2])),
+                "phi": si(rng.uniform(-math.pi, math.pi), "rad"),
+                **motion,
+            }
         else:
-            case = {"mechanism": "invertedslidercrank", "a": L(), "c": L(0.0, 0.5), "d": L(),
-                    "gamma": si(rng.uniform(-math.pi, math.pi), "rad"), **motion}
+            case = {
+                "mechanism": "invertedslidercrank",
+                "a": L(),
+                "c": L(0.0, 0.5),
+                "d": L(),
+                "gamma": si(rng.uniform(-math.pi, math.pi), "rad"),
+                **motion,
+            }
         ref = solve_case(case)
         # keep the well-conditioned positions: near a toggle both methods lose
         # digits (relative error ~ eps / condition^2) and neither is a reference
@@ -213,8 +299,7 @@ def _random_cases(mechanism, n, seed):
     return out
 
 
-@pytest.mark.parametrize("mechanism", ["fourbar", "slidercrank", "invertedslidercrank",
-                                       "fivebar"])
+@pytest.mark.parametrize("mechanism", ["fourbar", "slidercrank", "invertedslidercrank", "fivebar"])
 def test_random_cases_match_the_analytic_solver(mechanism):
     cases = _random_cases(mechanism, 150, seed=len(mechanism))
     circuits = {c["circuit"] for c, _ in cases}
@@ -234,8 +319,11 @@ def test_not_assemblable_and_singular_agree_with_the_solver(mechanism):
     seen = set()
     for _ in range(400):
         L = lambda: si(rng.uniform(0.05, 0.3), "m")  # noqa: E731
-        base = {"theta2": si(rng.uniform(-math.pi, math.pi), "rad"), "omega2": "10 rad/s",
-                "alpha2": "5 rad/s^2"}
+        base = {
+            "theta2": si(rng.uniform(-math.pi, math.pi), "rad"),
+            "omega2": "10 rad/s",
+            "alpha2": "5 rad/s^2",
+        }
         if mechanism == "fourbar":
             case = {"mechanism": mechanism, "a": L(), "b": L(), "c": L(), "d": L(), **base}
         elif mechanism == "slidercrank":
@@ -259,8 +347,16 @@ def test_singular_positions():
         construct("slidercrank", "open", a=0.1, b=0.1, theta2=math.pi / 2, omega2=1.0, alpha2=0.0)
     # fourbar a hair off its toggle (b + c just reaches O4 from A): the solver
     # and the construction both refuse it as singular
-    case = {"mechanism": "fourbar", "a": "0.1 m", "b": "0.15 m", "c": "0.15000000001 m",
-            "d": "0.4 m", "theta2": "0 deg", "omega2": "1 rad/s", "alpha2": "0 rad/s^2"}
+    case = {
+        "mechanism": "fourbar",
+        "a": "0.1 m",
+        "b": "0.15 m",
+        "c": "0.15000000001 m",
+        "d": "0.4 m",
+        "theta2": "0 deg",
+        "omega2": "1 rad/s",
+        "alpha2": "0 rad/s^2",
+    }
     assert solve_case(case)["error"] == "singular"
     with pytest.raises(Singular, match="move the input angle"):
         construct_case(case)
@@ -279,13 +375,22 @@ def test_inverted_slider_crank_coriolis_is_perpendicular_to_the_slide():
 
 
 def test_inverted_slider_crank_c_zero():
-    case = {"mechanism": "invertedslidercrank", "a": "40 mm", "c": "0 mm", "d": "100 mm",
-            "gamma": "0 deg", "theta2": "50 deg", "omega2": "20 rad/s", "alpha2": "10 rad/s^2"}
+    case = {
+        "mechanism": "invertedslidercrank",
+        "a": "40 mm",
+        "c": "0 mm",
+        "d": "100 mm",
+        "gamma": "0 deg",
+        "theta2": "50 deg",
+        "omega2": "20 rad/s",
+        "alpha2": "10 rad/s^2",
+    }
     assert_matches(construct_case(case), solve_case(case))
 
 
 def test_slotted_link_figure_7_7_against_eq_7_19():
     from accelab.solver.kernels.rotation import slotted_link
+
     s = GALLERY["graphical-slotted"]
     v = slotted.construct(**s).values
     ref = slotted_link(s["theta2"], s["omega2"], s["alpha2"], s["p"], s["p_dot"], s["p_ddot"])
@@ -294,8 +399,13 @@ def test_slotted_link_figure_7_7_against_eq_7_19():
 
 
 def test_rotation_case_matches_solver():
-    case = {"mechanism": "rotation", "p": "3 in", "theta2": "40 deg", "omega2": "10 rad/s",
-            "alpha2": "50 rad/s^2"}
+    case = {
+        "mechanism": "rotation",
+        "p": "3 in",
+        "theta2": "40 deg",
+        "omega2": "10 rad/s",
+        "alpha2": "50 rad/s^2",
+    }
     v, r = construct_case(case).values, solve_case(case)
     for k in ("A", "A_t", "A_n"):
         assert [v[k].real, v[k].imag] == pytest.approx(r[k], rel=1e-12)

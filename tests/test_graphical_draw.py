@@ -6,16 +6,24 @@ import os
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import pytest  # noqa: E402
-from matplotlib.testing.compare import compare_images  # noqa: E402
+import matplotlib.pyplot as plt
+import pytest
+from matplotlib.testing.compare import compare_images
 
-from accelab.solver.graphical import construct_case  # noqa: E402
-from accelab.solver.graphical import style  # noqa: E402
-from accelab.solver.graphical.draw import (diagrams, draw_linkage, draw_polygon,  # noqa: E402
-                                   draw_polygons, nice, save)
-from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction  # noqa: E402
-from accelab.solver.graphical.labels import label_texts, layers  # noqa: E402
+from accelab.solver.graphical import (
+    construct_case,
+    style,
+)
+from accelab.solver.graphical.draw import (
+    diagrams,
+    draw_linkage,
+    draw_polygon,
+    draw_polygons,
+    nice,
+    save,
+)
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, GALLERY, construction
+from accelab.solver.graphical.labels import label_texts, layers
 
 BASELINE = os.path.join(os.path.dirname(__file__), "graphical_baseline")
 
@@ -31,8 +39,16 @@ def test_linkage_figure_has_labelled_components_and_scale_bars():
     con = construct_case(EXAMPLE_7_1)
     fig = draw_linkage(con)
     t = texts(fig)
-    for label in (r"$\mathbf{A}_{A}^{n}$", r"$\mathbf{A}_{A}^{t}$", r"$\mathbf{A}_{B}^{t}$",
-                  r"$\mathbf{A}_{P}$", "$O_{2}$", "$O_{4}$", "p", "q"):
+    for label in (
+        r"$\mathbf{A}_{A}^{n}$",
+        r"$\mathbf{A}_{A}^{t}$",
+        r"$\mathbf{A}_{B}^{t}$",
+        r"$\mathbf{A}_{P}$",
+        "$O_{2}$",
+        "$O_{4}$",
+        "p",
+        "q",
+    ):
         assert label in t, label
     assert "1 in" in t, "an inch linkage has its scale bars in inches"
     assert any(s.endswith(r"in/s$^2$") for s in t)
@@ -47,12 +63,21 @@ def test_polygons_figure_panels_and_labels():
     con = construct_case(EXAMPLE_7_1)
     assert diagrams(con) == ["velocity", "acceleration", "point"]
     fig = draw_polygons(con)
-    assert sorted(ax.get_title() for ax in fig.axes) == ["Acceleration of P",
-                                                         "Acceleration polygon",
-                                                         "Velocity polygon"]
+    assert sorted(ax.get_title() for ax in fig.axes) == [
+        "Acceleration of P",
+        "Acceleration polygon",
+        "Velocity polygon",
+    ]
     t = texts(fig)
-    for label in (r"$\mathbf{A}_{BA}^{t}$", r"$\mathbf{A}_{B}^{t}$", r"$\mathbf{A}_{B}^{n}$",
-                  r"$\mathbf{A}_{PA}^{n}$", r"$\mathbf{V}_{B}$", "$o_A$", "$o_V$"):
+    for label in (
+        r"$\mathbf{A}_{BA}^{t}$",
+        r"$\mathbf{A}_{B}^{t}$",
+        r"$\mathbf{A}_{B}^{n}$",
+        r"$\mathbf{A}_{PA}^{n}$",
+        r"$\mathbf{V}_{B}$",
+        "$o_A$",
+        "$o_V$",
+    ):
         assert label in t, label
     plt.close(fig)
 
@@ -123,7 +148,7 @@ def test_labels_never_overlap_and_stay_inside(name):
             for i, a in enumerate(boxes):
                 assert frame.x0 - 1 <= a[0] and a[2] <= frame.x1 + 1, (name, maker.__name__)
                 assert frame.y0 - 1 <= a[1] and a[3] <= frame.y1 + 1, (name, maker.__name__)
-                for b in boxes[i + 1:]:
+                for b in boxes[i + 1 :]:
                     assert not _overlap(a, b), (name, maker.__name__, a, b)
         plt.close(fig)
 
@@ -136,8 +161,9 @@ def test_tiny_component_is_magnified_in_an_inset():
     draw_polygon(con, "acceleration", ax=ax)
     assert len(ax.child_axes) == 1
     inset = ax.child_axes[0]
-    assert r"$\mathbf{A}_{A}^{t}$" in [lab["text"] for layer in layers(fig)
-                                        if layer.ax is inset for lab in layer.labels]
+    assert r"$\mathbf{A}_{A}^{t}$" in [
+        lab["text"] for layer in layers(fig) if layer.ax is inset for lab in layer.labels
+    ]
     assert any(t.get_text().startswith("\u00d7") for t in inset.texts)  # its factor
     plt.close(fig)
     fig = draw_linkage(con)
@@ -161,6 +187,7 @@ def test_acceleration_polygon_draws_both_sides_of_eq_7_4_from_the_pole():
 def test_vectors_along_a_link_are_drawn_beside_it():
     """A_A^n points from A along the crank: it is drawn a few points beside it."""
     from accelab.solver.graphical.draw import _beside
+
     con = construct_case(EXAMPLE_7_1)
     pts = con.linkage.points
     arrows = [(a.start, a.vector) for a in con.items("linkage")[0]]
@@ -168,12 +195,11 @@ def test_vectors_along_a_link_are_drawn_beside_it():
     offsets = _beside(arrows, segs, 0.3)
     names = [a.name for a in con.items("linkage")[0]]
     assert abs(offsets[names.index(r"\mathbf{A}_{A}^{n}")]) > 0
-    assert offsets[names.index(r"\mathbf{A}_{A}^{t}")] == 0   # perpendicular: stays put
+    assert offsets[names.index(r"\mathbf{A}_{A}^{t}")] == 0  # perpendicular: stays put
 
 
 def test_units_follow_the_case():
-    si = construct_case(dict(EXAMPLE_7_1, a="50 mm", b="150 mm", c="230 mm", d="180 mm",
-                             p="75 mm"))
+    si = construct_case(dict(EXAMPLE_7_1, a="50 mm", b="150 mm", c="230 mm", d="180 mm", p="75 mm"))
     assert si.units == "SI" and construct_case(EXAMPLE_7_1).units == "US"
     fig = draw_linkage(si)
     assert any(s.endswith("mm") for s in texts(fig))
@@ -187,7 +213,11 @@ def test_nice_scale_numbers():
 def test_save_writes_png_and_svg(tmp_path):
     paths = save(construct_case(EXAMPLE_7_1), tmp_path, "ex71")
     assert sorted(os.path.basename(p) for p in paths) == [
-        "ex71-linkage.png", "ex71-linkage.svg", "ex71-polygons.png", "ex71-polygons.svg"]
+        "ex71-linkage.png",
+        "ex71-linkage.svg",
+        "ex71-polygons.png",
+        "ex71-polygons.svg",
+    ]
     for p in paths:
         assert os.path.getsize(p) > 5000
     assert open(paths[0], "rb").read(8) == b"\x89PNG\r\n\x1a\n"
@@ -219,14 +249,17 @@ if __name__ == "__main__":  # regenerate the baselines
         print(render_baseline(n, BASELINE))
 
 
-@pytest.mark.parametrize("family", ["rotation", "fourbar", "coupler", "slidercrank", "coriolis",
-                                    "fivebar", "jerk", "tolerance"])
+@pytest.mark.parametrize(
+    "family",
+    ["rotation", "fourbar", "coupler", "slidercrank", "coriolis", "fivebar", "jerk", "tolerance"],
+)
 def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
     """accelab.exercises.figure.statement_figure(problem) -> PNG bytes, drawn by draw_linkage (the
     project's one linkage drawer) as a schematic with the chapter's symbols."""
     from accelab.exercises import figure
     from accelab.exercises.families import generate
     from accelab.solver.graphical import draw as drawing
+
     calls = []
     real = drawing.draw_linkage
 

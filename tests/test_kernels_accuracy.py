@@ -22,15 +22,23 @@ import json
 import math
 from pathlib import Path
 
+import _checks as check
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from conftest import fivebars, fourbars, invertedslidercranks, points_on_links, slidercranks
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-import _checks as check
 import accelab.benchmarks.reference as ref
-from conftest import (fivebars, fourbars, invertedslidercranks, points_on_links,
-                      slidercranks)
-from accelab.solver.kernels import OK, fivebar, fourbar, invertedslidercrank, points, rotation, slidercrank
+from accelab.solver.kernels import (
+    OK,
+    fivebar,
+    fourbar,
+    invertedslidercrank,
+    points,
+    rotation,
+    slidercrank,
+)
 
 RTOL = 1e-12
 #: below this fraction of the largest output of the same order and kind, an
@@ -39,8 +47,12 @@ RTOL = 1e-12
 #: few eps of the terms that cancel in it, not of itself
 FLOOR = 1e-2
 MOTION = ("theta2", "omega2", "alpha2", "jerk2", "theta1")
-BASES = {"fourbar": {2: "O2", 3: "A", 4: "O4"}, "invertedslidercrank": {2: "O2", 3: "A", 4: "O4"},
-         "fivebar": {2: "O2", 3: "A", 4: "C", 5: "O5"}, "slidercrank": {2: "O2", 3: "A"}}
+BASES = {
+    "fourbar": {2: "O2", 3: "A", 4: "O4"},
+    "invertedslidercrank": {2: "O2", 3: "A", 4: "O4"},
+    "fivebar": {2: "O2", 3: "A", 4: "C", 5: "O5"},
+    "slidercrank": {2: "O2", 3: "A"},
+}
 #: the outputs every kernel must report, and which of them each one has
 ANGULAR = {"fourbar": "34", "slidercrank": "3", "invertedslidercrank": "34", "fivebar": "345"}
 SLIDER = {"slidercrank": "d", "invertedslidercrank": "b"}
@@ -55,8 +67,9 @@ def run_kernel(mech, case, circuit):
         return slidercrank.solve(geo["a"], geo["b"], geo["c"], *args)
     if mech == "invertedslidercrank":
         return invertedslidercrank.solve(geo["a"], geo["c"], geo["d"], geo["gamma"], *args)
-    return fivebar.solve(geo["a"], geo["b"], geo["c"], geo["d"], geo["f"], geo["lam"],
-                         geo["phi"], *args)
+    return fivebar.solve(
+        geo["a"], geo["b"], geo["c"], geo["d"], geo["f"], geo["lam"], geo["phi"], *args
+    )
 
 
 def split(mech, case):
@@ -67,9 +80,12 @@ def split(mech, case):
 def vectors(L, m, k, offset=0.0):
     """R V A J of the vector L e^{j(theta_k + offset)} with the kernel's point helpers."""
     th, w, al, j = (getattr(m, n + k) for n in ("theta", "omega", "alpha", "jerk"))
-    return (points.relative_position(L, th, offset), points.relative_velocity(L, th, w, offset),
-            points.relative_acceleration(L, th, w, al, offset),
-            points.relative_jerk(L, th, w, al, j, offset))
+    return (
+        points.relative_position(L, th, offset),
+        points.relative_velocity(L, th, w, offset),
+        points.relative_acceleration(L, th, w, al, offset),
+        points.relative_jerk(L, th, w, al, j, offset),
+    )
 
 
 def kernel_outputs(mech, case, m, extra=()):
@@ -98,8 +114,9 @@ def kernel_outputs(mech, case, m, extra=()):
     else:
         pts["B"] = ((m.d + 1j * geo["c"]) * e1, m.d_dot * e1, m.d_ddot * e1, m.d_dddot * e1)
     if "p" in geo:
-        pts["P"] = tuple(p + q for p, q in zip(pts["A"], vectors(geo["p"], m, "3",
-                                                                 geo.get("delta3", 0.0))))
+        pts["P"] = tuple(
+            p + q for p, q in zip(pts["A"], vectors(geo["p"], m, "3", geo.get("delta3", 0.0)))
+        )
     for name, link, p, delta in extra:
         base = pts[BASES[mech][link]]
         pts[name] = tuple(u + v for u, v in zip(base, vectors(p, m, str(link), delta)))
@@ -115,8 +132,17 @@ def kernel_outputs(mech, case, m, extra=()):
 def reference(mech, case, circuit, extra=()):
     geo, mo = split(mech, case)
     specs = [(name, link, BASES[mech][link], p, delta) for name, link, p, delta in extra]
-    return ref.solve(mech, geo, mo["theta2"], mo["omega2"], mo["alpha2"], mo["jerk2"],
-                     mo["theta1"], circuit, specs)
+    return ref.solve(
+        mech,
+        geo,
+        mo["theta2"],
+        mo["omega2"],
+        mo["alpha2"],
+        mo["jerk2"],
+        mo["theta1"],
+        circuit,
+        specs,
+    )
 
 
 def assert_agree(got, want, rtol=RTOL, floor=FLOOR, expected=None):
@@ -144,24 +170,33 @@ def expected_outputs(mech, extra=(), coupler=False):
 circuits = st.sampled_from(["open", "crossed"])
 
 
-@given(case=fourbars(), circuit=circuits, extra=points_on_links([2, 3, 4]),
-       p=st.floats(0.01, 2.0), delta3=st.floats(-math.pi, math.pi))
+@given(
+    case=fourbars(),
+    circuit=circuits,
+    extra=points_on_links([2, 3, 4]),
+    p=st.floats(0.01, 2.0),
+    delta3=st.floats(-math.pi, math.pi),
+)
 def test_fourbar_matches_reference(case, circuit, extra, p, delta3):
     case = dict(case, p=p, delta3=delta3)
     m = run_kernel("fourbar", case, circuit)
     assert m.status == OK
-    assert_agree(kernel_outputs("fourbar", case, m, extra),
-                 reference("fourbar", case, circuit, extra),
-                 expected=expected_outputs("fourbar", extra, coupler=True))
+    assert_agree(
+        kernel_outputs("fourbar", case, m, extra),
+        reference("fourbar", case, circuit, extra),
+        expected=expected_outputs("fourbar", extra, coupler=True),
+    )
 
 
 @given(case=slidercranks(), circuit=circuits, extra=points_on_links([2, 3]))
 def test_slidercrank_matches_reference(case, circuit, extra):
     m = run_kernel("slidercrank", case, circuit)
     assert m.status == OK
-    assert_agree(kernel_outputs("slidercrank", case, m, extra),
-                 reference("slidercrank", case, circuit, extra),
-                 expected=expected_outputs("slidercrank", extra))
+    assert_agree(
+        kernel_outputs("slidercrank", case, m, extra),
+        reference("slidercrank", case, circuit, extra),
+        expected=expected_outputs("slidercrank", extra),
+    )
 
 
 @given(case=invertedslidercranks(), circuit=circuits, extra=points_on_links([2, 3, 4]))
@@ -170,18 +205,22 @@ def test_invertedslidercrank_matches_reference(case, circuit, extra):
     assert m.status == OK
     # the block turns with link 4
     assert m.omega3 == m.omega4 and m.alpha3 == m.alpha4 and m.jerk3 == m.jerk4
-    assert_agree(kernel_outputs("invertedslidercrank", case, m, extra),
-                 reference("invertedslidercrank", case, circuit, extra),
-                 expected=expected_outputs("invertedslidercrank", extra))
+    assert_agree(
+        kernel_outputs("invertedslidercrank", case, m, extra),
+        reference("invertedslidercrank", case, circuit, extra),
+        expected=expected_outputs("invertedslidercrank", extra),
+    )
 
 
 @given(case=fivebars(), circuit=circuits, extra=points_on_links([2, 3, 4, 5]))
 def test_fivebar_matches_reference(case, circuit, extra):
     m = run_kernel("fivebar", case, circuit)
     assert m.status == OK
-    assert_agree(kernel_outputs("fivebar", case, m, extra),
-                 reference("fivebar", case, circuit, extra),
-                 expected=expected_outputs("fivebar", extra))
+    assert_agree(
+        kernel_outputs("fivebar", case, m, extra),
+        reference("fivebar", case, circuit, extra),
+        expected=expected_outputs("fivebar", extra),
+    )
 
 
 # ------------------------------------------------------------ fixed cases
@@ -197,10 +236,24 @@ FIXED = [
     ("slidercrank", dict(a=0.3, b=0.2, c=-0.05), 0.6, -12.0, 40.0, 800.0, 0.9),
     ("invertedslidercrank", dict(a=0.1, c=0.24, d=0.16, gamma=-2.1), 2.6, 26.0, 380.0, -50.0, 0.2),
     ("invertedslidercrank", dict(a=0.1, c=0.0, d=0.25, gamma=0.0), -1.0, 5.0, 0.0, 0.0, 0.0),
-    ("fivebar", dict(a=0.046, b=0.122, c=0.115, d=0.148, f=0.217, lam=-1.0, phi=-1.06),
-     0.78, -9.5, 335.0, 1000.0, 0.0),
-    ("fivebar", dict(a=3.9, b=9.6, c=2.8, d=10.7, f=3.75, lam=-3.0, phi=0.845),
-     0.9, -48.9, -222.0, 0.0, -0.4),
+    (
+        "fivebar",
+        dict(a=0.046, b=0.122, c=0.115, d=0.148, f=0.217, lam=-1.0, phi=-1.06),
+        0.78,
+        -9.5,
+        335.0,
+        1000.0,
+        0.0,
+    ),
+    (
+        "fivebar",
+        dict(a=3.9, b=9.6, c=2.8, d=10.7, f=3.75, lam=-3.0, phi=0.845),
+        0.9,
+        -48.9,
+        -222.0,
+        0.0,
+        -0.4,
+    ),
 ]
 
 
@@ -211,8 +264,11 @@ def test_fixed_cases_match_reference(mech, geo, theta2, omega2, alpha2, jerk2, t
     m = run_kernel(mech, case, circuit)
     assert m.status == OK
     extra = [(f"Q{k}", k, 0.07, 0.4 * k) for k in BASES[mech]]
-    assert_agree(kernel_outputs(mech, case, m, extra), reference(mech, case, circuit, extra),
-                 expected=expected_outputs(mech, extra, coupler="p" in geo))
+    assert_agree(
+        kernel_outputs(mech, case, m, extra),
+        reference(mech, case, circuit, extra),
+        expected=expected_outputs(mech, extra, coupler="p" in geo),
+    )
 
 
 def test_open_circuit_is_the_chapter_minus_sign():
@@ -228,8 +284,12 @@ def test_open_circuit_is_the_chapter_minus_sign():
             t4 = 2 * math.atan((-B + sign * math.sqrt(B * B - 4 * A * C)) / (2 * A))
             want = ref.solve("fourbar", dict(a=a, b=b, c=c, d=d), t2, 1.0, circuit=circuit)
             assert check.angle_error(t4, want["theta4"]) < 1e-13
-            assert check.angle_error(t4, fourbar.solve(a, b, c, d, t2, 1.0, circuit=circuit,
-                                                     order=0).theta4) < 1e-13
+            assert (
+                check.angle_error(
+                    t4, fourbar.solve(a, b, c, d, t2, 1.0, circuit=circuit, order=0).theta4
+                )
+                < 1e-13
+            )
 
 
 def test_slidercrank_open_puts_the_slider_right_of_the_crank_pin():
@@ -241,26 +301,42 @@ def test_kernels_take_arrays_as_scalars():
     """A sweep gives, position by position, exactly the scalar answers."""
     theta2 = np.linspace(-3.0, 3.0, 7)
     for mech, geo, _, omega2, alpha2, jerk2, theta1 in FIXED:
-        sweep = run_kernel(mech, dict(geo, theta2=theta2, omega2=omega2, alpha2=alpha2,
-                                      jerk2=jerk2, theta1=theta1), "open")
+        sweep = run_kernel(
+            mech,
+            dict(geo, theta2=theta2, omega2=omega2, alpha2=alpha2, jerk2=jerk2, theta1=theta1),
+            "open",
+        )
         for i, t in enumerate(theta2):
-            one = run_kernel(mech, dict(geo, theta2=t, omega2=omega2, alpha2=alpha2,
-                                        jerk2=jerk2, theta1=theta1), "open")
+            one = run_kernel(
+                mech,
+                dict(geo, theta2=t, omega2=omega2, alpha2=alpha2, jerk2=jerk2, theta1=theta1),
+                "open",
+            )
             assert one.status == sweep.status[i]
             for name in ("theta3", "omega3", "alpha3", "jerk3"):
-                assert np.array_equal(getattr(one, name), getattr(sweep, name)[i],
-                                      equal_nan=True)
+                assert np.array_equal(getattr(one, name), getattr(sweep, name)[i], equal_nan=True)
 
 
 # ------------------------------------------------------------ loop closure
 
+
 def derivative(L, th, w, al, j, n, Ld=0.0, Ldd=0.0, Lddd=0.0):
     """n-th time derivative of L(t) e^{j theta(t)} and the magnitudes of its terms."""
     e = cmath.exp(1j * th)
-    terms = [[L], [Ld, 1j * L * w],
-             [Ldd, 2j * Ld * w, 1j * L * al, -L * w * w],
-             [Lddd, 3j * Ldd * w, 3j * Ld * al, -3 * Ld * w * w, 1j * L * j,
-              -3 * L * w * al, -1j * L * w ** 3]][n]
+    terms = [
+        [L],
+        [Ld, 1j * L * w],
+        [Ldd, 2j * Ld * w, 1j * L * al, -L * w * w],
+        [
+            Lddd,
+            3j * Ldd * w,
+            3j * Ld * al,
+            -3 * Ld * w * w,
+            1j * L * j,
+            -3 * L * w * al,
+            -1j * L * w**3,
+        ],
+    ][n]
     return sum(terms) * e, sum(abs(t) for t in terms)
 
 
@@ -274,38 +350,65 @@ def loop_residuals(mech, case, m):
             k[name + link] = float(getattr(m, name + link))
 
     def link(L, i, n, sign=1.0, **lengths):
-        return tuple(sign * x if idx == 0 else x for idx, x in enumerate(derivative(
-            L, k["theta" + i], k["omega" + i], k["alpha" + i], k["jerk" + i], n, **lengths)))
+        return tuple(
+            sign * x if idx == 0 else x
+            for idx, x in enumerate(
+                derivative(
+                    L, k["theta" + i], k["omega" + i], k["alpha" + i], k["jerk" + i], n, **lengths
+                )
+            )
+        )
 
     def fixed(L, angle, n):
         return (L * cmath.exp(1j * angle) if n == 0 else 0j, abs(L))
 
     out = []
     for n in range(4):
-        if mech == "fourbar":   # a e2 + b e3 - c e4 - d e1 = 0
-            parts = [link(geo["a"], "2", n), link(geo["b"], "3", n),
-                     link(geo["c"], "4", n, -1.0), fixed(-geo["d"], t1, n)]
+        if mech == "fourbar":  # a e2 + b e3 - c e4 - d e1 = 0
+            parts = [
+                link(geo["a"], "2", n),
+                link(geo["b"], "3", n),
+                link(geo["c"], "4", n, -1.0),
+                fixed(-geo["d"], t1, n),
+            ]
         elif mech == "fivebar":  # a e2 + b e3 - c e4 - d e5 - f e1 = 0
-            parts = [link(geo["a"], "2", n), link(geo["b"], "3", n), link(geo["c"], "4", n, -1.0),
-                     link(geo["d"], "5", n, -1.0), fixed(-geo["f"], t1, n)]
+            parts = [
+                link(geo["a"], "2", n),
+                link(geo["b"], "3", n),
+                link(geo["c"], "4", n, -1.0),
+                link(geo["d"], "5", n, -1.0),
+                fixed(-geo["f"], t1, n),
+            ]
         elif mech == "slidercrank":  # a e2 - b e3 - c e4 - d(t) e1 = 0, theta4 = theta1 + 90 deg
             dd = [float(getattr(m, "d" + s)) for s in ("", "_dot", "_ddot", "_dddot")]
-            parts = [link(geo["a"], "2", n), link(geo["b"], "3", n, -1.0),
-                     fixed(-geo["c"], t1 + math.pi / 2, n),
-                     (-dd[n] * cmath.exp(1j * t1), abs(dd[n]))]
+            parts = [
+                link(geo["a"], "2", n),
+                link(geo["b"], "3", n, -1.0),
+                fixed(-geo["c"], t1 + math.pi / 2, n),
+                (-dd[n] * cmath.exp(1j * t1), abs(dd[n])),
+            ]
         else:  # a e2 - b(t) e3 - c e4 - d e1 = 0
             bb = [float(getattr(m, "b" + s)) for s in ("", "_dot", "_ddot", "_dddot")]
-            parts = [link(geo["a"], "2", n),
-                     link(bb[0], "3", n, -1.0, Ld=bb[1], Ldd=bb[2], Lddd=bb[3]),
-                     link(geo["c"], "4", n, -1.0), fixed(-geo["d"], t1, n)]
+            parts = [
+                link(geo["a"], "2", n),
+                link(bb[0], "3", n, -1.0, Ld=bb[1], Ldd=bb[2], Lddd=bb[3]),
+                link(geo["c"], "4", n, -1.0),
+                fixed(-geo["d"], t1, n),
+            ]
         residual = abs(sum(p[0] for p in parts))
         out.append(residual / sum(p[1] for p in parts))
     return out
 
 
-@pytest.mark.parametrize("mech, strategy", [
-    ("fourbar", fourbars()), ("slidercrank", slidercranks()),
-    ("invertedslidercrank", invertedslidercranks()), ("fivebar", fivebars())])
+@pytest.mark.parametrize(
+    "mech, strategy",
+    [
+        ("fourbar", fourbars()),
+        ("slidercrank", slidercranks()),
+        ("invertedslidercrank", invertedslidercranks()),
+        ("fivebar", fivebars()),
+    ],
+)
 def test_loop_closure_at_every_order(mech, strategy):
     @settings(max_examples=200)
     @given(case=strategy, circuit=circuits)
@@ -314,23 +417,40 @@ def test_loop_closure_at_every_order(mech, strategy):
         assert m.status == OK
         residuals = loop_residuals(mech, case, m)
         assert max(residuals) < 1e-13, residuals
+
     check()
 
 
 # ------------------------------------------------------------ rotation, slotted link
 
-@given(p=st.floats(0.01, 2.0), theta=st.floats(-math.pi, math.pi), omega=st.floats(-60, 60),
-       alpha=st.floats(-800, 800), jerk=st.floats(-2e4, 2e4))
+
+@given(
+    p=st.floats(0.01, 2.0),
+    theta=st.floats(-math.pi, math.pi),
+    omega=st.floats(-60, 60),
+    alpha=st.floats(-800, 800),
+    jerk=st.floats(-2e4, 2e4),
+)
 def test_rotating_point_matches_reference(p, theta, omega, alpha, jerk):
     got = rotation.rotating_point(p, theta, omega, alpha, jerk)
     want = ref.rotating_point(p, theta, omega, alpha, jerk)
-    assert_agree({k: complex(getattr(got, k)) for k in ("R", "V", "A", "A_t", "A_n", "J")},
-                 want, expected=("R", "V", "A", "A_t", "A_n", "J"))
+    assert_agree(
+        {k: complex(getattr(got, k)) for k in ("R", "V", "A", "A_t", "A_n", "J")},
+        want,
+        expected=("R", "V", "A", "A_t", "A_n", "J"),
+    )
 
 
-@given(theta=st.floats(-math.pi, math.pi), omega=st.floats(-60, 60), alpha=st.floats(-800, 800),
-       jerk=st.floats(-2e4, 2e4), p=st.floats(0.01, 2.0), p_dot=st.floats(-5, 5),
-       p_ddot=st.floats(-100, 100), p_dddot=st.floats(-1e3, 1e3))
+@given(
+    theta=st.floats(-math.pi, math.pi),
+    omega=st.floats(-60, 60),
+    alpha=st.floats(-800, 800),
+    jerk=st.floats(-2e4, 2e4),
+    p=st.floats(0.01, 2.0),
+    p_dot=st.floats(-5, 5),
+    p_ddot=st.floats(-100, 100),
+    p_dddot=st.floats(-1e3, 1e3),
+)
 def test_slotted_link_matches_reference(theta, omega, alpha, jerk, p, p_dot, p_ddot, p_dddot):
     names = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
     got = rotation.slotted_link(theta, omega, alpha, p, p_dot, p_ddot, p_dddot, jerk)
@@ -340,13 +460,15 @@ def test_slotted_link_matches_reference(theta, omega, alpha, jerk, p, p_dot, p_d
 
 # ------------------------------------------------------------ unit-aware outputs
 
+
 @given(case=invertedslidercranks(), circuit=circuits)
 def test_coriolis_slip_and_link4_point(case, circuit):
     """A_A = A_A4 + A_slip + A_coriolis (eq. 7.21), every part against the
     reference: A_A4 is the acceleration of the point of link 4 under A,
     differentiated as a point fixed to link 4; A_slip = b'' e3; the Coriolis
     term is what remains, 2 b' omega3 j e3 (eq. 7.21c)."""
-    from accelab.solver import InvertedSliderCrank, Q_
+    from accelab.solver import Q_, InvertedSliderCrank
+
     geo, mo = split("invertedslidercrank", case)
     first = reference("invertedslidercrank", case, circuit)
     # the point of link 4 under A: distance |A - O4| from O4 at its angle to link 4
@@ -357,11 +479,20 @@ def test_coriolis_slip_and_link4_point(case, circuit):
     want["A_slip"] = want["b_ddot"] * e3
     want["V_slip"] = want["b_dot"] * e3
     want["A_coriolis"] = want["A_A"] - want["A_A4"] - want["A_slip"]
-    mech = InvertedSliderCrank(a=Q_(geo["a"], "m"), c=Q_(geo["c"], "m"), d=Q_(geo["d"], "m"),
-                               gamma=Q_(geo["gamma"], "rad"), theta1=Q_(mo["theta1"], "rad"))
-    r = mech.solve(theta2=Q_(mo["theta2"], "rad"), omega2=Q_(mo["omega2"], "rad/s"),
-                   alpha2=Q_(mo["alpha2"], "rad/s^2"), jerk2=Q_(mo["jerk2"], "rad/s^3"),
-                   circuit=circuit)
+    mech = InvertedSliderCrank(
+        a=Q_(geo["a"], "m"),
+        c=Q_(geo["c"], "m"),
+        d=Q_(geo["d"], "m"),
+        gamma=Q_(geo["gamma"], "rad"),
+        theta1=Q_(mo["theta1"], "rad"),
+    )
+    r = mech.solve(
+        theta2=Q_(mo["theta2"], "rad"),
+        omega2=Q_(mo["omega2"], "rad/s"),
+        alpha2=Q_(mo["alpha2"], "rad/s^2"),
+        jerk2=Q_(mo["jerk2"], "rad/s^3"),
+        circuit=circuit,
+    )
     names = ("A_A", "A_A4", "A_slip", "V_slip", "A_coriolis", "A_B", "A_BA")
     got = {k: complex(r.si(k)) for k in names}
     # the Coriolis term is compared to the largest acceleration in the linkage
@@ -374,12 +505,17 @@ def test_coriolis_slip_and_link4_point(case, circuit):
 @given(case=fourbars(), circuit=circuits, extra=points_on_links([2, 3, 4]))
 def test_result_point_on_any_link(case, circuit, extra):
     """Result.point(link, p, delta) (eqs. 7.30-7.32, 7.41) and A_t, A_n about its base."""
-    from accelab.solver import FourBar, Q_
+    from accelab.solver import Q_, FourBar
+
     geo, mo = split("fourbar", case)
     fb = FourBar(**{k: Q_(v, "m") for k, v in geo.items()}, theta1=Q_(mo["theta1"], "rad"))
-    r = fb.solve(theta2=Q_(mo["theta2"], "rad"), omega2=Q_(mo["omega2"], "rad/s"),
-                 alpha2=Q_(mo["alpha2"], "rad/s^2"), jerk2=Q_(mo["jerk2"], "rad/s^3"),
-                 circuit=circuit)
+    r = fb.solve(
+        theta2=Q_(mo["theta2"], "rad"),
+        omega2=Q_(mo["omega2"], "rad/s"),
+        alpha2=Q_(mo["alpha2"], "rad/s^2"),
+        jerk2=Q_(mo["jerk2"], "rad/s^3"),
+        circuit=circuit,
+    )
     want = reference("fourbar", case, circuit, extra)
     got = {}
     for name, link, p, delta in extra:
@@ -397,13 +533,22 @@ def test_result_point_on_any_link(case, circuit, extra):
 
 @given(case=fivebars(), circuit=circuits)
 def test_fivebar_link5_through_the_unit_layer(case, circuit):
-    from accelab.solver import GearedFiveBar, Q_
+    from accelab.solver import Q_, GearedFiveBar
+
     geo, mo = split("fivebar", case)
-    fb = GearedFiveBar(**{k: Q_(v, "m") for k, v in geo.items() if k not in ("lam", "phi")},
-                       lam=geo["lam"], phi=Q_(geo["phi"], "rad"), theta1=Q_(mo["theta1"], "rad"))
-    r = fb.solve(theta2=Q_(mo["theta2"], "rad"), omega2=Q_(mo["omega2"], "rad/s"),
-                 alpha2=Q_(mo["alpha2"], "rad/s^2"), jerk2=Q_(mo["jerk2"], "rad/s^3"),
-                 circuit=circuit)
+    fb = GearedFiveBar(
+        **{k: Q_(v, "m") for k, v in geo.items() if k not in ("lam", "phi")},
+        lam=geo["lam"],
+        phi=Q_(geo["phi"], "rad"),
+        theta1=Q_(mo["theta1"], "rad"),
+    )
+    r = fb.solve(
+        theta2=Q_(mo["theta2"], "rad"),
+        omega2=Q_(mo["omega2"], "rad/s"),
+        alpha2=Q_(mo["alpha2"], "rad/s^2"),
+        jerk2=Q_(mo["jerk2"], "rad/s^3"),
+        circuit=circuit,
+    )
     names = ["theta5", "omega5", "alpha5", "jerk5", "R_C", "V_C", "A_C", "J_C", "A_B", "J_B"]
     got = {k: (complex(r.si(k)) if k[1] == "_" else float(r.si(k))) for k in names}
     assert_agree(got, reference("fivebar", case, circuit), expected=names)
@@ -421,18 +566,21 @@ def test_batch_matches_reference_cases():
     angles modulo 2 pi, the branch chosen by the positions, expected errors
     by kind."""
     from accelab.solver.batch import solve_cases
+
     cases = json.loads(DATA.read_text())
     results = solve_cases([c["input"] for c in cases])
     assert len(results) == len(cases)
     for case, res in zip(cases, results):
         expect = case["expect"]
         if "error" in expect:
-            assert res["ok"] is False and res["error"] == expect["error"] and res["message"], \
-                case["id"]
+            assert res["ok"] is False and res["error"] == expect["error"] and res["message"], case[
+                "id"
+            ]
             continue
         assert res["ok"], (case["id"], res)
-        why = check.compare_to_branches(case["input"]["mechanism"], res, expect["ok"], 1e-8,
-                                      case["input"].get("circuit"))
+        why = check.compare_to_branches(
+            case["input"]["mechanism"], res, expect["ok"], 1e-8, case["input"].get("circuit")
+        )
         assert not why, f"{case['id']}: {why}"
 
 
@@ -440,6 +588,7 @@ def test_fast_quantities_behave_as_pint_built_ones():
     """accelab.solver.units.quantity assembles Quantities without pint's constructor;
     they must be indistinguishable from Q_(value, unit)."""
     from accelab.solver.units import Q_, SI_UNITS, quantity
+
     for value in (2.5, -1.5 + 0.5j, np.array([1.0, 2.0]), np.array([1j, 2.0])):
         fast, slow = quantity(value, "acceleration"), Q_(value, SI_UNITS["acceleration"])
         assert type(fast) is type(slow) and fast.units == slow.units

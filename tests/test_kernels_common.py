@@ -10,8 +10,19 @@ import pytest
 
 from accelab.solver.kernels import common, fivebar, fourbar, invertedslidercrank, slidercrank
 
-ORDER3 = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
-          "status", "condition", "roundoff")
+ORDER3 = (
+    "theta3",
+    "theta4",
+    "omega3",
+    "omega4",
+    "alpha3",
+    "alpha4",
+    "jerk3",
+    "jerk4",
+    "status",
+    "condition",
+    "roundoff",
+)
 
 
 def same(x, y):
@@ -36,7 +47,7 @@ def test_fourbar_in_place_pieces_match_whole_array_and_scalars(monkeypatch, circ
     args = (5.0, 4.0, 6.0, 3.5, theta2, omega2, -30.0, 400.0, 0.35, circuit)
     blocks = fourbar.solve(*args)
     assert set(np.unique(blocks.status)) >= {0, 1}
-    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10 ** 9)   # one whole-array evaluation
+    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10**9)  # one whole-array evaluation
     whole = fourbar.solve(*args)
     for name in ORDER3:
         assert same(getattr(blocks, name), getattr(whole, name)), name
@@ -44,11 +55,14 @@ def test_fourbar_in_place_pieces_match_whole_array_and_scalars(monkeypatch, circ
         for x, y in zip(blocks.directions[link], whole.directions[link]):
             assert same(x, y), link
     for i in (0, common.PIECE - 1, common.PIECE, n - 1):
-        one = fourbar.solve(5.0, 4.0, 6.0, 3.5, float(theta2[i]), float(omega2[i]), -30.0,
-                            400.0, 0.35, circuit)
+        one = fourbar.solve(
+            5.0, 4.0, 6.0, 3.5, float(theta2[i]), float(omega2[i]), -30.0, 400.0, 0.35, circuit
+        )
         for name in ORDER3:
-            assert np.array_equal(getattr(one, name), getattr(blocks, name)[i],
-                                  equal_nan=True), (i, name)
+            assert np.array_equal(getattr(one, name), getattr(blocks, name)[i], equal_nan=True), (
+                i,
+                name,
+            )
 
 
 @pytest.mark.parametrize("order", [0, 1, 2])
@@ -57,10 +71,10 @@ def test_fourbar_in_place_lower_orders_and_shapes(monkeypatch, order):
     monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 0)
     theta2 = np.linspace(-4.0, 4.0, 3 * 1001).reshape(3, 1001)
     blocks = fourbar.solve(2.0, 6.0, 9.0, 7.0, theta2, 10.0, -5.0, order=order)
-    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10 ** 9)
+    monkeypatch.setattr(fourbar, "MIN_IN_PLACE", 10**9)
     whole = fourbar.solve(2.0, 6.0, 9.0, 7.0, theta2, 10.0, -5.0, order=order)
     assert blocks.keys() == whole.keys() and blocks.order == whole.order == order
-    for name in ORDER3[:2 + 2 * order] + ORDER3[-3:]:
+    for name in ORDER3[: 2 + 2 * order] + ORDER3[-3:]:
         assert same(getattr(blocks, name), getattr(whole, name)), name
 
 

@@ -25,20 +25,21 @@ there, and the kernels answer them to full accuracy.
 
 import math
 
+import _checks as check
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings, strategies as st
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 from mpmath import mp, mpf
+from test_kernels_accuracy import kernel_outputs, run_kernel
 
-import _checks as check
 import accelab.benchmarks.reference as ref
 from accelab.solver.batch import solve_cases
 from accelab.solver.kernels import NOT_ASSEMBLABLE, OK, SINGULAR
-from test_kernels_accuracy import kernel_outputs, run_kernel
 
-DELTAS = [10.0 ** -k for k in range(1, 13)]
-MUST_ANSWER = 1e-4     # farther than this from a limit, refusing is wrong
-BOUND = 2e-6           # what an answer must meet (the project asks 1e-5)
+DELTAS = [10.0**-k for k in range(1, 13)]
+MUST_ANSWER = 1e-4  # farther than this from a limit, refusing is wrong
+BOUND = 2e-6  # what an answer must meet (the project asks 1e-5)
 FLOOR = 1e-3
 MOTION = dict(omega2=7.0, alpha2=-30.0, jerk2=400.0, theta1=0.35)
 
@@ -50,7 +51,7 @@ GEOMETRIES = [
     # fourbar with a short rocker (c/a = 1/400): round-off grows fastest here
     ("fourbar", dict(a=0.68, b=0.6, c=0.0017, d=0.15, p=0.3, delta3=0.7)),
     ("slidercrank", dict(a=0.3, b=0.2, c=0.05)),
-    ("slidercrank", dict(a=0.42, b=0.002, c=-0.29)),        # a rod 200 times shorter
+    ("slidercrank", dict(a=0.42, b=0.002, c=-0.29)),  # a rod 200 times shorter
     ("invertedslidercrank", dict(a=0.1, c=0.24, d=0.16, gamma=-2.1)),
     ("invertedslidercrank", dict(a=0.0316, c=0.0014, d=0.0326, gamma=1.485)),
     ("fivebar", dict(a=0.046, b=0.122, c=0.0615, d=0.148, f=0.2168, lam=-1.0, phi=-1.06)),
@@ -67,19 +68,27 @@ def limit_angles(mech, geo):
     side (+1 / -1) of theta2 on which the linkage assembles."""
     with mp.workdps(ref.mechanisms.DPS):
         if mech == "fourbar":
-            found = [(f"{kind}{'+-'[k]}", sign * t)
-                     for kind, (t, _) in ref.fourbar_limits(geo["a"], geo["b"], geo["c"],
-                                                            geo["d"]).items()
-                     for k, sign in enumerate((1, -1))]
+            found = [
+                (f"{kind}{'+-'[k]}", sign * t)
+                for kind, (t, _) in ref.fourbar_limits(
+                    geo["a"], geo["b"], geo["c"], geo["d"]
+                ).items()
+                for k, sign in enumerate((1, -1))
+            ]
         elif mech == "slidercrank":
-            found = [(f"{kind}{i}", t) for kind, ts in ref.slidercrank_limits(**geo).items()
-                     for i, t in enumerate(ts)]
+            found = [
+                (f"{kind}{i}", t)
+                for kind, ts in ref.slidercrank_limits(**geo).items()
+                for i, t in enumerate(ts)
+            ]
         elif mech == "invertedslidercrank":
             t = ref.invertedslidercrank_limit(**geo)
             found = [] if t is None else [("tangent+", t), ("tangent-", -t)]
         else:
-            found = [(f"{kind}{i}", t) for i, (t, kind) in
-                     enumerate(ref.fivebar_limits(geo, -math.pi, math.pi))]
+            found = [
+                (f"{kind}{i}", t)
+                for i, (t, kind) in enumerate(ref.fivebar_limits(geo, -math.pi, math.pi))
+            ]
         out = []
         for label, t in found:
             up, down = (_assembles(mech, geo, t + s * mpf("1e-6")) for s in (1, -1))
@@ -97,8 +106,9 @@ def near_limit(mech, geo, t_star, side, delta, circuit, motion=MOTION):
     with mp.workdps(ref.mechanisms.DPS):
         inside = float(t_star + side * mpf(delta) + theta1)
         past = float(t_star - side * mpf(delta) + theta1)
-    want = ref.solve(mech, geo, inside, motion["omega2"], motion["alpha2"], motion["jerk2"],
-                     theta1, circuit)
+    want = ref.solve(
+        mech, geo, inside, motion["omega2"], motion["alpha2"], motion["jerk2"], theta1, circuit
+    )
     status, errors = None, {}
     if want is not None:
         case = dict(geo, theta2=inside, **motion)
@@ -141,8 +151,9 @@ def check_sweep(mech, geo, circuit, deltas=DELTAS, motion=MOTION):
 
 
 @pytest.mark.parametrize("circuit", ["open", "crossed"])
-@pytest.mark.parametrize("mech, geo", GEOMETRIES,
-                         ids=[f"{m}-{i}" for i, (m, _) in enumerate(GEOMETRIES)])
+@pytest.mark.parametrize(
+    "mech, geo", GEOMETRIES, ids=[f"{m}-{i}" for i, (m, _) in enumerate(GEOMETRIES)]
+)
 def test_near_limit_answered_accurately_or_refused(mech, geo, circuit):
     refused_from = check_sweep(mech, geo, circuit)
     # and the refusal does not start far out: only within 1e-6 rad here
@@ -150,25 +161,36 @@ def test_near_limit_answered_accurately_or_refused(mech, geo, circuit):
 
 
 def test_limits_exist_in_every_fixed_geometry():
-    kinds = {(mech, label.rstrip("+-0123456789")) for mech, geo in GEOMETRIES
-             for label, _, _ in limit_angles(mech, geo)}
-    assert {("fourbar", "outer"), ("fourbar", "inner"), ("slidercrank", "upper"),
-            ("slidercrank", "lower"), ("invertedslidercrank", "tangent"),
-            ("fivebar", "outer")} <= kinds
+    kinds = {
+        (mech, label.rstrip("+-0123456789"))
+        for mech, geo in GEOMETRIES
+        for label, _, _ in limit_angles(mech, geo)
+    }
+    assert {
+        ("fourbar", "outer"),
+        ("fourbar", "inner"),
+        ("slidercrank", "upper"),
+        ("slidercrank", "lower"),
+        ("invertedslidercrank", "tangent"),
+        ("fivebar", "outer"),
+    } <= kinds
 
 
 # ------------------------------------------------------------ at the limit itself
 
-@pytest.mark.parametrize("mech, geo", GEOMETRIES[:1] + GEOMETRIES[3:4] + GEOMETRIES[5:6]
-                         + GEOMETRIES[7:8])
+
+@pytest.mark.parametrize(
+    "mech, geo", GEOMETRIES[:1] + GEOMETRIES[3:4] + GEOMETRIES[5:6] + GEOMETRIES[7:8]
+)
 def test_at_the_limit_and_within_roundoff_is_singular_with_a_position(mech, geo):
     """At the toggle itself (and within round-off of it, on either side) the
     kernel says singular, not not_assemblable, and still gives the position."""
     label, t_star, side = limit_angles(mech, geo)[0]
     for offset in (0.0, 1e-16, -1e-16, 4e-16, -4e-16):
         theta2 = float(t_star + mpf(offset))
-        m = run_kernel(mech, dict(geo, theta2=theta2, omega2=1.0, alpha2=0.0, jerk2=0.0,
-                                  theta1=0.0), "open")
+        m = run_kernel(
+            mech, dict(geo, theta2=theta2, omega2=1.0, alpha2=0.0, jerk2=0.0, theta1=0.0), "open"
+        )
         assert m.status == SINGULAR, (label, offset, m.status)
         assert np.isfinite(m.theta3) and np.isnan(m.omega3)
         with mp.workdps(ref.mechanisms.DPS):
@@ -177,6 +199,7 @@ def test_at_the_limit_and_within_roundoff_is_singular_with_a_position(mech, geo)
 
 
 # ------------------------------------------------------------ the rocker's extremes
+
 
 @pytest.mark.parametrize("circuit", ["open", "crossed"])
 def test_rocker_extremes_are_not_singular(circuit):
@@ -192,8 +215,7 @@ def test_rocker_extremes_are_not_singular(circuit):
             omega4 = []
             for delta in (1e-1, 1e-3, 1e-6, 1e-9, 1e-12, -1e-12, -1e-9, -1e-6, -1e-3, -1e-1):
                 theta2 = float(t_star + mpf(delta))
-                case = dict(geo, theta2=theta2, omega2=30.0, alpha2=-50.0, jerk2=1e3,
-                            theta1=0.0)
+                case = dict(geo, theta2=theta2, omega2=30.0, alpha2=-50.0, jerk2=1e3, theta1=0.0)
                 m = run_kernel("fourbar", case, circuit)
                 assert m.status == OK
                 want = ref.solve("fourbar", geo, theta2, 30.0, -50.0, 1e3, 0.0, circuit)
@@ -203,47 +225,71 @@ def test_rocker_extremes_are_not_singular(circuit):
                 omega4.append(float(m.omega4))
             # on the circuit whose rocker is at its extreme there, omega4 changes sign
             with mp.workdps(ref.mechanisms.DPS):
-                _, _, pts = ref.fourbar_position({k: mpf(v) for k, v in geo.items()}, t_star,
-                                                 ref.CIRCUIT_SIGN[circuit])
+                _, _, pts = ref.fourbar_position(
+                    {k: mpf(v) for k, v in geo.items()}, t_star, ref.CIRCUIT_SIGN[circuit]
+                )
                 r = mpf(geo["a"]) + (1 if kind == "extended" else -1) * mpf(geo["b"])
                 extreme = abs(abs(pts["B"]) - abs(r)) < 1e-20
             if extreme:
                 extremes += 1
                 assert omega4[0] * omega4[-1] < 0 and abs(omega4[4]) < 1e-9 * 30
-    assert extremes == 2   # each circuit reaches both extremes, one per side of the ground
+    assert extremes == 2  # each circuit reaches both extremes, one per side of the ground
 
 
 # ------------------------------------------------------------ random geometries
 
 log_lengths = st.floats(math.log(0.01), 0.0).map(math.exp)
-log_deltas = st.floats(-12.0, -1.0).map(lambda e: 10.0 ** e)
+log_deltas = st.floats(-12.0, -1.0).map(lambda e: 10.0**e)
 
 
 @st.composite
 def near_limit_cases(draw):
     mech = draw(st.sampled_from(["fourbar", "slidercrank", "invertedslidercrank", "fivebar"]))
     if mech == "fourbar":
-        geo = dict(a=draw(log_lengths), b=draw(log_lengths), c=draw(log_lengths),
-                   d=draw(log_lengths))
+        geo = dict(
+            a=draw(log_lengths), b=draw(log_lengths), c=draw(log_lengths), d=draw(log_lengths)
+        )
     elif mech == "slidercrank":
-        geo = dict(a=draw(log_lengths), b=draw(log_lengths),
-                   c=draw(st.sampled_from([-1.0, 1.0])) * draw(log_lengths))
+        geo = dict(
+            a=draw(log_lengths),
+            b=draw(log_lengths),
+            c=draw(st.sampled_from([-1.0, 1.0])) * draw(log_lengths),
+        )
     elif mech == "invertedslidercrank":
-        geo = dict(a=draw(log_lengths), c=draw(log_lengths), d=draw(log_lengths),
-                   gamma=draw(st.floats(-math.pi, math.pi)))
+        geo = dict(
+            a=draw(log_lengths),
+            c=draw(log_lengths),
+            d=draw(log_lengths),
+            gamma=draw(st.floats(-math.pi, math.pi)),
+        )
     else:
-        geo = dict(a=draw(log_lengths), b=draw(log_lengths), c=draw(log_lengths),
-                   d=draw(log_lengths), f=draw(log_lengths),
-                   lam=draw(st.sampled_from([-2.0, -1.0, -0.5, 0.5, 2.0])),
-                   phi=draw(st.floats(-math.pi, math.pi)))
+        geo = dict(
+            a=draw(log_lengths),
+            b=draw(log_lengths),
+            c=draw(log_lengths),
+            d=draw(log_lengths),
+            f=draw(log_lengths),
+            lam=draw(st.sampled_from([-2.0, -1.0, -0.5, 0.5, 2.0])),
+            phi=draw(st.floats(-math.pi, math.pi)),
+        )
     limits = limit_angles(mech, geo)
     assume(limits)
     which = draw(st.integers(0, len(limits) - 1))
     sign = draw(st.sampled_from([-1.0, 1.0]))
-    motion = dict(omega2=sign * draw(st.floats(0.5, 60.0)), alpha2=draw(st.floats(-800, 800)),
-                  jerk2=draw(st.floats(-2e4, 2e4)), theta1=draw(st.floats(-math.pi, math.pi)))
-    return mech, geo, limits[which], draw(log_deltas), draw(st.sampled_from(["open", "crossed"])), \
-        motion
+    motion = dict(
+        omega2=sign * draw(st.floats(0.5, 60.0)),
+        alpha2=draw(st.floats(-800, 800)),
+        jerk2=draw(st.floats(-2e4, 2e4)),
+        theta1=draw(st.floats(-math.pi, math.pi)),
+    )
+    return (
+        mech,
+        geo,
+        limits[which],
+        draw(log_deltas),
+        draw(st.sampled_from(["open", "crossed"])),
+        motion,
+    )
 
 
 @settings(max_examples=80)
@@ -252,7 +298,7 @@ def test_random_geometries_near_a_limit(case):
     """Lengths spread over two decades, any limit, delta from 1e-12 to 1e-1."""
     mech, geo, (label, t_star, side), delta, circuit, motion = case
     status, errors, past = near_limit(mech, geo, t_star, side, delta, circuit, motion)
-    assume(status is not None)    # another limit nearer than delta
+    assume(status is not None)  # another limit nearer than delta
     if delta > MUST_ANSWER:
         assert status == OK
     if status == OK:
@@ -266,12 +312,32 @@ def test_random_geometries_near_a_limit(case):
 # ------------------------------------------------------------ through the batch
 
 BATCH = [
-    ("fourbar", {"a": "4 in", "b": "3 in", "c": "2 in", "d": "5 in", "theta1": "20 deg",
-                 "p": "1.5 in", "delta3": "30 deg"}),
+    (
+        "fourbar",
+        {
+            "a": "4 in",
+            "b": "3 in",
+            "c": "2 in",
+            "d": "5 in",
+            "theta1": "20 deg",
+            "p": "1.5 in",
+            "delta3": "30 deg",
+        },
+    ),
     ("slidercrank", {"a": "30 mm", "b": "20 mm", "c": "5 mm"}),
     ("invertedslidercrank", {"a": "100 mm", "c": "240 mm", "d": "160 mm", "gamma": "-120 deg"}),
-    ("fivebar", {"a": "46 mm", "b": "122 mm", "c": "61.5 mm", "d": "148 mm", "f": "216.8 mm",
-                 "lam": -1, "phi": "-60 deg"}),
+    (
+        "fivebar",
+        {
+            "a": "46 mm",
+            "b": "122 mm",
+            "c": "61.5 mm",
+            "d": "148 mm",
+            "f": "216.8 mm",
+            "lam": -1,
+            "phi": "-60 deg",
+        },
+    ),
 ]
 METRES = {"in": mpf("0.0254"), "mm": mpf("0.001"), "deg": None}
 
@@ -300,15 +366,32 @@ def test_batch_near_limits_with_the_reference_check_rules(mech, geo):
             for delta in (1e-2, 1e-3, 1e-4, 3e-5, 1e-6, 1e-8, 1e-10, 1e-12):
                 for circuit in ("open", "crossed"):
                     theta2 = repr(float(mp.degrees(t_star + side * mpf(delta) + theta1)))
-                    case = dict(geo, mechanism=mech, theta2=f"{theta2} deg", omega2="300 rpm",
-                                alpha2="-2000 deg/s^2", jerk2="400 rad/s^3", circuit=circuit)
-                    motion = (_si(f"{theta2} deg"), mpf(300) * 2 * mp.pi / 60,
-                              mpf(-2000) * mp.pi / 180, mpf(400), theta1)
+                    case = dict(
+                        geo,
+                        mechanism=mech,
+                        theta2=f"{theta2} deg",
+                        omega2="300 rpm",
+                        alpha2="-2000 deg/s^2",
+                        jerk2="400 rad/s^3",
+                        circuit=circuit,
+                    )
+                    motion = (
+                        _si(f"{theta2} deg"),
+                        mpf(300) * 2 * mp.pi / 60,
+                        mpf(-2000) * mp.pi / 180,
+                        mpf(400),
+                        theta1,
+                    )
                     other = "crossed" if circuit == "open" else "open"
                     branches = [ref.batch_branch(mech, g, *motion, c) for c in (other, circuit)]
                     cases.append(case)
-                    expected.append((f"{label} {circuit} {delta:.0e}", delta,
-                                     [b for b in branches if b is not None]))
+                    expected.append(
+                        (
+                            f"{label} {circuit} {delta:.0e}",
+                            delta,
+                            [b for b in branches if b is not None],
+                        )
+                    )
     results = solve_cases(cases)
     answered = 0
     for (name, delta, branches), res in zip(expected, results):

@@ -31,8 +31,14 @@ import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 #: import name of each layer -> its folder in the repository
-FOLDERS = {"accelab": "accelab", "accelab.solver": "solver", "accelab.exercises": "exercises",
-           "accelab.benchmarks": "benchmarks", "accelab.course": "course", "docs": "docs"}
+FOLDERS = {
+    "accelab": "accelab",
+    "accelab.solver": "solver",
+    "accelab.exercises": "exercises",
+    "accelab.benchmarks": "benchmarks",
+    "accelab.course": "course",
+    "docs": "docs",
+}
 #: the names the layers had before they moved into ``accelab``: never imported again
 OLD_NAMES = ("solver", "exercises", "benchmarks", "course")
 LAYERS = ("app", "solver", "exercises", "benchmarks", "course", "docs")
@@ -42,24 +48,36 @@ MAY_IMPORT = {
     "app": set(LAYERS),
     "solver": {"solver"},
     "exercises": {"solver", "exercises"},
-    "benchmarks": {"solver", "exercises", "benchmarks"},   # they measure grading too
+    "benchmarks": {"solver", "exercises", "benchmarks"},  # they measure grading too
     "course": {"solver", "exercises", "benchmarks", "course"},
     "docs": {"solver", "exercises", "benchmarks", "course", "docs"},
 }
 
 #: subpackages and what of the project they must not import
 MUST_NOT = {
-    "accelab.solver.kernels": ("accelab.solver.mechanisms", "accelab.solver.vectorloops",
-                               "accelab.solver.graphical", "accelab.solver.batch",
-                               "accelab.solver.cases", "accelab.solver.units",
-                               "accelab.solver.cli", "pint"),
-    "accelab.solver.graphical": ("accelab.solver.mechanisms", "accelab.solver.kernels",
-                                 "accelab.solver.vectorloops", "accelab.solver.batch"),
+    "accelab.solver.kernels": (
+        "accelab.solver.mechanisms",
+        "accelab.solver.vectorloops",
+        "accelab.solver.graphical",
+        "accelab.solver.batch",
+        "accelab.solver.cases",
+        "accelab.solver.units",
+        "accelab.solver.cli",
+        "pint",
+    ),
+    "accelab.solver.graphical": (
+        "accelab.solver.mechanisms",
+        "accelab.solver.kernels",
+        "accelab.solver.vectorloops",
+        "accelab.solver.batch",
+    ),
     # the sandbox shows a submission exercises/student/ and nothing else of the exercises
     "accelab.exercises.student": tuple(
-        f"accelab.exercises.{p.stem}" for p in sorted((ROOT / "exercises").iterdir())
+        f"accelab.exercises.{p.stem}"
+        for p in sorted((ROOT / "exercises").iterdir())
         if p.name not in ("student", "__init__.py", "__pycache__")
-        and (p.suffix == ".py" or (p / "__init__.py").is_file())),
+        and (p.suffix == ".py" or (p / "__init__.py").is_file())
+    ),
 }
 
 #: arrows up allowed as exceptions: none (the command is ``accelab``, or
@@ -88,7 +106,7 @@ def path_of(dotted):
     """The repository path of a module of the project (without suffix), or None."""
     for name in sorted(FOLDERS, key=len, reverse=True):
         if dotted == name or dotted.startswith(name + "."):
-            rest = dotted[len(name):].lstrip(".")
+            rest = dotted[len(name) :].lstrip(".")
             return ROOT.joinpath(FOLDERS[name], *(rest.split(".") if rest else []))
     return None
 
@@ -101,7 +119,7 @@ def modules():
             if "__pycache__" in path.parts or (folder == "accelab" and path.parent != base):
                 continue
             if folder == "course" and path.name[:2].isdigit():
-                continue                      # the notebooks: checked by tests/test_course.py
+                continue  # the notebooks: checked by tests/test_course.py
             parts = list(path.relative_to(base).with_suffix("").parts)
             if parts[-1] == "__init__":
                 parts = parts[:-1]
@@ -120,7 +138,7 @@ def imports(name, path):
         elif isinstance(node, ast.ImportFrom):
             if node.level:
                 base = package.split(".")
-                base = base[:len(base) - (node.level - 1)]
+                base = base[: len(base) - (node.level - 1)]
                 module = ".".join(base + ([node.module] if node.module else []))
             else:
                 module = node.module
@@ -142,8 +160,9 @@ def _is_module(dotted):
     """Whether ``dotted`` names a module or package of the project (so that a
     string like ``"accelab.json"`` does not count)."""
     path = path_of(dotted)
-    return path is not None and (path.with_suffix(".py").is_file()
-                                 or (path / "__init__.py").is_file())
+    return path is not None and (
+        path.with_suffix(".py").is_file() or (path / "__init__.py").is_file()
+    )
 
 
 def violations():
@@ -153,11 +172,13 @@ def violations():
         for target in sorted(imports(name, path)):
             where = path.relative_to(ROOT)
             if target.split(".")[0] in OLD_NAMES:
-                bad.append(f"{where}: imports {target}: the old top-level name "
-                           f"(now accelab.{target})")
+                bad.append(
+                    f"{where}: imports {target}: the old top-level name (now accelab.{target})"
+                )
                 continue
-            if any(name == n and (target == t or target.startswith(t + "."))
-                   for n, t in COMPATIBILITY):
+            if any(
+                name == n and (target == t or target.startswith(t + ".")) for n, t in COMPATIBILITY
+            ):
                 continue
             to = layer_of(target)
             if to not in (None, "accelab") and to not in MAY_IMPORT[layer]:
@@ -176,11 +197,19 @@ def test_no_import_breaks_the_layers():
 
 def test_the_walk_sees_every_layer_and_the_rules_bite(tmp_path):
     names = {name for name, _ in modules()}
-    for top in ("accelab", "accelab.solver", "accelab.exercises", "accelab.benchmarks",
-                "accelab.course"):
+    for top in (
+        "accelab",
+        "accelab.solver",
+        "accelab.exercises",
+        "accelab.benchmarks",
+        "accelab.course",
+    ):
         assert top in names
-    assert {"accelab.solver.kernels.fourbar", "accelab.cli",
-            "accelab.benchmarks.reference"} <= names
+    assert {
+        "accelab.solver.kernels.fourbar",
+        "accelab.cli",
+        "accelab.benchmarks.reference",
+    } <= names
     assert {layer_of(n) for n in names} == set(LAYERS) | {"accelab"}
     # a relative import, an import inside a function and a module named by a
     # string are all seen
@@ -189,7 +218,8 @@ def test_the_walk_sees_every_layer_and_the_rules_bite(tmp_path):
     (fake / "__init__.py").write_text(
         "from ..kernels import fourbar\n"
         "def f():\n    import accelab.exercises.cli\n"
-        "LAYERS = ['accelab.benchmarks.cli']\n")
+        "LAYERS = ['accelab.benchmarks.cli']\n"
+    )
     found = imports("accelab.solver.cli", fake / "__init__.py")
     assert {"accelab.solver.kernels", "accelab.exercises.cli", "accelab.benchmarks.cli"} <= found
     assert layer_of("accelab.exercises.cli") not in MAY_IMPORT["solver"]
@@ -198,7 +228,14 @@ def test_the_walk_sees_every_layer_and_the_rules_bite(tmp_path):
 @pytest.mark.parametrize("module", ["solver", "exercises", "benchmarks", "course"])
 def test_compatibility_entries_are_the_only_arrows_up(module):
     """Nothing of the library reaches the application layer."""
-    ups = [(name, t) for name, path in modules() if layer_of(name) == module
-           for t in imports(name, path) if layer_of(t) == "app"]
-    assert all(any(n == name and (t == up or t.startswith(up + ".")) for n, up in COMPATIBILITY)
-               for name, t in ups)
+    ups = [
+        (name, t)
+        for name, path in modules()
+        if layer_of(name) == module
+        for t in imports(name, path)
+        if layer_of(t) == "app"
+    ]
+    assert all(
+        any(n == name and (t == up or t.startswith(up + ".")) for n, up in COMPATIBILITY)
+        for name, t in ups
+    )

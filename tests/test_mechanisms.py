@@ -5,34 +5,49 @@ lazy outputs."""
 import numpy as np
 import pytest
 
-from accelab.solver import (FourBar, GearedFiveBar, InvalidInput, InvertedSliderCrank, NotAssemblable,
-                    Q_, RotatingPoint, Singular, SliderCrank, SlottedLink, ureg)
+from accelab.solver import (
+    Q_,
+    FourBar,
+    GearedFiveBar,
+    InvalidInput,
+    InvertedSliderCrank,
+    NotAssemblable,
+    RotatingPoint,
+    Singular,
+    SliderCrank,
+    SlottedLink,
+    ureg,
+)
 from accelab.solver.kernels import fourbar as fourbar_kernel
 
 
 def test_units_do_not_change_the_answer():
     """The same linkage in inches/degrees and in metres/radians agrees exactly."""
     us = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
-        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
-    si = FourBar(a=Q_(0.0508, "m"), b=Q_(0.1524, "m"), c=Q_(0.2286, "m"),
-                 d=Q_(0.1778, "m")).solve(theta2=Q_(np.pi / 6, "rad"),
-                                          omega2=Q_(10, "rad/s"), alpha2=Q_(-5, "rad/s^2"))
+        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2"
+    )
+    si = FourBar(a=Q_(0.0508, "m"), b=Q_(0.1524, "m"), c=Q_(0.2286, "m"), d=Q_(0.1778, "m")).solve(
+        theta2=Q_(np.pi / 6, "rad"), omega2=Q_(10, "rad/s"), alpha2=Q_(-5, "rad/s^2")
+    )
     for name in ("theta3", "omega4", "alpha3", "jerk4"):
         assert getattr(us, name).m == pytest.approx(getattr(si, name).m, rel=1e-13)
     assert us.A_B.to("m/s^2").m == pytest.approx(si.A_B.m, rel=1e-13)
     assert str(us.A_B.units) == "meter / second ** 2"
 
 
-@pytest.mark.parametrize("kwargs, name, words", [
-    (dict(a="2 s"), "a", "must be a length"),
-    (dict(a=2.0), "a", "needs units"),
-    (dict(a="-2 in"), "a", "must be positive"),
-    (dict(a="0 in"), "a", "must be positive"),
-    (dict(a="nan in"), "a", "must be finite"),
-    (dict(a="inf in"), "a", "must be finite"),
-    (dict(a="two inches"), "a", "could not be read"),
-    (dict(theta1="3 in"), "theta1", "must be an angle"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name, words",
+    [
+        (dict(a="2 s"), "a", "must be a length"),
+        (dict(a=2.0), "a", "needs units"),
+        (dict(a="-2 in"), "a", "must be positive"),
+        (dict(a="0 in"), "a", "must be positive"),
+        (dict(a="nan in"), "a", "must be finite"),
+        (dict(a="inf in"), "a", "must be finite"),
+        (dict(a="two inches"), "a", "could not be read"),
+        (dict(theta1="3 in"), "theta1", "must be an angle"),
+    ],
+)
 def test_invalid_geometry_names_the_parameter(kwargs, name, words):
     geometry = dict(a="2 in", b="6 in", c="9 in", d="7 in")
     geometry.update(kwargs)
@@ -43,15 +58,18 @@ def test_invalid_geometry_names_the_parameter(kwargs, name, words):
     assert info.value.kind == "invalid_input"
 
 
-@pytest.mark.parametrize("kwargs, name", [
-    (dict(theta2="30"), "theta2"),         # a bare number could be degrees or radians
-    (dict(theta2="30 in"), "theta2"),
-    (dict(omega2="10 rad/s^2"), "omega2"),
-    (dict(omega2=10), "omega2"),
-    (dict(alpha2="5 m/s^2"), "alpha2"),
-    (dict(jerk2="1 rad/s^2"), "jerk2"),
-    (dict(circuit="closed"), "circuit"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(theta2="30"), "theta2"),  # a bare number could be degrees or radians
+        (dict(theta2="30 in"), "theta2"),
+        (dict(omega2="10 rad/s^2"), "omega2"),
+        (dict(omega2=10), "omega2"),
+        (dict(alpha2="5 m/s^2"), "alpha2"),
+        (dict(jerk2="1 rad/s^2"), "jerk2"),
+        (dict(circuit="closed"), "circuit"),
+    ],
+)
 def test_invalid_motion_names_the_parameter(kwargs, name):
     args = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
     args.update(kwargs)
@@ -90,11 +108,23 @@ def test_sweep_returns_mask_instead_of_raising():
 def test_scalar_and_array_agree():
     fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in", theta1="10 deg")
     angles = np.radians([0.0, 33.0, 170.0, 271.0])
-    arr = fb.solve(theta2=Q_(angles, "rad"), omega2="10 rad/s", alpha2="-5 rad/s^2",
-                   jerk2="3 rad/s^3", p="3 in", delta3="20 deg")
+    arr = fb.solve(
+        theta2=Q_(angles, "rad"),
+        omega2="10 rad/s",
+        alpha2="-5 rad/s^2",
+        jerk2="3 rad/s^3",
+        p="3 in",
+        delta3="20 deg",
+    )
     for i, t in enumerate(angles):
-        one = fb.solve(theta2=Q_(t, "rad"), omega2="10 rad/s", alpha2="-5 rad/s^2",
-                       jerk2="3 rad/s^3", p="3 in", delta3="20 deg")
+        one = fb.solve(
+            theta2=Q_(t, "rad"),
+            omega2="10 rad/s",
+            alpha2="-5 rad/s^2",
+            jerk2="3 rad/s^3",
+            p="3 in",
+            delta3="20 deg",
+        )
         for name in one.outputs():
             assert np.allclose(getattr(one, name).m, getattr(arr, name).m[i], rtol=4e-16, atol=0)
 
@@ -110,13 +140,12 @@ def test_singular_scalar_raises_and_sweep_masks():
         fb.solve(theta2=Q_(t_lim - 1e-13, "rad"), omega2="1 rad/s")
     assert info.value.condition < 1e-4
     assert "limit position" in str(info.value)
-    r = fb.solve(theta2=Q_(t_lim - 1e-3, "rad"), omega2="1 rad/s")   # far enough: answered
+    r = fb.solve(theta2=Q_(t_lim - 1e-3, "rad"), omega2="1 rad/s")  # far enough: answered
     assert r.valid and 0 < r.condition < 0.1
 
 
 def test_outputs_are_lazy_and_cached():
-    r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg",
-                                                              omega2="10 rad/s")
+    r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", omega2="10 rad/s")
     assert "A_B" not in r._cache
     first = r.si("A_B")
     assert r._cache["A_B"] is first
@@ -124,7 +153,8 @@ def test_outputs_are_lazy_and_cached():
 
 def test_acceleration_difference_and_components():
     r = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
-        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", p="3 in", delta3="30 deg")
+        theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", p="3 in", delta3="30 deg"
+    )
     # eq. 7.4: A_B = A_A + A_BA, and each splits into tangential + normal parts
     assert np.isclose(r.si("A_B"), r.si("A_A") + r.si("A_BA"), rtol=1e-14)
     assert np.isclose(r.si("A_BA"), r.si("A_BA_t") + r.si("A_BA_n"), rtol=1e-14)
@@ -151,8 +181,7 @@ def test_inverted_slider_crank_splits_acceleration_of_A():
     isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg")
     r = isc.solve(theta2="45 deg", omega2="20 rad/s", alpha2="10 rad/s^2")
     # A on the crank = point of link 4 under A + slip + Coriolis (eqs. 7.19, 7.21)
-    assert np.isclose(r.si("A_A"), r.si("A_A4") + r.si("A_slip") + r.si("A_coriolis"),
-                      rtol=1e-13)
+    assert np.isclose(r.si("A_A"), r.si("A_A4") + r.si("A_slip") + r.si("A_coriolis"), rtol=1e-13)
     # Coriolis is perpendicular to the slide line, slip along it
     e3 = np.exp(1j * r.si("theta3"))
     assert abs((r.si("A_coriolis") / e3).real) < 1e-12 * abs(r.si("A_coriolis"))
@@ -170,8 +199,14 @@ def test_geared_fivebar_link5_follows_the_gears():
 
 
 def test_slotted_link_components():
-    r = SlottedLink().solve(theta2="90 deg", omega2="2 rad/s", alpha2="3 rad/s^2",
-                            p="0.5 m", p_dot="1 m/s", p_ddot="4 m/s^2")
+    r = SlottedLink().solve(
+        theta2="90 deg",
+        omega2="2 rad/s",
+        alpha2="3 rad/s^2",
+        p="0.5 m",
+        p_dot="1 m/s",
+        p_ddot="4 m/s^2",
+    )
     # link along +y: normal points to -y, tangential and Coriolis along -x, slip along +y
     assert np.allclose([r.A_n.m.real, r.A_n.m.imag], [0, -2.0], atol=1e-15)
     assert np.allclose([r.A_t.m.real, r.A_t.m.imag], [-1.5, 0], atol=1e-15)
@@ -194,6 +229,7 @@ def test_problem_7_1_rotating_point():
 def test_kernel_has_no_pint():
     import ast
     import pathlib
+
     for path in pathlib.Path(fourbar_kernel.__file__).parent.glob("*.py"):
         tree = ast.parse(path.read_text())
         for node in ast.walk(tree):
@@ -207,8 +243,14 @@ def test_any_point_on_any_link():
     """eqs. 7.30-7.32: a point on link 3 given by (p, delta) from A equals the coupler
     point; the mid-point of the rocker has half of B's acceleration."""
     fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
-    r = fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="2 rad/s^3",
-                 p="3 in", delta3="30 deg")
+    r = fb.solve(
+        theta2="30 deg",
+        omega2="10 rad/s",
+        alpha2="-5 rad/s^2",
+        jerk2="2 rad/s^3",
+        p="3 in",
+        delta3="30 deg",
+    )
     pt = r.point(3, "3 in", "30 deg")
     for name in ("R", "V", "A", "J"):
         assert np.isclose(pt.si(name), r.si(name + "_P"), rtol=1e-14)

@@ -9,6 +9,16 @@ singular positions, and never report the other assembly as if nothing happened."
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import (
+    CHANGE_POINT,
+    KITE,
+    PARALLELOGRAM,
+    circuit_of,
+    fourbar_in,
+    rel_err,
+    same_away_from_singular,
+    system_of,
+)
 
 from accelab.solver import Q_
 from accelab.solver.errors import NoConvergence
@@ -17,30 +27,34 @@ from accelab.solver.vectorloops import SINGULAR_CONDITION, VectorLoopLinkage
 from accelab.solver.vectorloops.examples import EXAMPLES, fourbar
 from accelab.solver.vectorloops.solve import solve
 
-from _vectorloops_helpers import (CHANGE_POINT, KITE, PARALLELOGRAM, circuit_of, fourbar_in,
-                                  rel_err, same_away_from_singular, system_of)
-
 
 @pytest.mark.parametrize("circuit", ["open", "crossed"])
-@pytest.mark.parametrize("start_deg, step_deg, n", [
-    (np.degrees(0.05), 1.0, 360),       # the benchmark's sweep: past 360 at 360.86, 361.86
-    (5.0, 1.0, 720),                    # two turns: samples exactly on 360 and 720 deg
-    (5.0, 7.3, 99),                     # coarse
-    (5.0, 40.0, 18),                    # very coarse: one step jumps across
-    (30.0, -0.5, 121),                  # backwards through 0
-])
-def test_sweep_through_a_change_point_keeps_its_assembly_and_says_so(circuit, start_deg,
-                                                                      step_deg, n):
+@pytest.mark.parametrize(
+    "start_deg, step_deg, n",
+    [
+        (np.degrees(0.05), 1.0, 360),  # the benchmark's sweep: past 360 at 360.86, 361.86
+        (5.0, 1.0, 720),  # two turns: samples exactly on 360 and 720 deg
+        (5.0, 7.3, 99),  # coarse
+        (5.0, 40.0, 18),  # very coarse: one step jumps across
+        (30.0, -0.5, 121),  # backwards through 0
+    ],
+)
+def test_sweep_through_a_change_point_keeps_its_assembly_and_says_so(
+    circuit, start_deg, step_deg, n
+):
     t2 = np.radians(start_deg + step_deg * np.arange(n))
     desc = fourbar_in(*CHANGE_POINT, t2[0], circuit)
     m = solve(system_of(desc), t2, 10.0, -5.0, 40.0)
     ok = m.status == 0
-    assert circuit_of(m, CHANGE_POINT, t2, circuit)[ok].all()       # never the other one
-    near = np.abs(np.angle(np.exp(1j * t2))) < 1e-9                 # sampled on the point
-    assert np.array_equal(~ok, near)                                # those flagged, only those
+    assert circuit_of(m, CHANGE_POINT, t2, circuit)[ok].all()  # never the other one
+    near = np.abs(np.angle(np.exp(1j * t2))) < 1e-9  # sampled on the point
+    assert np.array_equal(~ok, near)  # those flagged, only those
     assert (m.status[near] == 2).all() and (m.condition[near] < SINGULAR_CONDITION).all()
-    crossings = int(np.floor((t2.max()) / (2 * np.pi)) - np.floor(t2.min() / (2 * np.pi))
-                    + (np.abs(np.angle(np.exp(1j * t2.min()))) < 1e-9))
+    crossings = int(
+        np.floor((t2.max()) / (2 * np.pi))
+        - np.floor(t2.min() / (2 * np.pi))
+        + (np.abs(np.angle(np.exp(1j * t2.min()))) < 1e-9)
+    )
     assert len(m.notes) == crossings >= 1
     assert all("equally possible" in note for note in m.notes.values())
     assert "passes a singular position" in str(m.message)
@@ -56,7 +70,8 @@ def test_the_benchmark_change_point_sweep_agrees_with_the_open_circuit():
     1/condition**2 in both solvers."""
     t2 = np.radians(np.degrees(0.05) + np.arange(360.0))
     r = VectorLoopLinkage(**fourbar_in(*CHANGE_POINT, t2[0], "open")).solve(
-        theta2=Q_(np.degrees(t2), "deg"), omega2="10 rad/s", alpha2="-5 rad/s^2")
+        theta2=Q_(np.degrees(t2), "deg"), omega2="10 rad/s", alpha2="-5 rad/s^2"
+    )
     ref = fourbar_kernel.solve(*CHANGE_POINT, t2, 10.0, -5.0, circuit="open")
     assert r.valid.all()
     for v, key in (("R3", "theta3"), ("R4", "theta4")):
@@ -66,7 +81,7 @@ def test_the_benchmark_change_point_sweep_agrees_with_the_open_circuit():
     far = r.condition >= 0.05
     assert rel_err(alpha4[far], ref.alpha4[far]) < 1e-10
     assert rel_err(alpha4, ref.alpha4) < 1e-7
-    assert list(r.notes) == [358]             # 360.86 deg: the first position past it
+    assert list(r.notes) == [358]  # 360.86 deg: the first position past it
     assert "near theta2 = 360 deg" in r.notes[358] and "change point" in r.message
 
 
@@ -80,7 +95,7 @@ def test_sweep_starting_on_a_change_point_flags_it_and_continues(linkage, zeros)
     flagged = np.flatnonzero(m.status)
     assert list(np.degrees(t2[flagged]).round(9)) == zeros
     assert (m.status[flagged] == 2).all() and np.isnan(m.dth[0][flagged]).all()
-    assert np.isfinite(m.q[0]).all()                     # the position itself stands
+    assert np.isfinite(m.q[0]).all()  # the position itself stands
     ok = m.status == 0
     on = [circuit_of(m, linkage, t2, c)[ok].all() for c in ("open", "crossed")]
     assert any(on)
@@ -108,21 +123,27 @@ def test_change_point_in_the_second_loop_of_a_sixbar():
     off = 190.0 - 138.2
     desc["vectors"]["R4C"] = {"length": "4 in", "angle": {"follow": "R4", "offset": f"{off} deg"}}
     desc["vectors"]["R6"]["length"] = "5 in"
-    second = fourbar_kernel.solve(a, b, c, d, float(first.theta4) + np.radians(off - 10.0), 1.0,
-                                  circuit="open")
-    for name, value in (("R3", first.theta3), ("R4", first.theta4),
-                        ("R5", second.theta3 + np.radians(10.0)),
-                        ("R6", second.theta4 + np.radians(10.0))):
+    second = fourbar_kernel.solve(
+        a, b, c, d, float(first.theta4) + np.radians(off - 10.0), 1.0, circuit="open"
+    )
+    for name, value in (
+        ("R3", first.theta3),
+        ("R4", first.theta4),
+        ("R5", second.theta3 + np.radians(10.0)),
+        ("R6", second.theta4 + np.radians(10.0)),
+    ):
         desc["vectors"][name]["guess"] = f"{float(value)!r} rad"
     for step in (1.0, 13.0):
         t2 = t0 + np.radians(np.arange(0.0, 720.0, step))
         m = solve(system_of(desc), t2, 10.0)
-        ref = fourbar_kernel.solve(a, b, c, d, m.theta[:, 4] - np.radians(10.0), 1.0,
-                                   circuit="open")
+        ref = fourbar_kernel.solve(
+            a, b, c, d, m.theta[:, 4] - np.radians(10.0), 1.0, circuit="open"
+        )
         assert (m.status == 0).all()
-        assert np.allclose(np.exp(1j * m.theta[:, 6]), np.exp(1j * (ref.theta4 + np.radians(10.0))),
-                           atol=1e-9)
-        assert len(m.notes) == 4                 # two flat positions per turn, two turns
+        assert np.allclose(
+            np.exp(1j * m.theta[:, 6]), np.exp(1j * (ref.theta4 + np.radians(10.0))), atol=1e-9
+        )
+        assert len(m.notes) == 4  # two flat positions per turn, two turns
 
 
 def test_assembly_lost_past_a_degenerate_change_point_is_flagged_not_returned():
@@ -144,11 +165,16 @@ def test_isosceles_slider_crank_keeps_its_assembly():
     """a = b with no offset: the slider passes the crank pivot at 90 and 270 deg,
     where both assemblies meet; the sweep stays on the open one."""
     from accelab.solver.kernels import slidercrank as slider_kernel
+
     t2 = np.radians(np.arange(5.0, 725.0, 1.0))
     ref = slider_kernel.solve(0.04, 0.04, 0.0, t2, 1.0, circuit="open")
-    desc = EXAMPLES["slidercrank"](a="40 mm", b="40 mm", c="0 mm",
-                                   guess3=f"{float(ref.theta3[0])!r} rad",
-                                   guess_d=f"{float(ref.d[0])!r} m")
+    desc = EXAMPLES["slidercrank"](
+        a="40 mm",
+        b="40 mm",
+        c="0 mm",
+        guess3=f"{float(ref.theta3[0])!r} rad",
+        guess_d=f"{float(ref.d[0])!r} m",
+    )
     m = solve(system_of(desc), t2, 1.0)
     ok = m.status == 0
     assert list(np.degrees(t2[~ok]).round(6)) == [90.0, 270.0, 450.0, 630.0]

@@ -3,23 +3,34 @@ written as loops give the closed forms' answers; one position and its errors."""
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import ANGLES, MOTION, close, sweep
 
 from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
 from accelab.solver.errors import NoConvergence, NotAssemblable
-from accelab.solver.vectorloops import solve_loops_case as solve_case, VectorLoopLinkage
+from accelab.solver.vectorloops import VectorLoopLinkage
+from accelab.solver.vectorloops import solve_loops_case as solve_case
 from accelab.solver.vectorloops.examples import EXAMPLES
-
-from _vectorloops_helpers import ANGLES, MOTION, close, sweep
 
 
 def test_fourbar_as_loops_matches_closed_form():
     loops = sweep("fourbar")
     closed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
-        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3",
-        p="3 in", delta3="40 deg")
+        theta2=ANGLES,
+        omega2="10 rad/s",
+        alpha2="-5 rad/s^2",
+        jerk2="40 rad/s^3",
+        p="3 in",
+        delta3="40 deg",
+    )
     assert loops.valid.all() and closed.valid.all()
-    for k, n in (("omega", "3"), ("alpha", "3"), ("jerk", "3"), ("omega", "4"), ("alpha", "4"),
-                 ("jerk", "4")):
+    for k, n in (
+        ("omega", "3"),
+        ("alpha", "3"),
+        ("jerk", "3"),
+        ("omega", "4"),
+        ("alpha", "4"),
+        ("jerk", "4"),
+    ):
         assert close(getattr(loops.vectors["R" + n], k).m, getattr(closed, k + n).m)
     assert close(np.exp(1j * loops.vectors["R4"].angle.m), np.exp(1j * closed.theta4.m))
     for v in "RVAJ":
@@ -30,10 +41,15 @@ def test_fourbar_as_loops_matches_closed_form():
 def test_slidercrank_as_loops_matches_closed_form():
     loops = sweep("slidercrank")
     closed = SliderCrank(a="40 mm", b="120 mm", c="10 mm").solve(
-        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
+        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3"
+    )
     s = loops.vectors["R1"]
-    for k, c in (("length", "d"), ("length_dot", "d_dot"), ("length_ddot", "d_ddot"),
-                 ("length_dddot", "d_dddot")):
+    for k, c in (
+        ("length", "d"),
+        ("length_dot", "d_dot"),
+        ("length_ddot", "d_ddot"),
+        ("length_dddot", "d_dddot"),
+    ):
         assert close(getattr(s, k).m, getattr(closed, c).m)
     for k in ("omega", "alpha", "jerk"):
         assert close(getattr(loops.vectors["R3"], k).m, getattr(closed, k + "3").m)
@@ -43,10 +59,15 @@ def test_slidercrank_as_loops_matches_closed_form():
 def test_inverted_slidercrank_as_loops_matches_closed_form():
     loops = sweep("invertedslidercrank")
     closed = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg").solve(
-        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
+        theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3"
+    )
     b = loops.vectors["R3"]
-    for k, c in (("length", "b"), ("length_dot", "b_dot"), ("length_ddot", "b_ddot"),
-                 ("length_dddot", "b_dddot")):
+    for k, c in (
+        ("length", "b"),
+        ("length_dot", "b_dot"),
+        ("length_ddot", "b_ddot"),
+        ("length_dddot", "b_dddot"),
+    ):
         assert close(getattr(b, k).m, getattr(closed, c).m)
     for k in ("omega", "alpha", "jerk"):
         assert close(getattr(loops.vectors["R4"], k).m, getattr(closed, k + "4").m)
@@ -55,9 +76,9 @@ def test_inverted_slidercrank_as_loops_matches_closed_form():
 
 def test_geared_fivebar_as_loops_matches_closed_form():
     loops = sweep("fivebar")
-    closed = GearedFiveBar(a="1 in", b="4 in", c="4 in", d="1 in", f="3 in", lam=-2,
-                           phi="30 deg").solve(theta2=ANGLES, omega2="10 rad/s",
-                                               alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
+    closed = GearedFiveBar(
+        a="1 in", b="4 in", c="4 in", d="1 in", f="3 in", lam=-2, phi="30 deg"
+    ).solve(theta2=ANGLES, omega2="10 rad/s", alpha2="-5 rad/s^2", jerk2="40 rad/s^3")
     assert closed.valid.all()
     for n in "34":
         for k in ("omega", "alpha", "jerk"):
@@ -80,13 +101,28 @@ def test_not_assemblable_reports_residual():
 def test_singular_jacobian_reported():
     # fourbar at its limit: s = b + c  (a=4, b=3, c=2, d=5)
     t_lim = np.degrees(np.arccos((16 + 25 - 25) / 40))
-    desc = EXAMPLES["fourbar"](a="4 m", b="3 m", c="2 m", d="5 m", guess3="-40 deg",
-                               guess4="140 deg")
-    res = solve_case(dict(desc, mechanism="loops", theta2=f"{t_lim - 1e-9} deg",
-                          omega2="1 rad/s", alpha2="0 rad/s^2"))
+    desc = EXAMPLES["fourbar"](
+        a="4 m", b="3 m", c="2 m", d="5 m", guess3="-40 deg", guess4="140 deg"
+    )
+    res = solve_case(
+        dict(
+            desc,
+            mechanism="loops",
+            theta2=f"{t_lim - 1e-9} deg",
+            omega2="1 rad/s",
+            alpha2="0 rad/s^2",
+        )
+    )
     assert res["ok"] is False and res["error"] in ("singular", "not_assemblable"), res
-    res = solve_case(dict(desc, mechanism="loops", theta2=f"{t_lim - 1e-3} deg",
-                          omega2="1 rad/s", alpha2="0 rad/s^2"))
+    res = solve_case(
+        dict(
+            desc,
+            mechanism="loops",
+            theta2=f"{t_lim - 1e-3} deg",
+            omega2="1 rad/s",
+            alpha2="0 rad/s^2",
+        )
+    )
     assert res["ok"], res
 
 

@@ -3,6 +3,7 @@ orientation that tells the assemblies apart."""
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import CYCLE, LINKAGES, fourbar_desc, guesses_on, rel_err, system_of
 
 from accelab.solver import Q_
 from accelab.solver.errors import InvalidInput, NoConvergence
@@ -10,8 +11,6 @@ from accelab.solver.kernels import fourbar as fourbar_kernel
 from accelab.solver.vectorloops import VectorLoopLinkage
 from accelab.solver.vectorloops.examples import EXAMPLES
 from accelab.solver.vectorloops.solve import solve
-
-from _vectorloops_helpers import CYCLE, LINKAGES, fourbar_desc, guesses_on, rel_err, system_of
 
 
 def test_no_convergence_carries_the_residual():

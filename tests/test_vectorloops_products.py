@@ -4,11 +4,13 @@ import numpy as np
 import pytest
 
 
-@pytest.mark.parametrize("shape", [(1, 48, 48), (29, 48, 48), (1000, 48, 48), (997, 32, 24),
-                                   (10001, 12, 3)])
+@pytest.mark.parametrize(
+    "shape", [(1, 48, 48), (29, 48, 48), (1000, 48, 48), (997, 32, 24), (10001, 12, 3)]
+)
 @pytest.mark.parametrize("kind", [float, complex])
 def test_unthreaded_products_equal_matmul(shape, kind):
     from accelab.solver.vectorloops.products import BLAS_BLOCK, rows_times
+
     M, K, N = shape
     rng = np.random.default_rng(M)
     Y = rng.normal(size=(M, K)).astype(kind)

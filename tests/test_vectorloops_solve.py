@@ -3,12 +3,16 @@
 import json
 
 import pytest
+from _vectorloops_helpers import fourbar_desc
 
 from accelab.solver.errors import Singular
-from accelab.solver.vectorloops import (SINGULAR_CONDITION, solve_loops_case as solve_case,
-                                VectorLoopLinkage)
-
-from _vectorloops_helpers import fourbar_desc
+from accelab.solver.vectorloops import (
+    SINGULAR_CONDITION,
+    VectorLoopLinkage,
+)
+from accelab.solver.vectorloops import (
+    solve_loops_case as solve_case,
+)
 
 
 def test_singular_carries_the_condition_number():
@@ -18,6 +22,13 @@ def test_singular_carries_the_condition_number():
         VectorLoopLinkage(**desc).solve(theta2="0 deg", omega2="1 rad/s")
     assert 0 <= info.value.condition < SINGULAR_CONDITION
     assert "condition number" in str(info.value)
-    res = solve_case(dict(json.loads(json.dumps(desc)), mechanism="loops", theta2="0 deg",
-                          omega2="1 rad/s", alpha2="0 rad/s^2"))
+    res = solve_case(
+        dict(
+            json.loads(json.dumps(desc)),
+            mechanism="loops",
+            theta2="0 deg",
+            omega2="1 rad/s",
+            alpha2="0 rad/s^2",
+        )
+    )
     assert res["ok"] is False and res["error"] == "singular"

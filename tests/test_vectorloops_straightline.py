@@ -4,13 +4,12 @@ same tables."""
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import system_of
 
 from accelab.benchmarks.cases import eightbar
 from accelab.solver.vectorloops.examples import EXAMPLES
 from accelab.solver.vectorloops.newton import orientation
 from accelab.solver.vectorloops.straightline import plain_step
-
-from _vectorloops_helpers import system_of
 
 
 @pytest.mark.parametrize("name", sorted(EXAMPLES) + ["eightbar"])

@@ -4,38 +4,53 @@ through whole cycles, and how many positions the batch solves."""
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import (
+    CYCLE,
+    LINKAGES,
+    SWEEPS,
+    close,
+    counting,
+    fourbar_desc,
+    guesses_on,
+    on_circuit,
+    rel_err,
+    same_motion,
+    start_on_crossed_once,
+    sweep,
+    system_of,
+)
 
 from accelab.solver import Q_, FourBar
 from accelab.solver.kernels import fourbar as fourbar_kernel
-from accelab.solver.vectorloops import sweep as sweep_module, VectorLoopLinkage
+from accelab.solver.vectorloops import VectorLoopLinkage
+from accelab.solver.vectorloops import sweep as sweep_module
 from accelab.solver.vectorloops.examples import EXAMPLES
 from accelab.solver.vectorloops.solve import solve
-
-from _vectorloops_helpers import (CYCLE, LINKAGES, SWEEPS, counting, start_on_crossed_once,
-                                  close, fourbar_desc, guesses_on, on_circuit, rel_err,
-                                  same_motion, sweep, system_of)
 
 
 def test_sweep_follows_one_assembly_and_masks():
     # crossed-circuit guesses stay crossed over the whole cycle
     desc = EXAMPLES["fourbar"](guess3="-60 deg", guess4="-100 deg")
-    r = VectorLoopLinkage(**desc).solve(theta2=Q_(np.linspace(0, 720, 721), "deg"),
-                                        omega2="1 rad/s")
+    r = VectorLoopLinkage(**desc).solve(
+        theta2=Q_(np.linspace(0, 720, 721), "deg"), omega2="1 rad/s"
+    )
     closed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
-        theta2=Q_(np.linspace(0, 720, 721), "deg"), omega2="1 rad/s", circuit="crossed")
+        theta2=Q_(np.linspace(0, 720, 721), "deg"), omega2="1 rad/s", circuit="crossed"
+    )
     assert r.valid.all()
     assert close(np.exp(1j * r.vectors["R4"].angle.m), np.exp(1j * closed.theta4.m))
     # a non-Grashof linkage: mask where it cannot reach, never a jump
-    desc = EXAMPLES["fourbar"](a="5 in", b="3 in", c="4 in", d="6 in", guess3="100 deg",
-                               guess4="60 deg")
-    r = VectorLoopLinkage(**desc).solve(theta2=Q_(np.linspace(0, 70, 71), "deg"),
-                                        omega2="1 rad/s")
+    desc = EXAMPLES["fourbar"](
+        a="5 in", b="3 in", c="4 in", d="6 in", guess3="100 deg", guess4="60 deg"
+    )
+    r = VectorLoopLinkage(**desc).solve(theta2=Q_(np.linspace(0, 70, 71), "deg"), omega2="1 rad/s")
     fb = FourBar(a="5 in", b="3 in", c="4 in", d="6 in")
     ok = r.valid
     assert ok.sum() > 10
     for circuit in ("open", "crossed"):
-        c = fb.solve(theta2=Q_(np.linspace(0, 70, 71), "deg")[ok], omega2="1 rad/s",
-                     circuit=circuit)
+        c = fb.solve(
+            theta2=Q_(np.linspace(0, 70, 71), "deg")[ok], omega2="1 rad/s", circuit=circuit
+        )
         if close(np.exp(1j * r.vectors["R4"].angle.m[ok]), np.exp(1j * c.theta4.m), 1e-9):
             break
     else:
@@ -71,7 +86,7 @@ def test_forced_fallbacks_and_restart_give_the_same_sweep(monkeypatch):
 
     def all_bad(self, intervals):
         original(self, intervals)
-        if intervals and not calls["spoiled"]:   # spoil the end of the third interval
+        if intervals and not calls["spoiled"]:  # spoil the end of the third interval
             a, b = intervals[2]
             self.record.q[b] += 1e-6
             calls["spoiled"] = True
@@ -129,8 +144,9 @@ def test_non_finite_input_angles_are_masked_with_a_reason():
 
 def test_full_cycle_iteration_counts():
     for name in ("sixbar_slider", "watt2_sixbar", "fourbar"):
-        r = VectorLoopLinkage(**EXAMPLES[name]()).solve(theta2=Q_(np.degrees(CYCLE), "deg"),
-                                                      omega2="10 rad/s")
+        r = VectorLoopLinkage(**EXAMPLES[name]()).solve(
+            theta2=Q_(np.degrees(CYCLE), "deg"), omega2="10 rad/s"
+        )
         assert r.valid.all()
         assert r.iterations.mean() <= 2.5 and r.iterations.max() <= 8
 

@@ -3,14 +3,24 @@ guesses that land on the other assembly are walked, never answered across a jump
 
 import numpy as np
 import pytest
+from _vectorloops_helpers import (
+    CYCLE,
+    LINKAGES,
+    NON_GRASHOF,
+    counting,
+    fourbar_desc,
+    guesses_on,
+    on_circuit,
+    same_motion,
+    start_on_crossed_once,
+    system_of,
+)
 
 from accelab.solver.errors import NoConvergence
 from accelab.solver.kernels import fourbar as fourbar_kernel
-from accelab.solver.vectorloops import assembly as assembly_module, sweep as sweep_module
+from accelab.solver.vectorloops import assembly as assembly_module
+from accelab.solver.vectorloops import sweep as sweep_module
 from accelab.solver.vectorloops.solve import solve
-
-from _vectorloops_helpers import (CYCLE, LINKAGES, NON_GRASHOF, counting, start_on_crossed_once,
-                                  fourbar_desc, guesses_on, on_circuit, same_motion, system_of)
 
 
 @pytest.mark.parametrize("circuit", ["open", "crossed"])
@@ -22,10 +32,10 @@ def test_sweep_masks_a_range_that_cannot_close_and_rejoins_its_assembly(circuit,
     m = solve(system, t2, 1.0)
     ref = fourbar_kernel.solve(a, b, c, d, t2, 1.0, circuit=circuit)
     ok = m.status == 0
-    assert np.array_equal(ok, ref.status == 0)            # masked exactly where it cannot close
+    assert np.array_equal(ok, ref.status == 0)  # masked exactly where it cannot close
     assert 100 < ok.sum() < 250
     assert (m.status[~ok] == 1).all() and np.isnan(m.q[~ok]).all()
-    assert on_circuit(m, a, b, c, d, t2, circuit)[ok].all()   # one assembly, both sides
+    assert on_circuit(m, a, b, c, d, t2, circuit)[ok].all()  # one assembly, both sides
     assert isinstance(m.message, NoConvergence) and m.message.residual > 1e-4
     assert "residual" in str(m.message)
     same_motion(m, solve(system, t2, 1.0, batch=False))
@@ -40,14 +50,17 @@ def test_unverifiable_reassembly_is_reported_not_returned():
     desc = fourbar_desc(a, b, c, d, *guesses_on("open", a, b, c, d, 0.0))
     desc["vectors"]["G"] = {"length": "0 m", "angle": "input"}
     desc["vectors"]["R2"] = {"length": f"{a} m", "angle": {"follow": "G", "ratio": 0.5}}
-    t2 = np.radians(np.concatenate([np.arange(0.0, 171.0), np.arange(200.0, 560.0, 2.0),
-                                    np.arange(560.0, 721.0)]))
+    t2 = np.radians(
+        np.concatenate(
+            [np.arange(0.0, 171.0), np.arange(200.0, 560.0, 2.0), np.arange(560.0, 721.0)]
+        )
+    )
     m = solve(system_of(desc), t2, 1.0)
     ok = m.status == 0
     assert ok[:171].all()
     assert on_circuit(m, a, b, c, d, t2 / 2, "open")[ok].all()
     assert not ok[171:].any()
-    assert "did not close" in str(m.message)       # the first failure: the gap itself
+    assert "did not close" in str(m.message)  # the first failure: the gap itself
     sw = sweep_module.Sweep(system_of(desc), t2, system_of(desc).model.guess, 1e-13)
     sw.run()
     after = [str(e) for i, e in sw.record.errors.items() if np.degrees(t2[i]) >= 560]

@@ -17,13 +17,44 @@ below what any method compared with it can reach.
 """
 
 from .cache import at_points, cached, cycle_key
-from .limits import (fivebar_limits, fourbar_limits, fourbar_rocker_limits,
-                     invertedslidercrank_limit, slidercrank_limits, toggle_angle)
+from .limits import (
+    fivebar_limits,
+    fourbar_limits,
+    fourbar_rocker_limits,
+    invertedslidercrank_limit,
+    slidercrank_limits,
+    toggle_angle,
+)
 from .loops import DPS, LoopReference
-from .mechanisms import (CIRCUIT_SIGN, POSITIONS, assembles, batch_branch, fourbar_position,
-                         rotating_point, slotted_link, solve)
+from .mechanisms import (
+    CIRCUIT_SIGN,
+    POSITIONS,
+    assembles,
+    batch_branch,
+    fourbar_position,
+    rotating_point,
+    slotted_link,
+    solve,
+)
 
-__all__ = ["LoopReference", "DPS", "cached", "cycle_key", "at_points", "solve", "batch_branch",
-           "rotating_point", "slotted_link", "assembles", "POSITIONS", "CIRCUIT_SIGN",
-           "fourbar_position", "fourbar_limits", "fourbar_rocker_limits", "slidercrank_limits",
-           "invertedslidercrank_limit", "fivebar_limits", "toggle_angle"]
+__all__ = [
+    "LoopReference",
+    "DPS",
+    "cached",
+    "cycle_key",
+    "at_points",
+    "solve",
+    "batch_branch",
+    "rotating_point",
+    "slotted_link",
+    "assembles",
+    "POSITIONS",
+    "CIRCUIT_SIGN",
+    "fourbar_position",
+    "fourbar_limits",
+    "fourbar_rocker_limits",
+    "slidercrank_limits",
+    "invertedslidercrank_limit",
+    "fivebar_limits",
+    "toggle_angle",
+]

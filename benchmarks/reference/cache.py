@@ -18,11 +18,20 @@ from .loops import DPS, LoopReference
 
 def cycle_key(case, theta2, dps=DPS, motion=None):
     """A hash of everything the reference of a cycle depends on."""
-    blob = json.dumps({"vectors": case.vectors, "loops": case.loops, "guess": case.guess,
-                       "outputs": case.outputs,
-                       "theta2": [float(t).hex() for t in theta2], "dps": dps,
-                       "motion": dict(MOTION, **(motion or {})), "version": 2},
-                      sort_keys=True, default=str)
+    blob = json.dumps(
+        {
+            "vectors": case.vectors,
+            "loops": case.loops,
+            "guess": case.guess,
+            "outputs": case.outputs,
+            "theta2": [float(t).hex() for t in theta2],
+            "dps": dps,
+            "motion": dict(MOTION, **(motion or {})),
+            "version": 2,
+        },
+        sort_keys=True,
+        default=str,
+    )
     return hashlib.sha256(blob.encode()).hexdigest()[:16]
 
 
@@ -55,11 +64,12 @@ def at_points(case, theta2, guesses, dps=60, motion=None):
     with mp.workdps(dps):
         for t, g in zip(theta2, guesses):
             start = ref.start(g)
-            q = ref.solve_one(start, float(t), m["omega2"], m["alpha2"], m["jerk2"],
-                              strict=True)
+            q = ref.solve_one(start, float(t), m["omega2"], m["alpha2"], m["jerk2"], strict=True)
             for k, u in enumerate(ref.unknowns):
                 if abs(float(q[0][k]) - start[k]) > 1e-5:
-                    raise ArithmeticError(f"{case.name}: the reference left the guessed "
-                                          f"assembly at theta2 = {float(t)!r} ({u})")
+                    raise ArithmeticError(
+                        f"{case.name}: the reference left the guessed "
+                        f"assembly at theta2 = {float(t)!r} ({u})"
+                    )
             ref.record(out, q, float(t), m)
     return {k: np.array([float(x) for x in v]) for k, v in out.items()}

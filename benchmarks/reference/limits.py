@@ -77,9 +77,12 @@ def fivebar_limits(g, lo, hi, dps=DPS):
     fl = {k: float(v) for k, v in g.items()}
 
     def span(t):
-        return abs(fl["f"] + fl["d"] * complex(math.cos(fl["lam"] * t + fl["phi"]),
-                                               math.sin(fl["lam"] * t + fl["phi"]))
-                   - fl["a"] * complex(math.cos(t), math.sin(t)))
+        return abs(
+            fl["f"]
+            + fl["d"]
+            * complex(math.cos(fl["lam"] * t + fl["phi"]), math.sin(fl["lam"] * t + fl["phi"]))
+            - fl["a"] * complex(math.cos(t), math.sin(t))
+        )
 
     n = 4000
     grid = [lo + (hi - lo) * i / n for i in range(n + 1)]
@@ -97,12 +100,11 @@ def fivebar_limits(g, lo, hi, dps=DPS):
             sf = float(s)
             for i in range(n):
                 if (dist[i] - sf) * (dist[i + 1] - sf) < 0:
-                    root = mp.findroot(lambda t: gap(t, s), (mpf(grid[i]), mpf(grid[i + 1])),
-                                       solver="anderson")
+                    root = mp.findroot(
+                        lambda t: gap(t, s), (mpf(grid[i]), mpf(grid[i + 1])), solver="anderson"
+                    )
                     out.append((root, kind))
     return out
-
-
 
 
 def toggle_angle(a, b, c, d, dps=60):

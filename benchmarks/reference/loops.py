@@ -54,8 +54,9 @@ class LoopReference:
         size = max(v["length"] for v in case.vectors.values() if v["length"] != "unknown")
         self.scale = [size if kind == "length" else 1.0 for _, kind in self.unknowns]
         if 2 * len(self.loops) != len(self.unknowns):
-            raise ValueError(f"{case.name}: {len(self.unknowns)} unknowns for "
-                             f"{len(self.loops)} loops")
+            raise ValueError(
+                f"{case.name}: {len(self.unknowns)} unknowns for {len(self.loops)} loops"
+            )
 
     def _resolve(self, name):
         angle = self.case.vectors[name]["angle"]
@@ -117,8 +118,12 @@ class LoopReference:
         if n == 2:
             return (L[2] - L[0] * w * w + 1j * (L[0] * al + 2 * L[1] * w)) * e
         jk = th[3]
-        return (L[3] - 3 * L[1] * w * w - 3 * L[0] * w * al
-                + 1j * (3 * L[2] * w + 3 * L[1] * al + L[0] * jk - L[0] * w ** 3)) * e
+        return (
+            L[3]
+            - 3 * L[1] * w * w
+            - 3 * L[0] * w * al
+            + 1j * (3 * L[2] * w + 3 * L[1] * al + L[0] * jk - L[0] * w**3)
+        ) * e
 
     def _loops(self, state, n):
         out = []
@@ -177,8 +182,9 @@ class LoopReference:
             if size < stop or (last is not None and size < half and size > last / 4):
                 return q0
             last = size
-        raise ArithmeticError(f"{self.case.name}: reference Newton did not converge at "
-                              f"theta2 = {float(theta2)!r}")
+        raise ArithmeticError(
+            f"{self.case.name}: reference Newton did not converge at theta2 = {float(theta2)!r}"
+        )
 
     def position(self, guess, theta2, strict=True):
         """The unknowns (list of mpf, in the order of :attr:`unknowns`) that
@@ -197,7 +203,7 @@ class LoopReference:
         nu = len(self.unknowns)
         for n in (1, 2, 3):
             # the n-th derivative of the loops with the unknowns' n-th derivatives at zero
-            state = self.state(q + [[mp.mpf(0)] * nu], th[:n + 1])
+            state = self.state(q + [[mp.mpf(0)] * nu], th[: n + 1])
             known = self._loops(state, n)
             x = mp.lu_solve(J, mp.matrix([-k for k in known]))
             q.append([x[k] for k in range(nu)])
@@ -233,8 +239,8 @@ class LoopReference:
         h = t - t0
         nu = len(q)
         d1 = [x / w for x in q1]
-        d2 = [(q2[k] - d1[k] * al) / w ** 2 for k in range(nu)]
-        d3 = [(q3[k] - 3 * d2[k] * w * al - d1[k] * jk) / w ** 3 for k in range(nu)]
+        d2 = [(q2[k] - d1[k] * al) / w**2 for k in range(nu)]
+        d3 = [(q3[k] - 3 * d2[k] * w * al - d1[k] * jk) / w**3 for k in range(nu)]
         g = [q[k] + h * (d1[k] + h * (d2[k] / 2 + h * d3[k] / 6)) for k in range(nu)]
         try:
             sol = self.solve_one(g, t, w, al, jk)
@@ -243,15 +249,21 @@ class LoopReference:
         except (ArithmeticError, ZeroDivisionError):
             pass
         if depth > 20:
-            raise ArithmeticError(f"{self.case.name}: the reference cannot follow the "
-                                  f"assembly to theta2 = {float(t)!r}")
+            raise ArithmeticError(
+                f"{self.case.name}: the reference cannot follow the "
+                f"assembly to theta2 = {float(t)!r}"
+            )
         mid = self._step(prev, (t0 + t) / 2, w, al, jk, depth + 1)
         return self._step(mid, t, w, al, jk, depth + 1)
 
     def record(self, out, q, theta2, motion):
         """Append the case's outputs at one solved position to ``out``."""
-        th = [mp.mpf(theta2), mp.mpf(motion["omega2"]), mp.mpf(motion["alpha2"]),
-              mp.mpf(motion["jerk2"])]
+        th = [
+            mp.mpf(theta2),
+            mp.mpf(motion["omega2"]),
+            mp.mpf(motion["alpha2"]),
+            mp.mpf(motion["jerk2"]),
+        ]
         state = self.state(q, th)
         for name, (vec, kind, n) in self.case.outputs.items():
             L, angles, _ = state[vec]

@@ -53,6 +53,7 @@ def _circle_meet(p, r, q, s, sign):
 # e^{j theta}, values (lengths) and points as mpf / mpc, in the ground frame
 # (t2 is theta2 - theta1); None where the mechanism cannot be assembled.
 
+
 def fourbar_position(g, t2, sign):
     A = g["a"] * expj(t2)
     O4 = mpc(g["d"], 0)
@@ -89,8 +90,7 @@ def invertedslidercrank_position(g, t2, sign):
     e4 = (A - O4) / (c + b * expj(gamma))
     e4 = e4 / abs(e4)
     B = O4 + c * e4
-    return ({"2": expj(t2), "3": e4 * expj(gamma), "4": e4}, {"b": b},
-            {"A": A, "B": B, "O4": O4})
+    return ({"2": expj(t2), "3": e4 * expj(gamma), "4": e4}, {"b": b}, {"A": A, "B": B, "O4": O4})
 
 
 def fivebar_position(g, t2, sign):
@@ -100,12 +100,19 @@ def fivebar_position(g, t2, sign):
     B = _circle_meet(A, g["b"], C, g["c"], sign)
     if B is None:
         return None
-    return ({"2": expj(t2), "3": (B - A) / g["b"], "4": (B - C) / g["c"], "5": expj(t5)},
-            {}, {"A": A, "B": B, "C": C, "O5": mpc(g["f"], 0)})
+    return (
+        {"2": expj(t2), "3": (B - A) / g["b"], "4": (B - C) / g["c"], "5": expj(t5)},
+        {},
+        {"A": A, "B": B, "C": C, "O5": mpc(g["f"], 0)},
+    )
 
 
-POSITIONS = {"fourbar": fourbar_position, "slidercrank": slidercrank_position,
-             "invertedslidercrank": invertedslidercrank_position, "fivebar": fivebar_position}
+POSITIONS = {
+    "fourbar": fourbar_position,
+    "slidercrank": slidercrank_position,
+    "invertedslidercrank": invertedslidercrank_position,
+    "fivebar": fivebar_position,
+}
 
 
 def assembles(mechanism, geometry, t2, circuit="open", dps=DPS):
@@ -121,38 +128,84 @@ def _loops(mechanism, g, th1):
     frame: vectors in SI mpf, points as signed sums of vector names, the
     vector of each link, and the slider's vector (its length is d or b)."""
     if mechanism == "fourbar":
-        vectors = {"R1": {"length": g["d"], "angle": th1}, "R2": {"length": g["a"], "angle": "input"},
-                   "R3": {"length": g["b"], "angle": "unknown"},
-                   "R4": {"length": g["c"], "angle": "unknown"}}
-        return (vectors, ["R2 + R3 - R4 - R1"],
-                {"A": "R2", "B": "R2 + R3", "O4": "R1"}, {2: "R2", 3: "R3", 4: "R4"}, None)
+        vectors = {
+            "R1": {"length": g["d"], "angle": th1},
+            "R2": {"length": g["a"], "angle": "input"},
+            "R3": {"length": g["b"], "angle": "unknown"},
+            "R4": {"length": g["c"], "angle": "unknown"},
+        }
+        return (
+            vectors,
+            ["R2 + R3 - R4 - R1"],
+            {"A": "R2", "B": "R2 + R3", "O4": "R1"},
+            {2: "R2", 3: "R3", 4: "R4"},
+            None,
+        )
     if mechanism == "slidercrank":
-        vectors = {"R1": {"length": "unknown", "angle": th1},
-                   "R2": {"length": g["a"], "angle": "input"},
-                   "R3": {"length": g["b"], "angle": "unknown"},
-                   "R4": {"length": g["c"], "angle": th1 + mp.pi / 2}}
-        return (vectors, ["R2 - R3 - R4 - R1"], {"A": "R2", "B": "R1 + R4"},
-                {2: "R2", 3: "R3"}, ("R1", "d"))
+        vectors = {
+            "R1": {"length": "unknown", "angle": th1},
+            "R2": {"length": g["a"], "angle": "input"},
+            "R3": {"length": g["b"], "angle": "unknown"},
+            "R4": {"length": g["c"], "angle": th1 + mp.pi / 2},
+        }
+        return (
+            vectors,
+            ["R2 - R3 - R4 - R1"],
+            {"A": "R2", "B": "R1 + R4"},
+            {2: "R2", 3: "R3"},
+            ("R1", "d"),
+        )
     if mechanism == "invertedslidercrank":
-        vectors = {"R1": {"length": g["d"], "angle": th1}, "R2": {"length": g["a"], "angle": "input"},
-                   "R4": {"length": g["c"], "angle": "unknown"},
-                   "R3": {"length": "unknown", "angle": {"follow": "R4", "offset": g["gamma"]}}}
-        return (vectors, ["R2 - R3 - R4 - R1"], {"A": "R2", "B": "R1 + R4", "O4": "R1"},
-                {2: "R2", 3: "R3", 4: "R4"}, ("R3", "b"))
+        vectors = {
+            "R1": {"length": g["d"], "angle": th1},
+            "R2": {"length": g["a"], "angle": "input"},
+            "R4": {"length": g["c"], "angle": "unknown"},
+            "R3": {"length": "unknown", "angle": {"follow": "R4", "offset": g["gamma"]}},
+        }
+        return (
+            vectors,
+            ["R2 - R3 - R4 - R1"],
+            {"A": "R2", "B": "R1 + R4", "O4": "R1"},
+            {2: "R2", 3: "R3", 4: "R4"},
+            ("R3", "b"),
+        )
     if mechanism == "fivebar":
-        vectors = {"R1": {"length": g["f"], "angle": th1}, "R2": {"length": g["a"], "angle": "input"},
-                   "R3": {"length": g["b"], "angle": "unknown"},
-                   "R4": {"length": g["c"], "angle": "unknown"},
-                   "R5": {"length": g["d"], "angle": {"follow": "R2", "ratio": g["lam"],
-                                                      "offset": g["phi"] + th1 * (1 - g["lam"])}}}
-        return (vectors, ["R2 + R3 - R4 - R5 - R1"],
-                {"A": "R2", "B": "R2 + R3", "C": "R1 + R5", "O5": "R1"},
-                {2: "R2", 3: "R3", 4: "R4", 5: "R5"}, None)
+        vectors = {
+            "R1": {"length": g["f"], "angle": th1},
+            "R2": {"length": g["a"], "angle": "input"},
+            "R3": {"length": g["b"], "angle": "unknown"},
+            "R4": {"length": g["c"], "angle": "unknown"},
+            "R5": {
+                "length": g["d"],
+                "angle": {
+                    "follow": "R2",
+                    "ratio": g["lam"],
+                    "offset": g["phi"] + th1 * (1 - g["lam"]),
+                },
+            },
+        }
+        return (
+            vectors,
+            ["R2 + R3 - R4 - R5 - R1"],
+            {"A": "R2", "B": "R2 + R3", "C": "R1 + R5", "O5": "R1"},
+            {2: "R2", 3: "R3", 4: "R4", 5: "R5"},
+            None,
+        )
     raise ValueError(f"no loops for {mechanism!r}")
 
 
-def solve(mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-          circuit="open", extra_points=(), dps=DPS):
+def solve(
+    mechanism,
+    geometry,
+    theta2,
+    omega2,
+    alpha2=0.0,
+    jerk2=0.0,
+    theta1=0.0,
+    circuit="open",
+    extra_points=(),
+    dps=DPS,
+):
     """Position to jerk of a closed-form mechanism, by its loops in mpmath.
 
     Parameters
@@ -182,15 +235,20 @@ def solve(mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0
         angles, values, _ = found
         vectors, loops, points, links, slider = _loops(mechanism, g, th1)
         if "p" in g:
-            vectors["RP"] = {"length": g["p"], "angle": {"follow": "R3",
-                                                         "offset": g.get("delta3", mpf(0))}}
+            vectors["RP"] = {
+                "length": g["p"],
+                "angle": {"follow": "R3", "offset": g.get("delta3", mpf(0))},
+            }
             points["P"] = "R2 + RP"
         for name, link, base, p, delta in extra_points:
-            vectors[f"E{name}"] = {"length": mpf(p), "angle": {"follow": links[link],
-                                                               "offset": mpf(delta)}}
+            vectors[f"E{name}"] = {
+                "length": mpf(p),
+                "angle": {"follow": links[link], "offset": mpf(delta)},
+            }
             points[name] = (points[base] + " + " if base != "O2" else "") + f"E{name}"
-        ref = LoopReference(SimpleNamespace(name=mechanism, vectors=vectors, loops=loops,
-                                            outputs={}))
+        ref = LoopReference(
+            SimpleNamespace(name=mechanism, vectors=vectors, loops=loops, outputs={})
+        )
         start = []
         for vec, kind in ref.unknowns:
             if kind == "angle":
@@ -245,19 +303,30 @@ def slotted_link(theta, omega, alpha, jerk, p, p_dot, p_ddot, p_dddot, dps=DPS):
     A_n; the slip is p'' e^{j theta} (V_slip = p' e^{j theta}); the Coriolis
     part is whatever of A remains.
     """
-    (R, V, A, J), e = _point_in_rotation([p, p_dot, p_ddot, p_dddot], theta, omega, alpha,
-                                         jerk, dps)
+    (R, V, A, J), e = _point_in_rotation(
+        [p, p_dot, p_ddot, p_dddot], theta, omega, alpha, jerk, dps
+    )
     (_, V_t, A_fixed, _), _ = _point_in_rotation([p, 0, 0, 0], theta, omega, alpha, jerk, dps)
     with mp.workdps(dps):
         w = A_fixed * mp.conj(e)
-        out = {"R": R, "V": V, "A": A, "J": J, "V_t": V_t, "V_slip": V - V_t,
-               "A_n": w.real * e, "A_t": w.imag * 1j * e, "A_slip": mpf(p_ddot) * e}
+        out = {
+            "R": R,
+            "V": V,
+            "A": A,
+            "J": J,
+            "V_t": V_t,
+            "V_slip": V - V_t,
+            "A_n": w.real * e,
+            "A_t": w.imag * 1j * e,
+            "A_slip": mpf(p_ddot) * e,
+        }
         out["A_coriolis"] = A - A_fixed - out["A_slip"]
         return out
 
 
-def batch_branch(mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-                 circuit="open", dps=DPS):
+def batch_branch(
+    mechanism, geometry, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", dps=DPS
+):
     """The reference as the batch solver reports it: SI floats, vectors as
     [x, y], named as in docs/conventions.md#outputs (with a coupler point P: A_P, J_P ...; for
     the inverted slider-crank also A_coriolis, A_slip, V_slip and A_A4, the

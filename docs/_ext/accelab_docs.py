@@ -42,12 +42,14 @@ def _course_stem(docname):
 
 
 def _download_line(stem):
-    return (f'<p class="nb-download">'
-            f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
-            f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
-            f'<span class="nb-download-note"> to run it yourself in Jupyter with accelab '
-            f'installed (<code>pip install -e .</code>); <code>accelab course --out DIR</code> '
-            f'writes every notebook of the course.</span></p>')
+    return (
+        f'<p class="nb-download">'
+        f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
+        f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
+        f'<span class="nb-download-note"> to run it yourself in Jupyter with accelab '
+        f"installed (<code>pip install -e .</code>); <code>accelab course --out DIR</code> "
+        f"writes every notebook of the course.</span></p>"
+    )
 
 
 def source_read(app, docname, source):
@@ -57,13 +59,12 @@ def source_read(app, docname, source):
         return
     # a {doc} role: the notebooks sit behind a symbolic link (docs/course), where
     # MyST's path links would resolve outside the source folder
-    text = NOTEBOOK_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`",
-                             source[0])
+    text = NOTEBOOK_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`", source[0])
     text = PAGE_LINK.sub(lambda m: f"{{doc}}`{m.group(1)} </course/{m.group(2)}>`", text)
     lines = text.split("\n")
-    for i, line in enumerate(lines):           # the first '# # Title' of a markdown cell
+    for i, line in enumerate(lines):  # the first '# # Title' of a markdown cell
         if re.match(r"^# # \S", line):
-            lines[i + 1:i + 1] = ["#", "# " + _download_line(stem)]
+            lines[i + 1 : i + 1] = ["#", "# " + _download_line(stem)]
             break
     source[0] = "\n".join(lines)
 
@@ -74,6 +75,7 @@ def write_notebooks(app, exc):
     if exc is not None or app.builder.format != "html":
         return
     import jupytext
+
     out = Path(app.outdir)
     done = 0
     for docname in app.env.found_docs:
@@ -172,8 +174,7 @@ def link_images(app, doctree, docname):
             continue
         else:
             refuri = uri
-        ref = nodes.reference("", "", internal=True, refuri=refuri,
-                              classes=["image-full-size"])
+        ref = nodes.reference("", "", internal=True, refuri=refuri, classes=["image-full-size"])
         ref["reftitle"] = "Open the image at full size"
         image.replace_self(ref)
         ref.append(image)
@@ -189,6 +190,7 @@ def _modules(package):
     (private modules, whose name starts with ``_``, left out)."""
     import importlib
     import pkgutil
+
     top = importlib.import_module(package)
     out = [(package, True)]
     for info in pkgutil.walk_packages(top.__path__, package + "."):
@@ -200,8 +202,9 @@ def _modules(package):
 
 def _api_package(module_name):
     """The documented package ``module_name`` belongs to, or None."""
-    return next((p for p in API_PACKAGES
-                 if module_name == p or str(module_name).startswith(p + ".")), None)
+    return next(
+        (p for p in API_PACKAGES if module_name == p or str(module_name).startswith(p + ".")), None
+    )
 
 
 def _ours(module_name):
@@ -213,6 +216,7 @@ def _assigned_here(module, attr):
     (``ureg = pint.UnitRegistry()``): an object of another library that this
     module defines for the package."""
     import inspect
+
     try:
         source = inspect.getsource(module)
     except (OSError, TypeError):
@@ -226,12 +230,16 @@ def _exports(name):
     canonical target)]`` of what it brings in from the package's other modules
     (documented where they are defined)."""
     import importlib
+
     mod = importlib.import_module(name)
     defined, out = [], []
     for attr in getattr(mod, "__all__", []):
         obj = getattr(mod, attr, None)
-        home = getattr(obj, "__module__", None) if not isinstance(obj, (int, float, str, dict,
-                                                                          list, tuple)) else None
+        home = (
+            getattr(obj, "__module__", None)
+            if not isinstance(obj, (int, float, str, dict, list, tuple))
+            else None
+        )
         qual = getattr(obj, "__qualname__", None)
         if home == name or home is None:
             continue
@@ -239,7 +247,7 @@ def _exports(name):
             out.append((attr, f"{home}.{qual}"))
         elif _assigned_here(mod, attr):
             defined.append(attr)
-        else:                       # a foreign object defined by one of our modules
+        else:  # a foreign object defined by one of our modules
             owner = _definer(name, attr)
             if owner:
                 out.append((attr, f"{owner}.{attr}"))
@@ -248,13 +256,13 @@ def _exports(name):
 
 def _definer(package, attr):
     import importlib
+
     for modname, _ in _modules(_api_package(package) or package):
         try:
             mod = importlib.import_module(modname)
         except Exception:
             continue
-        if modname != package and attr in getattr(mod, "__all__", []) and \
-                _assigned_here(mod, attr):
+        if modname != package and attr in getattr(mod, "__all__", []) and _assigned_here(mod, attr):
             return modname
     return None
 
@@ -265,7 +273,7 @@ def api_pages():
     pages = {}
     for package in API_PACKAGES:
         groups = {}
-        depth = package.count(".") + 2      # accelab.solver.kernels: one page per subpackage
+        depth = package.count(".") + 2  # accelab.solver.kernels: one page per subpackage
         for name, ispkg in _modules(package):
             parts = name.split(".")
             key = ".".join(parts[:depth]) if (len(parts) > depth or ispkg) else package
@@ -275,9 +283,10 @@ def api_pages():
             lines = [title, "=" * len(title), ""]
             for name, ispkg in members:
                 import importlib
+
                 try:
                     importlib.import_module(name)
-                except Exception as exc:   # reported, never hidden
+                except Exception as exc:  # reported, never hidden
                     logger.warning(f"API reference: cannot import {name}: {exc}")
                     continue
                 if name != key:
@@ -286,17 +295,17 @@ def api_pages():
                 defined, exported = _exports(name)
                 lines += [f".. automodule:: {name}", "   :members:", "   :undoc-members:"]
                 skip = [a for a, _ in exported] + defined
-                if skip:         # each object is documented once, in its own module
+                if skip:  # each object is documented once, in its own module
                     lines.append("   :exclude-members: " + ", ".join(skip))
                 lines.append("")
                 for attr in defined:
                     lines += [f".. autodata:: {name}.{attr}", "   :no-value:", ""]
                 if ispkg:
                     if exported:
-                        lines += [f"``{name}`` also offers, documented where they are defined:",
-                                  ""]
-                        lines += [f"* :py:obj:`{name}.{attr} <{target}>`"
-                                  for attr, target in exported]
+                        lines += [f"``{name}`` also offers, documented where they are defined:", ""]
+                        lines += [
+                            f"* :py:obj:`{name}.{attr} <{target}>`" for attr, target in exported
+                        ]
                         lines.append("")
             pages[key] = "\n".join(lines)
     return pages
@@ -354,10 +363,10 @@ def plain_docstring(app, what, name, obj, options, lines):
     i = 0
     while i < len(lines) - 1:
         if SECTION_RULE.match(lines[i + 1]) and lines[i].strip():
-            break                                  # numpydoc sections from here on
+            break  # numpydoc sections from here on
         if TABLE_RULE.match(lines[i]):
             end = _table_end(lines, i)
-            if not _table_ok(lines, i, end):     # show it as written, in a literal block
+            if not _table_ok(lines, i, end):  # show it as written, in a literal block
                 lines[i:end] = ["::", ""] + ["    " + line for line in lines[i:end]] + [""]
                 end += 3
             i = end
@@ -366,25 +375,33 @@ def plain_docstring(app, what, name, obj, options, lines):
         j = i + 1
         while j < len(lines) and not lines[j].strip():
             j += 1
-        if (head.strip() and j < len(lines) and _indent(lines[j]) > _indent(head)
-                and not head.lstrip().startswith((":", "..", ">>>"))
-                and not head.endswith("::") and _indent(head) == 0):
+        if (
+            head.strip()
+            and j < len(lines)
+            and _indent(lines[j]) > _indent(head)
+            and not head.lstrip().startswith((":", "..", ">>>"))
+            and not head.endswith("::")
+            and _indent(head) == 0
+        ):
             end = j
-            while end < len(lines) and (not lines[end].strip()
-                                        or _indent(lines[end]) > _indent(head)):
+            while end < len(lines) and (
+                not lines[end].strip() or _indent(lines[end]) > _indent(head)
+            ):
                 end += 1
             while end > j and not lines[end - 1].strip():
                 end -= 1
             block = lines[j:end]
-            if (head.lstrip().startswith(("``", "*", "-"))   # a list or a definition term
-                    or re.match(r"\d+[.)] ", head.lstrip())):
+            if (
+                head.lstrip().startswith(("``", "*", "-"))  # a list or a definition term
+                or re.match(r"\d+[.)] ", head.lstrip())
+            ):
                 if end < len(lines) and lines[end].strip():
-                    lines.insert(end, "")       # it must end with a blank line
+                    lines.insert(end, "")  # it must end with a blank line
                 i = end
                 continue
             lines[i] = head + (":" if head.endswith(":") else " ::")
             tail = [""] if end < len(lines) and lines[end].strip() else []
-            lines[i + 1:end] = [""] + block + tail
+            lines[i + 1 : end] = [""] + block + tail
             i = i + 1 + len(block) + len(tail)
         i += 1
 
@@ -420,8 +437,9 @@ def copy_mathjax(app, exc):
         return
     src = _mathjax_dir()
     if src is None:
-        logger.warning("MathJax is missing: pip install sphinx-mathjax-offline "
-                       "(the docs extra installs it)")
+        logger.warning(
+            "MathJax is missing: pip install sphinx-mathjax-offline (the docs extra installs it)"
+        )
         return
     dst = Path(app.outdir) / "_static" / "mathjax"
     for part in MATHJAX_PARTS:
@@ -464,14 +482,17 @@ def _literal(text):
 def family_specs():
     """``[(name, title, module, {param: (lo, hi, step, kind)})]`` of every family."""
     import importlib
+
     from accelab.exercises import families
+
     out = []
     for name, generator in families.FAMILIES.items():
         module = importlib.import_module(generator.__module__)
         defaults = getattr(module, "DEFAULTS", None)
-        if defaults is None:   # a family that reuses another's table (FOURBAR_DEFAULTS)
-            used = [v for k, v in vars(module).items() if k.endswith("DEFAULTS")
-                    and isinstance(v, dict)]
+        if defaults is None:  # a family that reuses another's table (FOURBAR_DEFAULTS)
+            used = [
+                v for k, v in vars(module).items() if k.endswith("DEFAULTS") and isinstance(v, dict)
+            ]
             defaults = used[0] if used else {}
         out.append((name, getattr(module, "TITLE", name), module, defaults))
     return out
@@ -480,6 +501,7 @@ def family_specs():
 def _range_text(lo, hi, step, unit):
     def num(x):
         return f"{x:g}"
+
     u = f" {unit}" if unit else ""
     return f"{num(lo)} to {num(hi)}{u}, step {num(step)}"
 
@@ -487,12 +509,14 @@ def _range_text(lo, hi, step, unit):
 class FamiliesTable(Directive):
     """The problem families and the parameters they draw, with default ranges
     in US and SI units (from ``accelab.exercises.families``)."""
+
     has_content = False
     option_spec = {"class": directives.class_option}
 
     def run(self):
         try:
             from accelab.exercises.families import common
+
             specs = family_specs()
         except Exception as exc:  # an exercises package being rebuilt: say so on the page
             logger.warning(f"accelab-families: cannot read accelab.exercises.families: {exc}")
@@ -505,10 +529,14 @@ class FamiliesTable(Directive):
             for param in defaults:
                 lo, hi, step, kind = us[param]
                 slo, shi, sstep, _ = si[param]
-                section_rows.append([
-                    _literal(param), kind,
-                    _range_text(lo, hi, step, common.display_unit(kind, "US")),
-                    _range_text(slo, shi, sstep, common.display_unit(kind, "SI"))])
+                section_rows.append(
+                    [
+                        _literal(param),
+                        kind,
+                        _range_text(lo, hi, step, common.display_unit(kind, "US")),
+                        _range_text(slo, shi, sstep, common.display_unit(kind, "SI")),
+                    ]
+                )
             head = nodes.paragraph()
             head += nodes.literal(text=name)
             head += nodes.Text(f": {title}. ")
@@ -516,18 +544,28 @@ class FamiliesTable(Directive):
             head += nodes.Text(" ".join(doc.split()))
             result.append(head)
             if section_rows:
-                result.append(_table(["parameter", "kind", "default range (US)",
-                                      "default range (SI)"], section_rows))
+                result.append(
+                    _table(
+                        ["parameter", "kind", "default range (US)", "default range (SI)"],
+                        section_rows,
+                    )
+                )
         return result
 
 
 #: the docs' own reading of the notebooks, for a family that no notebook names
 #: yet as one that practises it (the family, its chapter section, the notebook
 #: that teaches that section)
-TAUGHT_IN = {"rotation": ["01_rotating_point"], "fourbar": ["03_analytic_fourbar"],
-             "coupler": ["07_any_point"], "slidercrank": ["04_slider_crank_engine"],
-             "coriolis": ["05_coriolis"], "fivebar": ["06_geared_fivebar"],
-             "jerk": ["09_jerk"], "tolerance": ["08_human_tolerance"]}
+TAUGHT_IN = {
+    "rotation": ["01_rotating_point"],
+    "fourbar": ["03_analytic_fourbar"],
+    "coupler": ["07_any_point"],
+    "slidercrank": ["04_slider_crank_engine"],
+    "coriolis": ["05_coriolis"],
+    "fivebar": ["06_geared_fivebar"],
+    "jerk": ["09_jerk"],
+    "tolerance": ["08_human_tolerance"],
+}
 
 
 def family_notebooks(course):
@@ -535,6 +573,7 @@ def family_notebooks(course):
     (a line that says "famil..." and has the family's name in backticks), else
     :data:`TAUGHT_IN`."""
     from accelab.exercises import families
+
     names = list(families.FAMILIES)
     found = {n: [] for n in names}
     for path in sorted(Path(course).glob("[0-9][0-9]_*.py")):
@@ -546,13 +585,13 @@ def family_notebooks(course):
                     found[n].append(path.stem)
     for n in names:
         if not found[n]:
-            found[n] = [s for s in TAUGHT_IN.get(n, [])
-                        if (Path(course) / f"{s}.py").exists()]
+            found[n] = [s for s in TAUGHT_IN.get(n, []) if (Path(course) / f"{s}.py").exists()]
     return found
 
 
 class FamilyNotebooks(Directive):
     """Which course notebook teaches each problem family."""
+
     has_content = False
 
     def run(self):
@@ -560,6 +599,7 @@ class FamilyNotebooks(Directive):
         course = Path(env.srcdir) / "course"
         try:
             from accelab.exercises import families
+
             mapping = family_notebooks(course)
         except Exception as exc:
             logger.warning(f"accelab-family-notebooks: {exc}")
@@ -567,14 +607,20 @@ class FamilyNotebooks(Directive):
         rows = []
         for name, generator in families.FAMILIES.items():
             import importlib
+
             module = importlib.import_module(generator.__module__)
             cell = nodes.paragraph()
             for k, stem in enumerate(mapping.get(name, [])):
                 if k:
                     cell += nodes.Text(", ")
-                ref = addnodes.pending_xref("", refdomain="std", reftype="doc",
-                                            reftarget=f"/course/{stem}", refexplicit=False,
-                                            refdoc=env.docname)
+                ref = addnodes.pending_xref(
+                    "",
+                    refdomain="std",
+                    reftype="doc",
+                    reftarget=f"/course/{stem}",
+                    refexplicit=False,
+                    refdoc=env.docname,
+                )
                 ref += nodes.inline(text=stem)
                 cell += ref
             if not mapping.get(name):

@@ -3,8 +3,10 @@
 
 from . import coriolis, coupler, fivebar, fourbar, jerk, rotation, slidercrank, tolerance
 
-FAMILIES = {m.FAMILY: m.generate_problem for m in
-            (rotation, fourbar, coupler, slidercrank, coriolis, fivebar, jerk, tolerance)}
+FAMILIES = {
+    m.FAMILY: m.generate_problem
+    for m in (rotation, fourbar, coupler, slidercrank, coriolis, fivebar, jerk, tolerance)
+}
 
 
 def generate(family, seed, ranges=None, units="US"):

@@ -52,7 +52,7 @@ def ranges_for(defaults, ranges, units):
     check_units(units)
     out = {}
     for name, (lo, hi, step, kind) in defaults.items():
-        if kind == "length" and units == "SI":   # round millimetres: steps of 5 or 10 mm
+        if kind == "length" and units == "SI":  # round millimetres: steps of 5 or 10 mm
             step = 5.0 * max(1, round(step * MM_PER_IN / 5.0))
             lo, hi = (step * round(v * MM_PER_IN / step) for v in (lo, hi))
         out[name] = (lo, hi, step, kind)
@@ -72,9 +72,16 @@ def ranges_for(defaults, ranges, units):
 
 
 def display_unit(kind, units):
-    return {"length": UNITS[units]["length"], "big_length": UNITS[units]["big_length"],
-            "angle": "deg", "omega": "rad/s", "alpha": "rad/s^2", "time": "s",
-            "rpm": "rpm", "number": ""}[kind]
+    return {
+        "length": UNITS[units]["length"],
+        "big_length": UNITS[units]["big_length"],
+        "angle": "deg",
+        "omega": "rad/s",
+        "alpha": "rad/s^2",
+        "time": "s",
+        "rpm": "rpm",
+        "number": "",
+    }[kind]
 
 
 def _in_unit(value, unit, name):
@@ -143,8 +150,10 @@ def first_accepted(family, seed, build, units):
             continue
         problem.seed = int(seed)
         return problem
-    raise GenerationError(f"no well-conditioned {family} variant in {MAX_ATTEMPTS} draws; "
-                          "widen the ranges (or check that the linkage can assemble in them)")
+    raise GenerationError(
+        f"no well-conditioned {family} variant in {MAX_ATTEMPTS} draws; "
+        "widen the ranges (or check that the linkage can assemble in them)"
+    )
 
 
 def sizable(*pairs):
@@ -156,27 +165,47 @@ def sizable(*pairs):
             raise Reject()
 
 
-__all__ = ["Problem", "Reject", "GenerationError", "UNITS", "ranges_for", "draw_value", "fmt",
-           "solve_checked", "first_accepted", "sizable", "display_unit", "check_units"]
+__all__ = [
+    "Problem",
+    "Reject",
+    "GenerationError",
+    "UNITS",
+    "ranges_for",
+    "draw_value",
+    "fmt",
+    "solve_checked",
+    "first_accepted",
+    "sizable",
+    "display_unit",
+    "check_units",
+]
 
 
-FOURBAR_DEFAULTS = {"a": (1.0, 4.0, 0.5, "length"), "b": (3.0, 9.0, 0.5, "length"),
-                    "c": (3.0, 9.0, 0.5, "length"), "d": (4.0, 10.0, 0.5, "length"),
-                    "theta2": (0.0, 355.0, 5.0, "angle"), "omega2": (5.0, 50.0, 5.0, "omega"),
-                    "alpha2": (5.0, 100.0, 5.0, "alpha")}
+FOURBAR_DEFAULTS = {
+    "a": (1.0, 4.0, 0.5, "length"),
+    "b": (3.0, 9.0, 0.5, "length"),
+    "c": (3.0, 9.0, 0.5, "length"),
+    "d": (4.0, 10.0, 0.5, "length"),
+    "theta2": (0.0, 355.0, 5.0, "angle"),
+    "omega2": (5.0, 50.0, 5.0, "omega"),
+    "alpha2": (5.0, 100.0, 5.0, "alpha"),
+}
 
 
 def fourbar_case(rng, r, L):
     """A fourbar batch case drawn from the ranges ``r`` (lengths in unit ``L``);
     the circuit is drawn too."""
-    return {"mechanism": "fourbar", "a": fmt(draw_value(rng, r["a"], nonzero=True), L),
-            "b": fmt(draw_value(rng, r["b"], nonzero=True), L),
-            "c": fmt(draw_value(rng, r["c"], nonzero=True), L),
-            "d": fmt(draw_value(rng, r["d"], nonzero=True), L),
-            "theta2": fmt(draw_value(rng, r["theta2"]), "deg"),
-            "omega2": fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
-            "alpha2": fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
-            "circuit": "open" if rng.random() < 0.5 else "crossed"}
+    return {
+        "mechanism": "fourbar",
+        "a": fmt(draw_value(rng, r["a"], nonzero=True), L),
+        "b": fmt(draw_value(rng, r["b"], nonzero=True), L),
+        "c": fmt(draw_value(rng, r["c"], nonzero=True), L),
+        "d": fmt(draw_value(rng, r["d"], nonzero=True), L),
+        "theta2": fmt(draw_value(rng, r["theta2"]), "deg"),
+        "omega2": fmt(draw_value(rng, r["omega2"], nonzero=True, signed=True), "rad/s"),
+        "alpha2": fmt(draw_value(rng, r["alpha2"], nonzero=True, signed=True), "rad/s^2"),
+        "circuit": "open" if rng.random() < 0.5 else "crossed",
+    }
 
 
 def given_of(case, keys):

@@ -24,13 +24,22 @@ import warnings
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
 
-from ..nbgrader_course import ensure_path, roster_ids
+from ..nbgrader_course import ensure_path
 from ..notebook import read_spec
-from .nbgrader_step import (PREPARED, _LOCK, NotebookTooLarge, NotebookUnreadable, cached_key,
-                            command_for, outcome_path, read_submission, save_outcome)
+from .nbgrader_step import (
+    _LOCK,
+    PREPARED,
+    NotebookTooLarge,
+    NotebookUnreadable,
+    cached_key,
+    command_for,
+    outcome_path,
+    read_submission,
+    save_outcome,
+)
 from .outcome import Outcome
 from .plan import fingerprint, plan_of
-from .sandbox import SandboxUnavailable, sandbox
+from .sandbox import sandbox
 from .supervisor import Limits, run_plan
 
 
@@ -40,7 +49,7 @@ class Submission:
 
     student: str
     readable: bool = True
-    problem: str = ""          # why it could not be graded
+    problem: str = ""  # why it could not be graded
     prepared: bool = False
     seconds: float = 0.0
     graded: bool = False
@@ -51,8 +60,7 @@ def submitters(course_dir, assignment):
     root = os.path.join(course_dir, "submitted")
     if not os.path.isdir(root):
         return []
-    return sorted(s for s in os.listdir(root)
-                  if os.path.isdir(os.path.join(root, s, assignment)))
+    return sorted(s for s in os.listdir(root) if os.path.isdir(os.path.join(root, s, assignment)))
 
 
 #: what a course's nbgrader_config.py written by accelab 0.1 imports (before the
@@ -70,14 +78,17 @@ def check_config_version(course_dir):
     except (OSError, UnicodeDecodeError):
         return
     if OLD_CONFIG_IMPORT.search(text):
-        raise ValueError(f"{path} was written by accelab 0.1 and imports 'exercises.grader'; "
-                         f"update it with: sed -i 's/from exercises\\./from accelab.exercises./' "
-                         f"{path}")
+        raise ValueError(
+            f"{path} was written by accelab 0.1 and imports 'exercises.grader'; "
+            f"update it with: sed -i 's/from exercises\\./from accelab.exercises./' "
+            f"{path}"
+        )
 
 
 def load_config(course_dir):
     """The course's nbgrader configuration, with its root set."""
     from traitlets.config.loader import PyFileConfigLoader
+
     check_config_version(course_dir)
     config = PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
     config.CourseDirectory.root = course_dir
@@ -87,6 +98,7 @@ def load_config(course_dir):
 def api_for(course_dir):
     from nbgrader.apps import NbGraderAPI
     from nbgrader.coursedir import CourseDirectory
+
     ensure_path()
     config = load_config(course_dir)
     return NbGraderAPI(CourseDirectory(config=config), config=config), config
@@ -102,16 +114,24 @@ def is_new(course_dir, assignment, student):
     if not os.path.exists(done):
         return True
     folder = os.path.dirname(submitted_path(course_dir, assignment, student))
-    newest = max((os.path.getmtime(os.path.join(folder, f)) for f in os.listdir(folder)),
-                 default=0.0)
+    newest = max(
+        (os.path.getmtime(os.path.join(folder, f)) for f in os.listdir(folder)), default=0.0
+    )
     return newest > os.path.getmtime(done)
 
 
 def sanitize(config, course_dir, assignment, student, nb):
     """The notebook as nbgrader's autograde sanitizes it (same preprocessors)."""
     from .nbgrader_step import sanitize_steps
-    resources = {"nbgrader": {"db_url": config.CourseDirectory.db_url, "assignment": assignment,
-                              "notebook": assignment, "student": student}}
+
+    resources = {
+        "nbgrader": {
+            "db_url": config.CourseDirectory.db_url,
+            "assignment": assignment,
+            "notebook": assignment,
+            "student": student,
+        }
+    }
     for cls in sanitize_steps():
         nb, resources = cls(config=config).preprocess(nb, resources)
     return nb
@@ -128,14 +148,14 @@ def prepare(config, course_dir, assignment, spec, student, command, limits, slot
     except (NotebookTooLarge, NotebookUnreadable) as exc:
         sub.readable, sub.problem = False, str(exc)
         return sub
-    except Exception as exc:   # an OSError: nothing of the file is quoted
+    except Exception as exc:  # an OSError: nothing of the file is quoted
         sub.readable = False
         sub.problem = f"the notebook cannot be read ({type(exc).__name__})"
         return sub
     try:
         nb = sanitize(config, course_dir, assignment, student, nb)
     except Exception:
-        return sub      # nbgrader will say what is wrong when it autogrades it
+        return sub  # nbgrader will say what is wrong when it autogrades it
     steps = plan_of(nb)
     key = cached_key(spec, student)
     slot = slots.get()
@@ -158,22 +178,34 @@ def progress(done, total, stream=None, width=30):
     stream.flush()
 
 
-def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=False,
-          show_progress=True, csv_path=None, limits=None):
+def grade(
+    course_dir,
+    assignment,
+    students=None,
+    only_new=False,
+    jobs=2,
+    unsafe=False,
+    show_progress=True,
+    csv_path=None,
+    limits=None,
+):
     """The whole job. Returns (submissions, csv path, rows, seconds, timings).
 
     Raises :class:`~.sandbox.SandboxUnavailable` when there is no sandbox and
     ``unsafe`` is not set.
     """
     from .gradetable import export_csv
+
     start = time.monotonic()
     course_dir = os.path.abspath(course_dir)
     command = command_for(unsafe) if unsafe else sandbox()
     spec = read_spec(course_dir, assignment)
     api, config = api_for(course_dir)
     step = config.JudgeSubmission
-    limits = limits or Limits(cell_seconds=float(step.get("cell_timeout", 10.0)),
-                              total_seconds=float(step.get("time_limit", 60.0)))
+    limits = limits or Limits(
+        cell_seconds=float(step.get("cell_timeout", 10.0)),
+        total_seconds=float(step.get("time_limit", 60.0)),
+    )
     everyone = submitters(course_dir, assignment)
     chosen = [s for s in (students or everyone) if s in everyone]
     if only_new:
@@ -188,15 +220,16 @@ def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=
     if show_progress:
         progress(0, len(chosen))
     # each run is judged and scored as soon as it is done, while the next ones run
-    with ThreadPoolExecutor(max_workers=max(1, int(jobs))) as pool, \
-            warnings.catch_warnings():
+    with ThreadPoolExecutor(max_workers=max(1, int(jobs))) as pool, warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        futures = {pool.submit(prepare, config, course_dir, assignment, spec, s, command,
-                               limits, slots): s for s in chosen}
+        futures = {
+            pool.submit(prepare, config, course_dir, assignment, spec, s, command, limits, slots): s
+            for s in chosen
+        }
         for n, fut in enumerate(as_completed(futures), start=1):
             try:
                 sub = fut.result()
-            except Exception:   # never one submission's failure for the whole class:
+            except Exception:  # never one submission's failure for the whole class:
                 sub = Submission(futures[fut])  # nbgrader's autograde tries it alone
             subs[sub.student] = sub
             if sub.readable:
@@ -209,8 +242,9 @@ def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=
             if show_progress:
                 progress(n, len(chosen))
     timings["sandbox runs and judging, overlapped"] = time.monotonic() - t0
-    timings["of which judging and gradebook (nbgrader autograde)"] = \
-        spent["judging and gradebook (nbgrader autograde)"]
+    timings["of which judging and gradebook (nbgrader autograde)"] = spent[
+        "judging and gradebook (nbgrader autograde)"
+    ]
     t0 = time.monotonic()
     for student in chosen:
         if not subs[student].graded:
@@ -219,8 +253,9 @@ def grade(course_dir, assignment, students=None, only_new=False, jobs=2, unsafe=
     if graded:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            api.generate_feedback(assignment,
-                                  student_id=graded[0] if len(graded) == 1 else None, force=True)
+            api.generate_feedback(
+                assignment, student_id=graded[0] if len(graded) == 1 else None, force=True
+            )
     timings["feedback"] = time.monotonic() - t0
     t0 = time.monotonic()
     path, rows = export_csv(course_dir, assignment, csv_path)
@@ -242,8 +277,9 @@ def zero_and_explain(api, course_dir, assignment, student, problem):
     """A submission that could not be graded: 0 on every question in the
     gradebook, the reason in its outcome and in a feedback page."""
     from nbgrader.api import MissingEntry
-    from ..nbgrader_course import gradebook
-    from ..nbgrader_course import course_id_of
+
+    from ..nbgrader_course import course_id_of, gradebook
+
     reason = problem or "it could not be graded"
     names = []
     with warnings.catch_warnings(), gradebook(course_dir, course_id_of(course_dir)) as gb:
@@ -263,9 +299,12 @@ def zero_and_explain(api, course_dir, assignment, student, problem):
     folder = os.path.join(course_dir, "feedback", student, assignment)
     os.makedirs(folder, exist_ok=True)
     import html
+
     with open(os.path.join(folder, f"{assignment}.html"), "w") as fh:
-        fh.write(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{assignment}: feedback"
-                 f"</title></head><body><h1>{html.escape(assignment)}: 0 of {len(names)}</h1>"
-                 f"<p>Your submission could not be graded: {html.escape(reason)}.</p>"
-                 "<p>Submit the assignment's notebook again, as a notebook saved by Jupyter, "
-                 "starting from the released one.</p></body></html>\n")
+        fh.write(
+            f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{assignment}: feedback"
+            f"</title></head><body><h1>{html.escape(assignment)}: 0 of {len(names)}</h1>"
+            f"<p>Your submission could not be graded: {html.escape(reason)}.</p>"
+            "<p>Submit the assignment's notebook again, as a notebook saved by Jupyter, "
+            "starting from the released one.</p></body></html>\n"
+        )

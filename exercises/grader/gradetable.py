@@ -25,7 +25,7 @@ def question_names(course_dir, assignment):
         meta = cell.metadata.get("nbgrader", {})
         gid = meta.get("grade_id", "")
         if meta.get("grade") and gid.startswith(TEST_PREFIX):
-            names.append(gid[len(TEST_PREFIX):])
+            names.append(gid[len(TEST_PREFIX) :])
     return names
 
 
@@ -53,31 +53,45 @@ def damage(course_dir, assignment, student):
         if not gid:
             continue
         if gid not in got:
-            what = "test cell" if meta.get("grade") else (
-                "answer cell" if meta.get("solution") else "locked cell")
-            notes.append(f"{what} {gid} was deleted" + (" (put back and graded)"
-                                                       if meta.get("grade") else ""))
+            what = (
+                "test cell"
+                if meta.get("grade")
+                else ("answer cell" if meta.get("solution") else "locked cell")
+            )
+            notes.append(
+                f"{what} {gid} was deleted"
+                + (" (put back and graded)" if meta.get("grade") else "")
+            )
         elif meta.get("locked") and got[gid].source.strip() != cell.source.strip():
             notes.append(f"locked cell {gid} was altered (restored before grading)")
         elif _role(got[gid]) != _role(cell):
             forged.append(gid)
     if forged:
-        notes.append(f"the nbgrader metadata of {len(forged)} cell(s) was changed ("
-                     f"{', '.join(forged[:3])}{', ...' if len(forged) > 3 else ''}; restored "
-                     f"before grading)")
+        notes.append(
+            f"the nbgrader metadata of {len(forged)} cell(s) was changed ("
+            f"{', '.join(forged[:3])}{', ...' if len(forged) > 3 else ''}; restored "
+            f"before grading)"
+        )
     known = {c.metadata.get("nbgrader", {}).get("grade_id") for c in ref.cells}
     invented = sorted(g for g in seen if g not in known)
     if invented:
-        notes.append(f"cells with grade ids the assignment does not have: "
-                     f"{', '.join(invented[:5])} (not graded)")
+        notes.append(
+            f"cells with grade ids the assignment does not have: "
+            f"{', '.join(invented[:5])} (not graded)"
+        )
     return notes
 
 
 def _role(cell):
     """A cell's nbgrader role: what it is graded as, and for how many points."""
     meta = cell.metadata.get("nbgrader", {})
-    return (cell.cell_type, bool(meta.get("grade")), bool(meta.get("solution")),
-            bool(meta.get("locked")), float(meta.get("points", 0) or 0))
+    return (
+        cell.cell_type,
+        bool(meta.get("grade")),
+        bool(meta.get("solution")),
+        bool(meta.get("locked")),
+        float(meta.get("points", 0) or 0),
+    )
 
 
 def read_outcome(course_dir, assignment, student):
@@ -93,9 +107,11 @@ def rows_of(course_dir, assignment):
     names = question_names(course_dir, assignment)
     roster = roster_ids(course_dir)
     submitted_root = os.path.join(course_dir, "submitted")
-    submitters = sorted(s for s in (os.listdir(submitted_root) if os.path.isdir(submitted_root)
-                                    else []) if os.path.isdir(os.path.join(submitted_root, s,
-                                                                           assignment)))
+    submitters = sorted(
+        s
+        for s in (os.listdir(submitted_root) if os.path.isdir(submitted_root) else [])
+        if os.path.isdir(os.path.join(submitted_root, s, assignment))
+    )
     students = list(dict.fromkeys([*roster, *submitters]))
     rows = []
     with warnings.catch_warnings(), gradebook(course_dir, course_id_of(course_dir)) as gb:
@@ -118,20 +134,32 @@ def rows_of(course_dir, assignment):
                 else:
                     for nb in sub.notebooks:
                         for g in nb.grades:
-                            name = g.name[len(TEST_PREFIX):] if g.name.startswith(
-                                TEST_PREFIX) else g.name
+                            name = (
+                                g.name[len(TEST_PREFIX) :]
+                                if g.name.startswith(TEST_PREFIX)
+                                else g.name
+                            )
                             if name in row:
                                 row[name] = float(g.score or 0.0)
                     penalty = float(sub.late_submission_penalty or 0.0)
                     if penalty:
-                        notes.append(f"late by {_duration(sub.total_seconds_late)}: "
-                                     f"penalty {penalty:g}")
+                        notes.append(
+                            f"late by {_duration(sub.total_seconds_late)}: penalty {penalty:g}"
+                        )
                     notes += outcome.get("notes", [])
                 notes += damage(course_dir, assignment, student)
             score = sum(row.values())
-            rows.append({"student": student, **row, "score": score, "late_penalty": penalty,
-                         "total": max(0.0, score - penalty), "max": float(len(names)),
-                         "notes": "; ".join(notes)})
+            rows.append(
+                {
+                    "student": student,
+                    **row,
+                    "score": score,
+                    "late_penalty": penalty,
+                    "total": max(0.0, score - penalty),
+                    "max": float(len(names)),
+                    "notes": "; ".join(notes),
+                }
+            )
     return names, rows
 
 
@@ -149,8 +177,9 @@ def export_csv(course_dir, assignment, path=None):
     path = path or os.path.join(course_dir, f"grades_{assignment}.csv")
     names, rows = rows_of(course_dir, assignment)
     with open(path, "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=["student", *names, "score", "late_penalty",
-                                                "total", "max", "notes"])
+        writer = csv.DictWriter(
+            fh, fieldnames=["student", *names, "score", "late_penalty", "total", "max", "notes"]
+        )
         writer.writeheader()
         writer.writerows({k: _cell_text(v) for k, v in row.items()} for row in rows)
     return path, rows
@@ -167,10 +196,12 @@ def _cell_text(value):
 
 def format_table(rows, names):
     """The grade table as text: one line per student."""
-    head = f"{'student':<12} " + " ".join(f"{n[:11]:>11}" for n in names) + \
-        f" {'total':>7}  notes"
+    head = f"{'student':<12} " + " ".join(f"{n[:11]:>11}" for n in names) + f" {'total':>7}  notes"
     lines = [head, "-" * len(head)]
     for r in rows:
-        lines.append(f"{r['student']:<12} " + " ".join(f"{r[n]:>11g}" for n in names)
-                     + f" {r['total']:>4g}/{r['max']:g}  {r['notes']}")
+        lines.append(
+            f"{r['student']:<12} "
+            + " ".join(f"{r[n]:>11g}" for n in names)
+            + f" {r['total']:>4g}/{r['max']:g}  {r['notes']}"
+        )
     return "\n".join(lines)

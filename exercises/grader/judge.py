@@ -50,8 +50,11 @@ def judge(asked, report, expected, tolerance, angle_tolerance, ureg):
     if asked.kind == "choice":
         if reading.word == expected:
             return right(name, "the right judgement")
-        return wrong(name, f"{name}: not the right judgement; compare your value with the "
-                     "levels the statement gives")
+        return wrong(
+            name,
+            f"{name}: not the right judgement; compare your value with the "
+            "levels the statement gives",
+        )
     if asked.kind == "angle":
         return _judge_angle(name, reading, expected, angle_tolerance)
     return _judge_number(asked, reading, expected, tolerance, ureg)
@@ -68,28 +71,43 @@ def _judge_number(asked, reading, expected, tolerance, ureg):
         return right(name, f"within {pct}")
     if _close(-got, expected, tolerance):
         if asked.name.endswith("_mag") or asked.description.lower().startswith("magnitude"):
-            return wrong(name, f"{name}: the size is right, but a magnitude is never negative: "
-                         "give |A|, the length of the vector, and leave its direction to the "
-                         "angle.")
-        return wrong(name, f"{name}: the size is right but the sign is wrong. Check the sense "
-                     "of rotation: angles, omega and alpha are positive counter-clockwise, and "
-                     "a vector's components follow the +x and +y axes.")
+            return wrong(
+                name,
+                f"{name}: the size is right, but a magnitude is never negative: "
+                "give |A|, the length of the vector, and leave its direction to the "
+                "angle.",
+            )
+        return wrong(
+            name,
+            f"{name}: the size is right but the sign is wrong. Check the sense "
+            "of rotation: angles, omega and alpha are positive counter-clockwise, and "
+            "a vector's components follow the +x and +y axes.",
+        )
     if reading.bare and asked.unit:
         base = ureg.Quantity(1.0, asked.unit).to_base_units().units
         if _close(reading.raw, expected, tolerance) and f"{base}" != asked.unit:
-            return wrong(name, f"{name}: your bare number would be right in {base:~P}; the "
-                         f"statement asks for {asked.unit}: convert it, or give a Quantity.")
-    return wrong(name, f"{name}: not within {pct} of the exact value. " + _size_hint(got, expected)
-                 + " Check the given values and units, the circuit (branch), and each term of "
-                 "the acceleration (tangential, normal, Coriolis).")
+            return wrong(
+                name,
+                f"{name}: your bare number would be right in {base:~P}; the "
+                f"statement asks for {asked.unit}: convert it, or give a Quantity.",
+            )
+    return wrong(
+        name,
+        f"{name}: not within {pct} of the exact value. "
+        + _size_hint(got, expected)
+        + " Check the given values and units, the circuit (branch), and each term of "
+        "the acceleration (tangential, normal, Coriolis).",
+    )
 
 
 #: factors a unit or a formula slip multiplies an answer by, and what to check
-FACTORS = [(2 * math.pi, "a factor of about 2 pi: check revolutions against radians"),
-           (12.0, "a factor of about 12: check inches against feet"),
-           (25.4, "a factor of about 25.4: check inches against millimetres"),
-           (9.80665, "a factor of about 9.81: check g against m/s^2"),
-           (2.0, "a factor of about 2: check for a doubled or a halved term")]
+FACTORS = [
+    (2 * math.pi, "a factor of about 2 pi: check revolutions against radians"),
+    (12.0, "a factor of about 12: check inches against feet"),
+    (25.4, "a factor of about 25.4: check inches against millimetres"),
+    (9.80665, "a factor of about 9.81: check g against m/s^2"),
+    (2.0, "a factor of about 2: check for a doubled or a halved term"),
+]
 
 
 def _size_hint(got, expected):
@@ -115,12 +133,21 @@ def _judge_angle(name, reading, expected, angle_tolerance):
     if abs(_wrap(reading.si - expected)) <= band:
         return right(name, f"within {angle_tolerance:g} deg")
     if abs(_wrap(reading.si - expected - math.pi)) <= band:
-        return wrong(name, f"{name}: your direction points the opposite way. Check the sense of "
-                     "rotation (counter-clockwise positive) and the signs of the components "
-                     "before taking the angle (use the quadrant of both components, as atan2 "
-                     "does).")
+        return wrong(
+            name,
+            f"{name}: your direction points the opposite way. Check the sense of "
+            "rotation (counter-clockwise positive) and the signs of the components "
+            "before taking the angle (use the quadrant of both components, as atan2 "
+            "does).",
+        )
     if reading.bare and abs(_wrap(reading.raw - expected)) <= band:
-        return wrong(name, f"{name}: your number would be right in radians; the statement asks "
-                     "for degrees (or give a Quantity, e.g. Q_(1.2, 'rad')).")
-    return wrong(name, f"{name}: the direction is off by more than {angle_tolerance:g} deg; "
-                 "measure it counter-clockwise from +x.")
+        return wrong(
+            name,
+            f"{name}: your number would be right in radians; the statement asks "
+            "for degrees (or give a Quantity, e.g. Q_(1.2, 'rad')).",
+        )
+    return wrong(
+        name,
+        f"{name}: the direction is off by more than {angle_tolerance:g} deg; "
+        "measure it counter-clockwise from +x.",
+    )

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 from ..assignment import Variant, build_variant
 from ..expr import evaluate
-from ..silence import silenced
 from ..problem import solve_cases
+from ..silence import silenced
 
 
 @dataclass
@@ -40,8 +40,10 @@ def key_value(answer, outputs=None):
                 return choice
     value = evaluate(answer.expr, outputs)
     if isinstance(value, complex):
-        raise ValueError(f"expr {answer.expr!r} of {answer.name} is a vector; "
-                         "use abs(), angle(), real() or imag()")
+        raise ValueError(
+            f"expr {answer.expr!r} of {answer.name} is a vector; "
+            "use abs(), angle(), real() or imag()"
+        )
     return float(value)
 
 

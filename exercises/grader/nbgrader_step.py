@@ -71,9 +71,13 @@ def other_keys(spec, course_dir, me):
 
 
 def limits_of(step):
-    return Limits(cell_seconds=step.cell_timeout, total_seconds=step.time_limit,
-                  cpu_seconds=int(step.time_limit) + 5, memory_bytes=step.memory_mb << 20,
-                  processes=step.processes)
+    return Limits(
+        cell_seconds=step.cell_timeout,
+        total_seconds=step.time_limit,
+        cpu_seconds=int(step.time_limit) + 5,
+        memory_bytes=step.memory_mb << 20,
+        processes=step.processes,
+    )
 
 
 #: the largest submitted notebook the grader reads [MB]: a released notebook is well
@@ -99,14 +103,16 @@ def read_submission(path):
     a message for the student that quotes nothing of the file.
     """
     if os.path.islink(path):
-        raise NotebookUnreadable("the notebook cannot be read: it is a link to another file, "
-                                 "not a notebook")
+        raise NotebookUnreadable(
+            "the notebook cannot be read: it is a link to another file, not a notebook"
+        )
     size = os.path.getsize(path) / 1e6
     if size > MAX_NOTEBOOK_MB:
         raise NotebookTooLarge(
             f"the notebook is {size:.0f} MB, more than the {MAX_NOTEBOOK_MB} MB the grader "
             f"reads; clear its outputs (Kernel > Restart Kernel and Clear All Outputs), save "
-            f"it and submit again")
+            f"it and submit again"
+        )
     try:
         return nbformat.read(path, as_version=4)
     except UnicodeDecodeError:
@@ -132,13 +138,17 @@ class JudgeSubmission(NbGraderPreprocessor):
     """Run in the sandbox, judge outside it (in place of nbgrader's Execute)."""
 
     cell_timeout = Float(10.0, help="Seconds one cell may run [s]").tag(config=True)
-    time_limit = Float(60.0, help="Seconds the whole submission may run, restarts included "
-                                  "[s]").tag(config=True)
+    time_limit = Float(
+        60.0, help="Seconds the whole submission may run, restarts included [s]"
+    ).tag(config=True)
     memory_mb = Integer(1536, help="Address space of each process [MiB]").tag(config=True)
     processes = Integer(64, help="Processes the submission may have").tag(config=True)
-    unsafe_no_sandbox = Bool(False, help="Run submissions without a sandbox: a submission can "
-                             "then read the course (keys, hidden tests, gradebook) and change "
-                             "other students' grades").tag(config=True)
+    unsafe_no_sandbox = Bool(
+        False,
+        help="Run submissions without a sandbox: a submission can "
+        "then read the course (keys, hidden tests, gradebook) and change "
+        "other students' grades",
+    ).tag(config=True)
 
     def preprocess(self, nb, resources):
         info = resources["nbgrader"]
@@ -151,10 +161,12 @@ class JudgeSubmission(NbGraderPreprocessor):
             run = PREPARED.pop(token, None)
         key = cached_key(spec, student)
         if run is None:
-            run = run_plan(steps, key.variant.statement(), command_for(self.unsafe_no_sandbox),
-                           limits_of(self))
-        submitted = submitted_notebook(course_dir, assignment, student, info.get("notebook",
-                                                                               assignment))
+            run = run_plan(
+                steps, key.variant.statement(), command_for(self.unsafe_no_sandbox), limits_of(self)
+            )
+        submitted = submitted_notebook(
+            course_dir, assignment, student, info.get("notebook", assignment)
+        )
         shown = shown_ids(submitted) if submitted is not None else []
         outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
         write_notebook(nb, steps, run, outcome)
@@ -165,8 +177,10 @@ class JudgeSubmission(NbGraderPreprocessor):
 def command_for(unsafe):
     """The sandbox command builder, or the explicitly unsafe one."""
     from .sandbox import sandbox
+
     if unsafe:
         from .unsandboxed import UnsandboxedCommand
+
         return UnsandboxedCommand()
     return sandbox()
 
@@ -215,6 +229,7 @@ class RestoreCellRoles(NbGraderPreprocessor):
 
     def preprocess(self, nb, resources):
         from nbgrader.api import Gradebook
+
         info = resources["nbgrader"]
         with Gradebook(info["db_url"]) as gb:
             source = gb.find_notebook(info["notebook"], info["assignment"])
@@ -230,10 +245,14 @@ class RestoreCellRoles(NbGraderPreprocessor):
             if gid not in locked:
                 del meta["nbgrader"]
                 continue
-            role = {k: v for k, v in meta["nbgrader"].items()
-                    if k in ("grade_id", "schema_version", "checksum", "cell_type")}
-            role.update(grade=gid in points, solution=gid in solution, task=gid in task,
-                        locked=locked[gid])
+            role = {
+                k: v
+                for k, v in meta["nbgrader"].items()
+                if k in ("grade_id", "schema_version", "checksum", "cell_type")
+            }
+            role.update(
+                grade=gid in points, solution=gid in solution, task=gid in task, locked=locked[gid]
+            )
             if gid in points:
                 role["points"] = points[gid]
             meta["nbgrader"] = role
@@ -252,8 +271,9 @@ class QuoteStudentText(NbGraderPreprocessor):
     """
 
     def preprocess_cell(self, cell, resources, index):
-        if cell.cell_type in ("markdown", "raw") and not cell.metadata.get(
-                "nbgrader", {}).get("locked"):
+        if cell.cell_type in ("markdown", "raw") and not cell.metadata.get("nbgrader", {}).get(
+            "locked"
+        ):
             text = cell.source
             longest = max((len(run) for run in re.findall(r"~+", text)), default=0)
             fence = "~" * max(3, longest + 1)
@@ -268,10 +288,22 @@ class QuoteStudentText(NbGraderPreprocessor):
 def sanitize_steps():
     """nbgrader's sanitizing steps as accelab runs them, in order: the same in
     ``accelab grade`` and in the course's nbgrader_config.py."""
-    from nbgrader.preprocessors import (CheckCellMetadata, ClearOutput, OverwriteCells,
-                                        OverwriteKernelspec)
-    return [ClearOutput, DropDuplicateIds, RestoreCellRoles, OverwriteKernelspec,
-            OverwriteCells, QuoteStudentText, CheckCellMetadata]
+    from nbgrader.preprocessors import (
+        CheckCellMetadata,
+        ClearOutput,
+        OverwriteCells,
+        OverwriteKernelspec,
+    )
+
+    return [
+        ClearOutput,
+        DropDuplicateIds,
+        RestoreCellRoles,
+        OverwriteKernelspec,
+        OverwriteCells,
+        QuoteStudentText,
+        CheckCellMetadata,
+    ]
 
 
 class CleanFeedback(NbGraderPreprocessor):

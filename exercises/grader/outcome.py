@@ -24,8 +24,8 @@ class Outcome:
     """The grading of one submission."""
 
     student: str
-    verdicts: dict = field(default_factory=dict)     # name -> Verdict
-    notes: list = field(default_factory=list)        # for the CSV and the feedback
+    verdicts: dict = field(default_factory=dict)  # name -> Verdict
+    notes: list = field(default_factory=list)  # for the CSV and the feedback
     seconds: float = 0.0
 
     @property
@@ -33,13 +33,21 @@ class Outcome:
         return sum(v.credit for v in self.verdicts.values())
 
     def to_dict(self):
-        return {"student": self.student, "seconds": self.seconds, "notes": list(self.notes),
-                "verdicts": {n: asdict(v) for n, v in self.verdicts.items()}}
+        return {
+            "student": self.student,
+            "seconds": self.seconds,
+            "notes": list(self.notes),
+            "verdicts": {n: asdict(v) for n, v in self.verdicts.items()},
+        }
 
     @classmethod
     def from_dict(cls, data):
-        return cls(data["student"], {n: Verdict(**v) for n, v in data["verdicts"].items()},
-                   list(data["notes"]), float(data.get("seconds", 0.0)))
+        return cls(
+            data["student"],
+            {n: Verdict(**v) for n, v in data["verdicts"].items()},
+            list(data["notes"]),
+            float(data.get("seconds", 0.0)),
+        )
 
 
 def judge_run(key, steps, run, others=None, shown=()):
@@ -59,14 +67,17 @@ def judge_run(key, steps, run, others=None, shown=()):
         report = run.reports.get(name)
         cause = _cell_cause(run, answers.get(name))
         if report is None:
-            step = next((k for k, s in enumerate(steps) if s.kind == "report" and s.name == name),
-                        None)
+            step = next(
+                (k for k, s in enumerate(steps) if s.kind == "report" and s.name == name), None
+            )
             why = run.cells[step].message if step is not None else "its test cell is missing"
-            outcome.verdicts[name] = wrong(name, f"{name}: no credit: its value could not be "
-                                           f"read ({why})")
+            outcome.verdicts[name] = wrong(
+                name, f"{name}: no credit: its value could not be read ({why})"
+            )
             continue
-        verdict = judge(a, report, key.values[name], variant.tolerance,
-                        variant.angle_tolerance, ureg)
+        verdict = judge(
+            a, report, key.values[name], variant.tolerance, variant.angle_tolerance, ureg
+        )
         if not verdict.ok and report.get("state") == "missing" and cause:
             verdict = wrong(name, f"{name}: no credit: its answer cell did not finish: {cause}")
         outcome.verdicts[name] = verdict
@@ -85,19 +96,27 @@ def _whose_values(key, run, others, shown, outcome, asked):
     """Notes on values that are not the submitter's own."""
     notes = []
     me = key.student
-    for who in dict.fromkeys([*run.refused, *[s for s in run.loaded if s != me],
-                              *[s for s in shown if s != me]]):
-        notes.append(f"the notebook showed or asked for the values of {_whose(who, others)}, "
-                     f"not the submitter's; it was graded against {me}'s own values")
+    for who in dict.fromkeys(
+        [*run.refused, *[s for s in run.loaded if s != me], *[s for s in shown if s != me]]
+    ):
+        notes.append(
+            f"the notebook showed or asked for the values of {_whose(who, others)}, "
+            f"not the submitter's; it was graded against {me}'s own values"
+        )
     wrong_names = [n for n, v in outcome.verdicts.items() if not v.ok]
     for other, other_key in others.items():
         if other == me or not wrong_names:
             continue
-        hits = [n for n in wrong_names if _matches(asked[n], run.reports.get(n), other_key, n,
-                                                   key.variant)]
+        hits = [
+            n
+            for n in wrong_names
+            if _matches(asked[n], run.reports.get(n), other_key, n, key.variant)
+        ]
         if hits and len(hits) >= max(1, len(wrong_names) // 2):
-            notes.append(f"{len(hits)} answer(s) ({', '.join(hits)}) hold the values of "
-                         f"{_whose(other, others)}, not the submitter's own")
+            notes.append(
+                f"{len(hits)} answer(s) ({', '.join(hits)}) hold the values of "
+                f"{_whose(other, others)}, not the submitter's own"
+            )
     return notes
 
 
@@ -149,36 +168,51 @@ def _write(nb, steps, run, outcome):
         if step.kind == "report":
             verdict = outcome.verdicts.get(step.name)
             if verdict is None:
-                cell.outputs = [_error("NotGraded", f"{step.name} is not a graded answer of "
-                                       "this assignment")]
+                cell.outputs = [
+                    _error("NotGraded", f"{step.name} is not a graded answer of this assignment")
+                ]
             elif verdict.ok:
-                cell.outputs = [{"output_type": "stream", "name": "stdout",
-                                 "text": verdict.message + "\n"}]
+                cell.outputs = [
+                    {"output_type": "stream", "name": "stdout", "text": verdict.message + "\n"}
+                ]
             else:
                 cell.outputs = [_error("WrongAnswer", verdict.message)]
             continue
         result = run.cells[k]
         outputs = list(result.outputs)
         if result.status in ("timeout", "died", "not_run"):
-            outputs.append(_error({"timeout": "CellTimeout", "died": "KernelDied",
-                                   "not_run": "NotRun"}[result.status], result.message))
+            outputs.append(
+                _error(
+                    {"timeout": "CellTimeout", "died": "KernelDied", "not_run": "NotRun"}[
+                        result.status
+                    ],
+                    result.message,
+                )
+            )
         cell.outputs = outputs
         if step.grade_id == "parameters":
-            cell.outputs = [{"output_type": "stream", "name": "stdout",
-                             "text": _summary(outcome)}] + cell.outputs
+            cell.outputs = [
+                {"output_type": "stream", "name": "stdout", "text": _summary(outcome)}
+            ] + cell.outputs
     return nb
 
 
 def _summary(outcome):
-    lines = [f"Graded against the values of student {outcome.student} (the submitter), "
-             f"outside this notebook: {outcome.score:g} of {len(outcome.verdicts)} right."]
+    lines = [
+        f"Graded against the values of student {outcome.student} (the submitter), "
+        f"outside this notebook: {outcome.score:g} of {len(outcome.verdicts)} right."
+    ]
     lines += [f"Note: {n}." for n in outcome.notes]
     return "\n".join(lines) + "\n"
 
 
 def _error(ename, evalue):
-    return {"output_type": "error", "ename": ename, "evalue": evalue,
-            "traceback": [f"{ename}: {evalue}"]}
+    return {
+        "output_type": "error",
+        "ename": ename,
+        "evalue": evalue,
+        "traceback": [f"{ename}: {evalue}"],
+    }
 
 
 def reading_problem(asked, report):

@@ -46,7 +46,7 @@ def plan_of(nb):
             continue
         gid = grade_id(cell)
         if is_test(cell):
-            steps.append(Step(index, "report", name=gid[len(TEST_PREFIX):], grade_id=gid))
+            steps.append(Step(index, "report", name=gid[len(TEST_PREFIX) :], grade_id=gid))
         else:
             steps.append(Step(index, "code", source=cell.source, grade_id=gid))
     return steps
@@ -60,5 +60,8 @@ def fingerprint(steps):
 
 def answer_cells(steps):
     """name -> index of the step whose cell is ``answer_<name>``."""
-    return {s.grade_id[len(ANSWER_PREFIX):]: k for k, s in enumerate(steps)
-            if s.grade_id.startswith(ANSWER_PREFIX)}
+    return {
+        s.grade_id[len(ANSWER_PREFIX) :]: k
+        for k, s in enumerate(steps)
+        if s.grade_id.startswith(ANSWER_PREFIX)
+    }

@@ -34,10 +34,12 @@ STUDENT_SIDE = ("__init__.py", "student")
 #: working directory (and HOME) inside the sandbox
 WORKDIR = "/tmp/work"
 
-INSTALL_HINT = ("install bubblewrap (Debian/Ubuntu: `sudo apt-get install bubblewrap`; "
-                "Fedora: `sudo dnf install bubblewrap`), and on a machine that restricts "
-                "user namespaces grade as root or allow them "
-                "(`sysctl kernel.unprivileged_userns_clone=1`)")
+INSTALL_HINT = (
+    "install bubblewrap (Debian/Ubuntu: `sudo apt-get install bubblewrap`; "
+    "Fedora: `sudo dnf install bubblewrap`), and on a machine that restricts "
+    "user namespaces grade as root or allow them "
+    "(`sysctl kernel.unprivileged_userns_clone=1`)"
+)
 
 
 class SandboxUnavailable(RuntimeError):
@@ -69,9 +71,11 @@ class SandboxCommand:
         if self._etc is None:
             folder = tempfile.mkdtemp(prefix="accelab-etc-")
             with open(os.path.join(folder, "passwd"), "w") as fh:
-                fh.write("root:x:0:0::/:/usr/sbin/nologin\n"
-                         f"student:x:{BASE_UID}:{BASE_UID}::{WORKDIR}:/usr/sbin/nologin\n"
-                         "nobody:x:65534:65534::/:/usr/sbin/nologin\n")
+                fh.write(
+                    "root:x:0:0::/:/usr/sbin/nologin\n"
+                    f"student:x:{BASE_UID}:{BASE_UID}::{WORKDIR}:/usr/sbin/nologin\n"
+                    "nobody:x:65534:65534::/:/usr/sbin/nologin\n"
+                )
             with open(os.path.join(folder, "group"), "w") as fh:
                 fh.write(f"root:x:0:\nstudent:x:{BASE_UID}:\nnogroup:x:65534:\n")
             os.chmod(folder, 0o755)
@@ -83,9 +87,19 @@ class SandboxCommand:
         if not self.bwrap:
             raise SandboxUnavailable(f"bubblewrap (bwrap) is not installed: {INSTALL_HINT}")
         limits = limits or {}
-        args = [self.bwrap, "--unshare-pid", "--unshare-net", "--unshare-ipc",
-                "--unshare-uts", "--unshare-cgroup-try", "--die-with-parent", "--new-session",
-                "--hostname", "sandbox", "--clearenv"]
+        args = [
+            self.bwrap,
+            "--unshare-pid",
+            "--unshare-net",
+            "--unshare-ipc",
+            "--unshare-uts",
+            "--unshare-cgroup-try",
+            "--die-with-parent",
+            "--new-session",
+            "--hostname",
+            "sandbox",
+            "--clearenv",
+        ]
         if not _as_root():
             args += ["--unshare-user", "--uid", "65534", "--gid", "65534", "--disable-userns"]
         args += ["--ro-bind", "/usr", "/usr"]
@@ -101,16 +115,29 @@ class SandboxCommand:
         for name in ("ld.so.cache", "localtime", "nsswitch.conf"):
             if os.path.exists(f"/etc/{name}"):
                 args += ["--ro-bind", f"/etc/{name}", f"/etc/{name}"]
-        args += ["--proc", "/proc", "--dev", "/dev",
-                 "--perms", "1777", "--size", str(int(limits.get("disk_bytes", 64 << 20))),
-                 "--tmpfs", "/tmp",
-                 "--perms", "1777", "--size", str(int(limits.get("shm_bytes", 16 << 20))),
-                 "--tmpfs", "/dev/shm"]
+        args += [
+            "--proc",
+            "/proc",
+            "--dev",
+            "/dev",
+            "--perms",
+            "1777",
+            "--size",
+            str(int(limits.get("disk_bytes", 64 << 20))),
+            "--tmpfs",
+            "/tmp",
+            "--perms",
+            "1777",
+            "--size",
+            str(int(limits.get("shm_bytes", 16 << 20))),
+            "--tmpfs",
+            "/dev/shm",
+        ]
         bound = []
         for path in self.prefixes:
             args += self._dirs_to(path, bound) + ["--ro-bind", path, path]
             bound.append(path)
-        if not self._inside(self.accelab_dir, bound):   # the package's __init__ alone
+        if not self._inside(self.accelab_dir, bound):  # the package's __init__ alone
             init = os.path.join(self.accelab_dir, "__init__.py")
             args += self._dirs_to(self.accelab_dir, bound)
             args += ["--perms", "0755", "--dir", self.accelab_dir, "--ro-bind", init, init]
@@ -130,8 +157,15 @@ class SandboxCommand:
         args += ["--"]
         if _as_root():
             uid = str(BASE_UID + int(slot))
-            args += ["setpriv", f"--reuid={uid}", f"--regid={uid}", "--clear-groups",
-                     "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"]
+            args += [
+                "setpriv",
+                f"--reuid={uid}",
+                f"--regid={uid}",
+                "--clear-groups",
+                "--inh-caps=-all",
+                "--bounding-set=-all",
+                "--no-new-privs",
+            ]
         return args + list(argv)
 
     @staticmethod
@@ -159,10 +193,12 @@ def sandbox():
     Raises :class:`SandboxUnavailable` with what to do when it does not.
     """
     builder = SandboxCommand()
-    probe = ("import os, sys; import accelab.exercises.student.kernel, accelab.exercises.student.runtime; "
-             "from accelab import exercises; "
-             "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
-             "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)")
+    probe = (
+        "import os, sys; import accelab.exercises.student.kernel, accelab.exercises.student.runtime; "
+        "from accelab import exercises; "
+        "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
+        "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)"
+    )
     try:
         cmd = builder.command([sys.executable, "-I", "-c", probe], env={"PATH": "/usr/bin"})
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
@@ -172,8 +208,9 @@ def sandbox():
         raise SandboxUnavailable(f"bubblewrap could not run ({exc}): {INSTALL_HINT}") from None
     if proc.returncode != 0 or proc.stdout.strip() != "True":
         detail = (proc.stderr.strip().splitlines() or ["no output"])[-1][:300]
-        raise SandboxUnavailable(f"bubblewrap does not work on this machine ({detail}): "
-                                 f"{INSTALL_HINT}")
+        raise SandboxUnavailable(
+            f"bubblewrap does not work on this machine ({detail}): {INSTALL_HINT}"
+        )
     return builder
 
 

@@ -35,20 +35,24 @@ REPORT_SECONDS = 5.0
 class Limits:
     """What one submission may use."""
 
-    cell_seconds: float = 10.0          # [s] wall time of one cell
-    total_seconds: float = 60.0         # [s] wall time of the whole submission
-    cpu_seconds: int = 60               # [s] CPU time of each process
-    memory_bytes: int = 1536 << 20      # [bytes] address space of each process
-    processes: int = 64                 # processes of the sandbox user
-    file_bytes: int = 16 << 20          # [bytes] largest file it may write
-    disk_bytes: int = 64 << 20          # [bytes] its /tmp (a tmpfs)
-    output_chars: int = 20000           # [characters] kept per stream and cell
-    total_output_chars: int = 200000    # [characters] kept over the whole submission
+    cell_seconds: float = 10.0  # [s] wall time of one cell
+    total_seconds: float = 60.0  # [s] wall time of the whole submission
+    cpu_seconds: int = 60  # [s] CPU time of each process
+    memory_bytes: int = 1536 << 20  # [bytes] address space of each process
+    processes: int = 64  # processes of the sandbox user
+    file_bytes: int = 16 << 20  # [bytes] largest file it may write
+    disk_bytes: int = 64 << 20  # [bytes] its /tmp (a tmpfs)
+    output_chars: int = 20000  # [characters] kept per stream and cell
+    total_output_chars: int = 200000  # [characters] kept over the whole submission
 
     def for_kernel(self):
-        return {"memory_bytes": self.memory_bytes, "cpu_seconds": self.cpu_seconds,
-                "processes": self.processes, "file_bytes": self.file_bytes,
-                "output_chars": self.output_chars}
+        return {
+            "memory_bytes": self.memory_bytes,
+            "cpu_seconds": self.cpu_seconds,
+            "processes": self.processes,
+            "file_bytes": self.file_bytes,
+            "output_chars": self.output_chars,
+        }
 
 
 class SandboxBroken(Exception):
@@ -88,9 +92,15 @@ class RunResult:
     error: str = ""
 
     def to_dict(self):
-        return {"cells": {str(k): vars(v) for k, v in self.cells.items()},
-                "reports": self.reports, "loaded": self.loaded, "refused": self.refused,
-                "seconds": self.seconds, "starts": self.starts, "error": self.error}
+        return {
+            "cells": {str(k): vars(v) for k, v in self.cells.items()},
+            "reports": self.reports,
+            "loaded": self.loaded,
+            "refused": self.refused,
+            "seconds": self.seconds,
+            "starts": self.starts,
+            "error": self.error,
+        }
 
 
 class Kernel:
@@ -104,9 +114,14 @@ class Kernel:
         rep_r, rep_w = os.pipe()
         argv = argv_of(cmd_r, rep_w)
         try:
-            self.proc = subprocess.Popen(self.command(argv, env), pass_fds=(cmd_r, rep_w),
-                                         stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                                         stderr=subprocess.PIPE, start_new_session=True)
+            self.proc = subprocess.Popen(
+                self.command(argv, env),
+                pass_fds=(cmd_r, rep_w),
+                stdin=subprocess.DEVNULL,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.PIPE,
+                start_new_session=True,
+            )
         finally:
             os.close(cmd_r)
             os.close(rep_w)
@@ -119,18 +134,19 @@ class Kernel:
             os.write(self.cmd_w, struct.pack(">I", len(body)))
             view = memoryview(body)
             while view:
-                view = view[os.write(self.cmd_w, view):]
+                view = view[os.write(self.cmd_w, view) :]
         except OSError:
             raise Failure(self._death()) from None
         deadline = time.monotonic() + seconds
         head = self._read(4, deadline)
         (size,) = struct.unpack(">I", head)
         if size > MAX_FRAME:
-            raise Failure(f"the notebook's process sent {size} bytes at once, over the "
-                          f"limit of {MAX_FRAME}")
+            raise Failure(
+                f"the notebook's process sent {size} bytes at once, over the limit of {MAX_FRAME}"
+            )
         try:
             reply = json.loads(self._read(size, deadline).decode("utf-8"))
-        except (ValueError, RecursionError):    # not JSON, or nested too deep to read
+        except (ValueError, RecursionError):  # not JSON, or nested too deep to read
             raise Failure("the notebook's process sent something that is not a reply") from None
         if not isinstance(reply, dict):
             raise Failure("the notebook's process sent something that is not a reply")
@@ -157,8 +173,10 @@ class Kernel:
         except subprocess.TimeoutExpired:
             return "the notebook's process stopped answering"
         if code in (-signal.SIGKILL, 128 + signal.SIGKILL, 137):
-            return ("the notebook's process was killed (a memory or process limit, or a "
-                    "signal it sent itself)")
+            return (
+                "the notebook's process was killed (a memory or process limit, or a "
+                "signal it sent itself)"
+            )
         if code in (-signal.SIGXCPU, 128 + signal.SIGXCPU):
             return "the notebook's process used up its CPU time"
         return f"the notebook's process ended (exit status {code}: os._exit, exit() or a crash)"
@@ -187,12 +205,21 @@ class Kernel:
 
 def kernel_env(student):
     """The sandbox's whole environment: nothing of the instructor's."""
-    return {"PATH": f"{os.path.dirname(sys.executable)}:/usr/bin:/bin", "HOME": WORKDIR,
-            "TMPDIR": "/tmp", "LANG": "C.UTF-8", "MPLBACKEND": "Agg",
-            "MPLCONFIGDIR": f"{WORKDIR}/.matplotlib", "OPENBLAS_NUM_THREADS": "1",
-            "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1", "PYTHONDONTWRITEBYTECODE": "1",
-            "PYTHONWARNINGS": "ignore", "ACCELAB_STUDENT_ID": str(student),
-            "NBGRADER_EXECUTION": "autograde"}
+    return {
+        "PATH": f"{os.path.dirname(sys.executable)}:/usr/bin:/bin",
+        "HOME": WORKDIR,
+        "TMPDIR": "/tmp",
+        "LANG": "C.UTF-8",
+        "MPLBACKEND": "Agg",
+        "MPLCONFIGDIR": f"{WORKDIR}/.matplotlib",
+        "OPENBLAS_NUM_THREADS": "1",
+        "OMP_NUM_THREADS": "1",
+        "MKL_NUM_THREADS": "1",
+        "PYTHONDONTWRITEBYTECODE": "1",
+        "PYTHONWARNINGS": "ignore",
+        "ACCELAB_STUDENT_ID": str(student),
+        "NBGRADER_EXECUTION": "autograde",
+    }
 
 
 def run_plan(steps, statement, command, limits=Limits(), slot=0):
@@ -205,18 +232,24 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
     env = kernel_env(statement["student"])
     cells, reports = {}, {}
     loaded, refused = [], []
-    done = []           # indices of code steps that ran to the end (replayed after a restart)
+    done = []  # indices of code steps that ran to the end (replayed after a restart)
     output_left = [limits.total_output_chars]
     starts = 0
     kernel = None
 
     def argv_of(cmd_fd, rep_fd):
-        return [sys.executable, "-I", "-m", "accelab.exercises.student.kernel", str(cmd_fd), str(rep_fd),
-                json.dumps(limits.for_kernel())]
+        return [
+            sys.executable,
+            "-I",
+            "-m",
+            "accelab.exercises.student.kernel",
+            str(cmd_fd),
+            str(rep_fd),
+            json.dumps(limits.for_kernel()),
+        ]
 
     def command_of(argv, env_):
-        return command.command(argv, slot=slot, env=env_,
-                               limits={"disk_bytes": limits.disk_bytes})
+        return command.command(argv, slot=slot, env=env_, limits={"disk_bytes": limits.disk_bytes})
 
     def fresh():
         """A new sandbox with the statement and the cells that ran before replayed."""
@@ -228,18 +261,25 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
             starts += 1
             kernel.start(argv_of, env)
             try:
-                kernel.call({"op": "statement", "statement": statement},
-                            min(START_SECONDS, max(deadline - time.monotonic(), 0.1)))
+                kernel.call(
+                    {"op": "statement", "statement": statement},
+                    min(START_SECONDS, max(deadline - time.monotonic(), 0.1)),
+                )
             except Failure as exc:
-                detail = kernel.proc.stderr.read(2000).decode("utf-8", "replace").strip() \
-                    if kernel.proc and kernel.proc.stderr else ""
+                detail = (
+                    kernel.proc.stderr.read(2000).decode("utf-8", "replace").strip()
+                    if kernel.proc and kernel.proc.stderr
+                    else ""
+                )
                 raise SandboxBroken(f"{exc.cause}; {detail}" if detail else exc.cause) from None
             for j in list(done):
                 try:
-                    kernel.call({"op": "run", "source": steps[j].source},
-                                min(limits.cell_seconds, max(deadline - time.monotonic(), 0.1)))
+                    kernel.call(
+                        {"op": "run", "source": steps[j].source},
+                        min(limits.cell_seconds, max(deadline - time.monotonic(), 0.1)),
+                    )
                 except Failure:
-                    done.remove(j)      # it did not replay: go without it
+                    done.remove(j)  # it did not replay: go without it
                     break
             else:
                 return
@@ -258,13 +298,15 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
             if kernel is None:
                 fresh()
             if step.kind == "code":
-                reply = kernel.call({"op": "run", "source": step.source},
-                                    min(limits.cell_seconds, left))
+                reply = kernel.call(
+                    {"op": "run", "source": step.source}, min(limits.cell_seconds, left)
+                )
                 cells[k] = _readable(_cell_run, reply, time.monotonic() - t0, output_left)
                 done.append(k)
             else:
-                reply = kernel.call({"op": "report", "names": [step.name]},
-                                    min(REPORT_SECONDS, left))
+                reply = kernel.call(
+                    {"op": "report", "names": [step.name]}, min(REPORT_SECONDS, left)
+                )
                 reports[step.name] = _readable(_report_of, reply, step.name)
                 _readable(_note_loaded, reply, loaded, refused)
                 cells[k] = CellRun("ok", seconds=time.monotonic() - t0)
@@ -274,16 +316,19 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
             if cause == "timeout":
                 limit = limits.cell_seconds if step.kind == "code" else REPORT_SECONDS
                 if seconds < limit - 0.5:
-                    cause = (f"the submission's time ({limits.total_seconds:g} s in all) ran "
-                             "out during this cell")
+                    cause = (
+                        f"the submission's time ({limits.total_seconds:g} s in all) ran "
+                        "out during this cell"
+                    )
                 else:
                     cause = f"this cell ran past its time limit of {limit:g} s"
-            cells[k] = CellRun("timeout" if "time" in cause else "died", message=cause,
-                               seconds=seconds)
+            cells[k] = CellRun(
+                "timeout" if "time" in cause else "died", message=cause, seconds=seconds
+            )
             if kernel is not None:
                 kernel.stop()
                 kernel = None
-        except (OSError, SandboxBroken) as exc:   # the sandbox could not start at all
+        except (OSError, SandboxBroken) as exc:  # the sandbox could not start at all
             error = f"the sandbox could not start: {exc}"
             break
         k += 1
@@ -291,9 +336,14 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
         kernel.stop()
     for j in range(len(steps)):
         if j not in cells:
-            cells[j] = CellRun("not_run", message=error or (
-                f"not run: the submission's time ({limits.total_seconds:g} s in all) ran out "
-                "before this cell"))
+            cells[j] = CellRun(
+                "not_run",
+                message=error
+                or (
+                    f"not run: the submission's time ({limits.total_seconds:g} s in all) ran out "
+                    "before this cell"
+                ),
+            )
     return RunResult(cells, reports, loaded, refused, time.monotonic() - start, starts, error)
 
 
@@ -335,8 +385,14 @@ def _cell_run(reply, seconds, output_left):
         return CellRun("ok", outputs, seconds=seconds)
     ename = str(reply.get("ename", "Error"))[:100]
     evalue = str(reply.get("evalue", ""))[:2000]
-    outputs.append({"output_type": "error", "ename": ename, "evalue": evalue,
-                    "traceback": [f"{ename}: {evalue}"]})
+    outputs.append(
+        {
+            "output_type": "error",
+            "ename": ename,
+            "evalue": evalue,
+            "traceback": [f"{ename}: {evalue}"],
+        }
+    )
     return CellRun("error", outputs, f"this cell raised {ename}: {evalue[:300]}", seconds)
 
 
@@ -346,19 +402,19 @@ def _clean_output(out, left):
         return None
     kind = out.get("output_type")
     if kind == "stream" and out.get("name") in ("stdout", "stderr"):
-        text = str(out.get("text", ""))[:max(left[0], 0)]
+        text = str(out.get("text", ""))[: max(left[0], 0)]
         left[0] -= len(text)
         return {"output_type": "stream", "name": out["name"], "text": text} if text else None
     if kind == "display_data" and isinstance(out.get("data"), dict):
         data = {}
         text = out["data"].get("text/plain")
         if isinstance(text, str) and left[0] > 0:
-            data["text/plain"] = text[:left[0]]
+            data["text/plain"] = text[: left[0]]
             left[0] -= len(data["text/plain"])
         png = out["data"].get("image/png")
         if isinstance(png, str) and left[0] > 0 and _is_base64(png):
             data["image/png"] = png
-            left[0] -= len(png) // 20    # an image costs a twentieth of its size in text
+            left[0] -= len(png) // 20  # an image costs a twentieth of its size in text
         return {"output_type": "display_data", "data": data, "metadata": {}} if data else None
     return None
 
@@ -366,6 +422,7 @@ def _clean_output(out, left):
 def _is_base64(text):
     import base64
     import binascii
+
     try:
         base64.b64decode(text.encode("ascii"), validate=True)
         return True

@@ -48,11 +48,14 @@ class Asked:
 
     @classmethod
     def from_dict(cls, data):
-        return cls(name=str(data["name"]), unit=str(data.get("unit") or ""),
-                   description=str(data.get("description", "")),
-                   kind=str(data.get("kind", "number")),
-                   choices=tuple(data.get("choices") or ()),
-                   quantity_required=bool(data.get("quantity_required", False)))
+        return cls(
+            name=str(data["name"]),
+            unit=str(data.get("unit") or ""),
+            description=str(data.get("description", "")),
+            kind=str(data.get("kind", "number")),
+            choices=tuple(data.get("choices") or ()),
+            quantity_required=bool(data.get("quantity_required", False)),
+        )
 
 
 @dataclass(frozen=True)
@@ -65,7 +68,7 @@ class Reading:
     si: float = None
     word: str = None
     bare: bool = False
-    raw: float = None        # the number as typed (bare numbers), for unit hints
+    raw: float = None  # the number as typed (bare numbers), for unit hints
     problem: str = None
 
     @property
@@ -115,8 +118,10 @@ def _number(magnitude):
         return {"shape": [int(n) for n in shape][:4]}
     if isinstance(magnitude, (list, tuple)):
         return {"shape": [len(magnitude)]}
-    if isinstance(magnitude, complex) or getattr(getattr(magnitude, "dtype", None), "kind",
-                                                  None) == "c":
+    if (
+        isinstance(magnitude, complex)
+        or getattr(getattr(magnitude, "dtype", None), "kind", None) == "c"
+    ):
         return {"complex": True}
     try:
         x = float(magnitude)
@@ -150,43 +155,71 @@ def read(asked, report, ureg):
     if not isinstance(state, str):
         state = "garbled"
     if state == "missing":
-        return Reading(name, problem=(
-            f"no variable `{name}` is defined: assign your answer to `{name}` in its answer "
-            "cell (check the spelling, and run the cell)"))
+        return Reading(
+            name,
+            problem=(
+                f"no variable `{name}` is defined: assign your answer to `{name}` in its answer "
+                "cell (check the spelling, and run the cell)"
+            ),
+        )
     if asked.kind == "choice":
         if state != "text":
-            return Reading(name, problem=f"`{name}` must be a word in quotes, one of "
-                           f"{list(asked.choices)}")
+            return Reading(
+                name, problem=f"`{name}` must be a word in quotes, one of {list(asked.choices)}"
+            )
         word = str(report.get("text", ""))[:200].strip().lower()
         if word not in asked.choices:
-            return Reading(name, problem=f"`{name}` = {_short(report.get('text'))} is not one "
-                           f"of {list(asked.choices)}")
+            return Reading(
+                name,
+                problem=f"`{name}` = {_short(report.get('text'))} is not one "
+                f"of {list(asked.choices)}",
+            )
         return Reading(name, word=word)
     if state not in ("number", "quantity"):
-        got = {"text": "a string", "array": "a list or an array", "complex": "a complex number",
-               "unreadable": "a value that cannot be read", "garbled": "no readable report"}.get(
-                   state, _short(report.get("type", "something else"), quote=False))
-        return Reading(name, problem=f"`{name}` must be one number or a Quantity (got {got}); "
-                       f"for example `{_example(asked)}`")
+        got = {
+            "text": "a string",
+            "array": "a list or an array",
+            "complex": "a complex number",
+            "unreadable": "a value that cannot be read",
+            "garbled": "no readable report",
+        }.get(state, _short(report.get("type", "something else"), quote=False))
+        return Reading(
+            name,
+            problem=f"`{name}` must be one number or a Quantity (got {got}); "
+            f"for example `{_example(asked)}`",
+        )
     if "shape" in report:
         return Reading(name, problem=f"`{name}` must be a single value, not an array or a list")
     if report.get("complex"):
-        return Reading(name, problem=f"`{name}` must be a real number, not a complex one: "
-                       "give a magnitude and a direction, or the x and y components")
+        return Reading(
+            name,
+            problem=f"`{name}` must be a real number, not a complex one: "
+            "give a magnitude and a direction, or the x and y components",
+        )
     try:
-        x = float(report["magnitude"]) if type(report.get("magnitude")) in (
-            int, float) else math.nan
-    except OverflowError:       # an integer beyond float64
+        x = (
+            float(report["magnitude"])
+            if type(report.get("magnitude")) in (int, float)
+            else math.nan
+        )
+    except OverflowError:  # an integer beyond float64
         x = math.inf
     if "nonfinite" in report or not math.isfinite(x):
-        return Reading(name, problem=f"`{name}` is not a finite number "
-                       f"({_short(report.get('nonfinite', 'no value'), quote=False)})")
+        return Reading(
+            name,
+            problem=f"`{name}` is not a finite number "
+            f"({_short(report.get('nonfinite', 'no value'), quote=False)})",
+        )
     asked_unit = ureg.Unit(asked.unit or "")
     if state == "number":
         if asked.quantity_required:
-            return Reading(name, problem=(
-                f"`{name}` is a bare number, but the statement asks for it with its unit: "
-                f"write e.g. `{_example(asked)}`"))
+            return Reading(
+                name,
+                problem=(
+                    f"`{name}` is a bare number, but the statement asks for it with its unit: "
+                    f"write e.g. `{_example(asked)}`"
+                ),
+            )
         si = ureg.Quantity(x, asked_unit).to_base_units().magnitude
         return Reading(name, si=float(si), bare=True, raw=x)
     units = report.get("units", "")
@@ -196,7 +229,7 @@ def read(asked, report, ureg):
 def _short(value, quote=True, limit=60):
     """A value from a report as a message shows it: short, whatever it is."""
     text = repr(value) if quote else str(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _read_quantity(asked, x, units_text, asked_unit, ureg):
@@ -204,18 +237,28 @@ def _read_quantity(asked, x, units_text, asked_unit, ureg):
     try:
         if len(units_text) > MAX_UNITS:
             raise ValueError("too long")
-        units = ureg.parse_units(units_text) if units_text not in ("", "dimensionless") \
+        units = (
+            ureg.parse_units(units_text)
+            if units_text not in ("", "dimensionless")
             else ureg.Unit("")
+        )
     except Exception:
-        return Reading(name, problem=f"`{name}` has units {units_text[:60]!r} that this course "
-                       "cannot read; use units such as "
-                       f"{asked.unit or 'a plain number'!r}")
+        return Reading(
+            name,
+            problem=f"`{name}` has units {units_text[:60]!r} that this course "
+            "cannot read; use units such as "
+            f"{asked.unit or 'a plain number'!r}",
+        )
     want, got = asked_unit.dimensionality, units.dimensionality
     if want != got:
-        return Reading(name, problem=(
-            f"`{name}` has the dimension {_dim_text(got)} ({units:~}), but the statement asks "
-            f"for {_dim_text(want)} (in {asked.unit or 'a plain number'}): no credit for a "
-            "wrong dimension"))
+        return Reading(
+            name,
+            problem=(
+                f"`{name}` has the dimension {_dim_text(got)} ({units:~}), but the statement asks "
+                f"for {_dim_text(want)} (in {asked.unit or 'a plain number'}): no credit for a "
+                "wrong dimension"
+            ),
+        )
     want_rad = _radian_power(ureg.Quantity(1.0, asked_unit))
     got_rad = _radian_power(ureg.Quantity(1.0, units))
     if want_rad != got_rad:
@@ -229,14 +272,20 @@ def _read_quantity(asked, x, units_text, asked_unit, ureg):
 def _angle_unit_message(asked, units, want_rad, got_rad):
     name = asked.name
     if want_rad > got_rad and want_rad == 1 and asked.kind == "angle":
-        return (f"`{name}` is a direction, so it needs an angle unit (got {units:~}): write e.g. "
-                f"`{name} = Q_(212.5, 'deg')` or a bare number in degrees")
+        return (
+            f"`{name}` is a direction, so it needs an angle unit (got {units:~}): write e.g. "
+            f"`{name} = Q_(212.5, 'deg')` or a bare number in degrees"
+        )
     if want_rad > got_rad:
-        return (f"`{name}` is given in {units:~}, which could mean cycles or radians (a factor "
-                f"of 2 pi apart): write it with an angle unit, e.g. in {asked.unit} or rpm "
-                "(rev/min)")
-    return (f"`{name}` carries an angle unit ({units:~}) but the statement asks for "
-            f"{asked.unit or 'a plain number'}: drop the angle unit")
+        return (
+            f"`{name}` is given in {units:~}, which could mean cycles or radians (a factor "
+            f"of 2 pi apart): write it with an angle unit, e.g. in {asked.unit} or rpm "
+            "(rev/min)"
+        )
+    return (
+        f"`{name}` carries an angle unit ({units:~}) but the statement asks for "
+        f"{asked.unit or 'a plain number'}: drop the angle unit"
+    )
 
 
 def _dim_text(dim):

@@ -62,7 +62,7 @@ def write_frame(fd, message):
     body = json.dumps(message, allow_nan=False).encode("utf-8")
     data = struct.pack(">I", len(body)) + body
     while data:
-        data = data[os.write(fd, data):]
+        data = data[os.write(fd, data) :]
 
 
 class CappedText(io.TextIOBase):
@@ -92,11 +92,13 @@ class CappedText(io.TextIOBase):
 
 def apply_limits(limits):
     """Resource limits of this process and every process it starts."""
-    pairs = [(resource.RLIMIT_AS, limits.get("memory_bytes")),
-             (resource.RLIMIT_CPU, limits.get("cpu_seconds")),
-             (resource.RLIMIT_NPROC, limits.get("processes")),
-             (resource.RLIMIT_FSIZE, limits.get("file_bytes")),
-             (resource.RLIMIT_CORE, 0)]
+    pairs = [
+        (resource.RLIMIT_AS, limits.get("memory_bytes")),
+        (resource.RLIMIT_CPU, limits.get("cpu_seconds")),
+        (resource.RLIMIT_NPROC, limits.get("processes")),
+        (resource.RLIMIT_FSIZE, limits.get("file_bytes")),
+        (resource.RLIMIT_CORE, 0),
+    ]
     for which, value in pairs:
         if value is not None:
             resource.setrlimit(which, (int(value), int(value)))
@@ -106,6 +108,7 @@ def make_shell():
     """An IPython shell in this process (magics and display work; no history file)."""
     from IPython.core.interactiveshell import InteractiveShell
     from traitlets.config import Config
+
     config = Config()
     config.HistoryManager.enabled = False
     shell = InteractiveShell.instance(config=config)
@@ -118,6 +121,7 @@ def run_cell(shell, source, limits):
     """Run one cell; its status and outputs (text and PNG, capped)."""
     from IPython.core.displayhook import CapturingDisplayHook
     from IPython.core.displaypub import CapturingDisplayPublisher
+
     chars = int(limits.get("output_chars", 20000))
     out, err = CappedText(chars), CappedText(chars)
     publisher = CapturingDisplayPublisher()
@@ -138,8 +142,12 @@ def run_cell(shell, source, limits):
     error = result.error_before_exec or result.error_in_exec
     if error is None:
         return {"status": "ok", "outputs": outputs}
-    return {"status": "error", "outputs": outputs, "ename": _safe(lambda: type(error).__name__),
-            "evalue": _safe(lambda: str(error))[:chars]}
+    return {
+        "status": "error",
+        "outputs": outputs,
+        "ename": _safe(lambda: type(error).__name__),
+        "evalue": _safe(lambda: str(error))[:chars],
+    }
 
 
 def _safe(fn):
@@ -173,11 +181,13 @@ def _displays(items, limits):
 def report(shell, names):
     """What each named variable holds (:func:`accelab.exercises.student.answers.describe`)."""
     from .answers import MISSING, describe
+
     values = {}
     for name in names:
         values[str(name)] = describe(shell.user_ns.get(str(name), MISSING))
     try:
         from .runtime import loaded_student
+
         loaded, refused = loaded_student()
     except Exception:
         loaded, refused = None, []
@@ -193,12 +203,17 @@ def alias_old_names():
     sandbox: nothing of the package installs the old names.
     """
     import types
+
     from . import answers, runtime
+
     old = types.ModuleType("exercises", "accelab 0.1's name of accelab.exercises")
     old.__path__ = []
     old.runtime, old.answers = runtime, answers
-    for name, module in (("exercises", old), ("exercises.runtime", runtime),
-                         ("exercises.answers", answers)):
+    for name, module in (
+        ("exercises", old),
+        ("exercises.runtime", runtime),
+        ("exercises.answers", answers),
+    ):
         sys.modules.setdefault(name, module)
 
 
@@ -212,6 +227,7 @@ def serve(cmd_fd, reply_fd, limits):
         op = message.get("op")
         if op == "statement":
             from .runtime import set_grading_statement
+
             set_grading_statement(message["statement"])
             reply = {"ok": True}
         elif op == "run":
@@ -228,7 +244,7 @@ def main(argv=None):
     cmd_fd, reply_fd, limits = int(argv[0]), int(argv[1]), json.loads(argv[2])
     apply_limits(limits)
     null = os.open(os.devnull, os.O_RDWR)
-    for fd in (0, 1, 2):     # a cell's raw writes to fd 1 and 2 go nowhere
+    for fd in (0, 1, 2):  # a cell's raw writes to fd 1 and 2 go nowhere
         os.dup2(null, fd)
     sys.stdout = io.TextIOWrapper(open(1, "wb", closefd=False), write_through=True)
     sys.stderr = io.TextIOWrapper(open(2, "wb", closefd=False), write_through=True)

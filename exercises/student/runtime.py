@@ -61,13 +61,16 @@ class NotebookVariant:
         table = GivenValues(self.student, self.problems[number - 1]["given"])
         try:
             from IPython.display import display
+
             display(table)
         except ImportError:  # outside IPython
             print(repr(table))
 
     def __repr__(self):
-        return (f"<values of student {self.student!r}: {len(self.problems)} problem(s), "
-                f"answers {', '.join(self.asked)}>")
+        return (
+            f"<values of student {self.student!r}: {len(self.problems)} problem(s), "
+            f"answers {', '.join(self.asked)}>"
+        )
 
 
 class GivenValues:
@@ -78,8 +81,9 @@ class GivenValues:
 
     def _repr_markdown_(self):
         rows = "\n".join(f"| ${_tex(k)}$ | {v} |" for k, v in self.given.items())
-        return (f"**Your values** (student `{self.student}`):\n\n"
-                f"| given | value |\n|---|---|\n{rows}")
+        return (
+            f"**Your values** (student `{self.student}`):\n\n| given | value |\n|---|---|\n{rows}"
+        )
 
     def __repr__(self):
         width = max((len(k) for k in self.given), default=0)
@@ -88,11 +92,19 @@ class GivenValues:
 
 
 def _tex(symbol):
-    greek = {"theta": "\\theta", "omega": "\\omega", "alpha": "\\alpha", "delta": "\\delta",
-             "gamma": "\\gamma", "phi": "\\phi", "lam": "\\lambda", "dt": "\\Delta t"}
+    greek = {
+        "theta": "\\theta",
+        "omega": "\\omega",
+        "alpha": "\\alpha",
+        "delta": "\\delta",
+        "gamma": "\\gamma",
+        "phi": "\\phi",
+        "lam": "\\lambda",
+        "dt": "\\Delta t",
+    }
     for word, tex in greek.items():
         if symbol.startswith(word):
-            rest = symbol[len(word):].lstrip("_")
+            rest = symbol[len(word) :].lstrip("_")
             return tex + (f"_{{{rest}}}" if rest else "")
     return symbol if symbol != "circuit" else "\\text{circuit}"
 
@@ -108,10 +120,12 @@ def load_variant(spec, student=None):
             raise LookupError(
                 f"while a submission is graded, a notebook gets only its submitter's values: "
                 f"this one asked for the values of {student!r}. It is graded against the "
-                "submitter's own values.")
+                "submitter's own values."
+            )
         statement = grading
     else:
-        from .assignment import statement_of   # not available inside the grading sandbox
+        from .assignment import statement_of  # not available inside the grading sandbox
+
         statement = statement_of(spec, student)
     nv = NotebookVariant(statement)
     _state["variant"] = nv
@@ -131,8 +145,9 @@ def check_format(name, namespace):
     reading = read(nv.asked[name], describe(value), ureg)
     if not reading.ok:
         raise AssertionError(reading.problem)
-    print(f"{name}: form and dimension are fine (its value is judged when the assignment "
-          "is graded)")
+    print(
+        f"{name}: form and dimension are fine (its value is judged when the assignment is graded)"
+    )
 
 
 def set_grading_statement(statement):

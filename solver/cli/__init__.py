@@ -14,4 +14,3 @@ def register(subparsers):
     """Add ``solve``, ``draw`` and ``figures`` to an argparse subparsers object."""
     for command in (solve, draw, figures):
         command.register(subparsers)
-

@@ -30,24 +30,46 @@ exit status: 0 every case drawn, 1 some case reported an error, 2 FILE unusable.
 
 
 def register(sub):
-    p = sub.add_parser("draw", help="graphical acceleration analysis of a batch of cases "
-                                    "(velocity and acceleration polygons)",
-                       description="Construct the velocity and acceleration polygons of each "
-                                   "case (Chapter 7, section 7.2), draw them, and print the "
-                                   "values read off the construction.",
-                       epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("cases", metavar="FILE", nargs="?",
-                   help="JSON list of cases in the batch format ('-' for stdin)")
-    p.add_argument("--cases", dest="cases_option", metavar="FILE",
-                   help="the same, as in 'accelab solve --cases'")
-    p.add_argument("--out", metavar="DIR", default="drawings",
-                   help="directory for the figures (default: drawings)")
-    p.add_argument("--format", default="png,svg",
-                   help="comma-separated figure formats (default: png,svg)")
-    p.add_argument("--step", type=int, default=None,
-                   help="draw only the first STEP steps of each construction")
-    p.add_argument("--jobs", type=int, default=0,
-                   help="worker processes for large batches (default: one per CPU; 1: none)")
+    p = sub.add_parser(
+        "draw",
+        help="graphical acceleration analysis of a batch of cases "
+        "(velocity and acceleration polygons)",
+        description="Construct the velocity and acceleration polygons of each "
+        "case (Chapter 7, section 7.2), draw them, and print the "
+        "values read off the construction.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument(
+        "cases",
+        metavar="FILE",
+        nargs="?",
+        help="JSON list of cases in the batch format ('-' for stdin)",
+    )
+    p.add_argument(
+        "--cases",
+        dest="cases_option",
+        metavar="FILE",
+        help="the same, as in 'accelab solve --cases'",
+    )
+    p.add_argument(
+        "--out",
+        metavar="DIR",
+        default="drawings",
+        help="directory for the figures (default: drawings)",
+    )
+    p.add_argument(
+        "--format", default="png,svg", help="comma-separated figure formats (default: png,svg)"
+    )
+    p.add_argument(
+        "--step", type=int, default=None, help="draw only the first STEP steps of each construction"
+    )
+    p.add_argument(
+        "--jobs",
+        type=int,
+        default=0,
+        help="worker processes for large batches (default: one per CPU; 1: none)",
+    )
     p.set_defaults(func=run)
 
 
@@ -56,10 +78,14 @@ def draw_case(case, outdir, stem, formats=("png", "svg"), step=None):
     try:
         from ..graphical import construct_case
         from ..graphical.draw import save
+
         con = construct_case(case)
         if step is not None and not 0 <= step <= len(con.steps):
-            raise InvalidInput(f"--step must be between 0 and {len(con.steps)} for this "
-                               f"{con.mechanism} construction (got {step})", "step")
+            raise InvalidInput(
+                f"--step must be between 0 and {len(con.steps)} for this "
+                f"{con.mechanism} construction (got {step})",
+                "step",
+            )
         out = {"ok": True}
         if con.circuit:
             out["circuit"] = con.circuit
@@ -84,8 +110,11 @@ def run(args):
     formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
     bad = [f for f in formats if f not in ("png", "svg", "pdf")]
     if bad or not formats:
-        print(f"accelab draw: unknown format {bad[0] if bad else args.format!r}; "
-              "use png, svg or pdf (e.g. --format png,svg)", file=sys.stderr)
+        print(
+            f"accelab draw: unknown format {bad[0] if bad else args.format!r}; "
+            "use png, svg or pdf (e.g. --format png,svg)",
+            file=sys.stderr,
+        )
         return 2
     try:
         os.makedirs(args.out, exist_ok=True)
@@ -93,6 +122,7 @@ def run(args):
         print(f"accelab draw: cannot create {args.out}: {exc}", file=sys.stderr)
         return 2
     import matplotlib
+
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "accelab"
     jobs = args.jobs if args.jobs > 0 else (os.cpu_count() or 1)
@@ -102,8 +132,7 @@ def run(args):
     else:
         results = [draw_case(*w) for w in work]
     # a JSON list, one case per line (as readable as JSON lines, and one document)
-    sys.stdout.write("[\n" + ",\n".join(json.dumps(r, allow_nan=False) for r in results)
-                     + "\n]\n")
+    sys.stdout.write("[\n" + ",\n".join(json.dumps(r, allow_nan=False) for r in results) + "\n]\n")
     return 0 if all(r.get("ok") for r in results) else 1
 
 
@@ -115,6 +144,7 @@ def _parallel(work, jobs):
     """Draw cases in worker processes (figures are independent); results in order."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
+
     try:
         ctx = multiprocessing.get_context("fork")
     except ValueError:  # no fork on this platform

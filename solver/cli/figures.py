@@ -17,32 +17,43 @@ figures (each as NAME-linkage and NAME-polygons):
 
 
 def register(sub):
-    p = sub.add_parser("figures", help="regenerate the figures of the README and the course",
-                       description="Draw every figure that the README and the course show.",
-                       epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--out", metavar="DIR", default="figures",
-                   help="output directory (default: figures)")
-    p.add_argument("--only", metavar="NAME", action="append",
-                   help="draw only this figure (repeatable)")
-    p.add_argument("--format", default="png,svg", help="comma-separated formats "
-                                                       "(default: png,svg)")
+    p = sub.add_parser(
+        "figures",
+        help="regenerate the figures of the README and the course",
+        description="Draw every figure that the README and the course show.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument(
+        "--out", metavar="DIR", default="figures", help="output directory (default: figures)"
+    )
+    p.add_argument(
+        "--only", metavar="NAME", action="append", help="draw only this figure (repeatable)"
+    )
+    p.add_argument("--format", default="png,svg", help="comma-separated formats (default: png,svg)")
     p.set_defaults(func=run)
 
 
 def run(args):
     import matplotlib
+
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "accelab"  # stable ids: diffs show real changes
     from ..graphical.gallery import GALLERY, render
+
     unknown = [n for n in args.only or [] if n not in GALLERY]
     if unknown:
-        print(f"accelab figures: unknown figure {unknown[0]!r}; choose from "
-              f"{', '.join(GALLERY)}", file=sys.stderr)
+        print(
+            f"accelab figures: unknown figure {unknown[0]!r}; choose from {', '.join(GALLERY)}",
+            file=sys.stderr,
+        )
         return 2
     formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
     if not formats or any(f not in ("png", "svg", "pdf") for f in formats):
-        print(f"accelab figures: --format takes png, svg or pdf (got {args.format!r})",
-              file=sys.stderr)
+        print(
+            f"accelab figures: --format takes png, svg or pdf (got {args.format!r})",
+            file=sys.stderr,
+        )
         return 2
     for path in render(args.out, formats, args.only):
         print(path)

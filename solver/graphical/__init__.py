@@ -18,8 +18,21 @@ never call the analytic solver; the tests compare the two.
 from . import fivebar, fourbar, invertedslidercrank, slidercrank, slotted
 from .construction import Arrow, Construction, Line, Linkage, Step
 
-__all__ = ["construct", "construct_case", "DRAWABLE", "Construction", "Step", "Arrow", "Line",
-           "Linkage", "fivebar", "fourbar", "slidercrank", "invertedslidercrank", "slotted"]
+__all__ = [
+    "construct",
+    "construct_case",
+    "DRAWABLE",
+    "Construction",
+    "Step",
+    "Arrow",
+    "Line",
+    "Linkage",
+    "fivebar",
+    "fourbar",
+    "slidercrank",
+    "invertedslidercrank",
+    "slotted",
+]
 
 #: batch mechanisms that have a construction
 DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")
@@ -36,20 +49,26 @@ def _check_range(mechanism, params):
     """InvalidInput for a parameter outside what the constructions draw."""
     from ..errors import InvalidInput
     from ..parameters import PARAMETERS
+
     decl = PARAMETERS.get(mechanism)
     lengths = [p.name for p in decl.geometry + decl.point if p.kind == "length"] if decl else []
     lo, hi = LENGTH_RANGE
     for name in lengths:
         x = abs(params.get(name) or 0.0)
         if x and not lo <= x <= hi:
-            raise InvalidInput(f"the graphical construction draws lengths between {lo:g} and "
-                               f"{hi:g} m, and {name} is {x:.3g} m; 'accelab solve' answers any "
-                               f"scale", name)
-    for name, limit in (("omega2", MAX_RATE), ("alpha2", MAX_RATE ** 2)):
+            raise InvalidInput(
+                f"the graphical construction draws lengths between {lo:g} and "
+                f"{hi:g} m, and {name} is {x:.3g} m; 'accelab solve' answers any "
+                f"scale",
+                name,
+            )
+    for name, limit in (("omega2", MAX_RATE), ("alpha2", MAX_RATE**2)):
         if abs(params.get(name, 0.0)) > limit:
-            raise InvalidInput(f"the graphical construction draws |{name}| up to {limit:g} (SI), "
-                               f"and {name} is {params[name]:.3g}; 'accelab solve' answers it",
-                               name)
+            raise InvalidInput(
+                f"the graphical construction draws |{name}| up to {limit:g} (SI), "
+                f"and {name} is {params[name]:.3g}; 'accelab solve' answers it",
+                name,
+            )
 
 
 def construct(mechanism, circuit=None, **params):
@@ -57,6 +76,7 @@ def construct(mechanism, circuit=None, **params):
     of the batch format: a, b, c, d, theta1, theta2, omega2, alpha2, p,
     delta3, gamma). ``jerk2`` is accepted and ignored (no jerk polygon)."""
     from ..errors import InvalidInput
+
     params = dict(params)
     params.pop("jerk2", None)
     _check_range(mechanism, params)
@@ -70,13 +90,16 @@ def construct(mechanism, circuit=None, **params):
     if mechanism == "fivebar":
         return fivebar.construct(**params, **kw)
     if mechanism == "rotation":
-        return slotted.construct(params["theta2"], params["omega2"], params["alpha2"],
-                                 params["p"], mechanism="rotation")
+        return slotted.construct(
+            params["theta2"], params["omega2"], params["alpha2"], params["p"], mechanism="rotation"
+        )
     if mechanism == "slotted":
         return slotted.construct(**params)
-    raise InvalidInput(f"there is no graphical construction for {mechanism!r}; draw one of "
-                       f"{', '.join(DRAWABLE)} (use 'accelab solve' for the others)",
-                       "mechanism")
+    raise InvalidInput(
+        f"there is no graphical construction for {mechanism!r}; draw one of "
+        f"{', '.join(DRAWABLE)} (use 'accelab solve' for the others)",
+        "mechanism",
+    )
 
 
 def construct_case(case):
@@ -84,9 +107,13 @@ def construct_case(case):
     :func:`accelab.solver.cases.read_case`). Raises the AccelabError family."""
     from ..cases import check_mechanism, read_case
     from ..errors import InvalidInput
+
     if check_mechanism(case) == "loops":
-        raise InvalidInput("there is no graphical construction for 'loops'; draw one of "
-                           f"{', '.join(DRAWABLE)} (use 'accelab solve' for it)", "mechanism")
+        raise InvalidInput(
+            "there is no graphical construction for 'loops'; draw one of "
+            f"{', '.join(DRAWABLE)} (use 'accelab solve' for it)",
+            "mechanism",
+        )
     c = read_case(case)
     params = dict(c.params)
     if "p" not in params:

@@ -39,40 +39,65 @@ IN = 0.0254  # m per inch
 
 #: display units: name -> (length unit, factor from m), velocity, acceleration
 UNIT_SYSTEMS = {
-    "US": {"length": ("in", 1 / IN), "velocity": ("in/s", 1 / IN),
-           "acceleration": (r"in/s$^2$", 1 / IN)},
-    "SI": {"length": ("mm", 1e3), "velocity": ("m/s", 1.0),
-           "acceleration": (r"m/s$^2$", 1.0)},
-    "SI-m": {"length": ("m", 1.0), "velocity": ("m/s", 1.0),
-             "acceleration": (r"m/s$^2$", 1.0)},
+    "US": {
+        "length": ("in", 1 / IN),
+        "velocity": ("in/s", 1 / IN),
+        "acceleration": (r"in/s$^2$", 1 / IN),
+    },
+    "SI": {"length": ("mm", 1e3), "velocity": ("m/s", 1.0), "acceleration": (r"m/s$^2$", 1.0)},
+    "SI-m": {"length": ("m", 1.0), "velocity": ("m/s", 1.0), "acceleration": (r"m/s$^2$", 1.0)},
 }
-DIAGRAMS = {"velocity": ("velocity", "Velocity polygon"),
-            "acceleration": ("acceleration", "Acceleration polygon"),
-            "point": ("acceleration", "Acceleration of P")}
+DIAGRAMS = {
+    "velocity": ("velocity", "Velocity polygon"),
+    "acceleration": ("acceleration", "Acceleration polygon"),
+    "point": ("acceleration", "Acceleration of P"),
+}
 #: a vector shorter than this fraction of its diagram's size gets a magnified inset
 TINY = 0.06
 #: an inset that would magnify less than this is not drawn (the vector is readable as is)
 MIN_MAGNIFICATION = 4
-INSET_WIDTH = 0.34      # of the axes
+INSET_WIDTH = 0.34  # of the axes
 #: a vector within this angle [deg] of a link from its own pin is drawn beside the link
 ALONG = 12.0
-BESIDE = 5.5            # how far beside [pt]
-HEAD_LENGTH = 9.0       # arrowhead length [pt]
-_HEAD = Path([(0, 0), (-1, 0.36), (-0.82, 0), (-1, -0.36), (0, 0)],
-             [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY])
+BESIDE = 5.5  # how far beside [pt]
+HEAD_LENGTH = 9.0  # arrowhead length [pt]
+_HEAD = Path(
+    [(0, 0), (-1, 0.36), (-0.82, 0), (-1, -0.36), (0, 0)],
+    [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY],
+)
 #: the chapter's symbol of each link of each mechanism (for schematic figures)
 LINK_SYMBOLS = {
-    "fourbar": {("O2", "A"): "a", ("A", "B"): "b", ("O4", "B"): "c", ("O2", "O4"): "d",
-                ("A", "P"): "p"},
+    "fourbar": {
+        ("O2", "A"): "a",
+        ("A", "B"): "b",
+        ("O4", "B"): "c",
+        ("O2", "O4"): "d",
+        ("A", "P"): "p",
+    },
     "slidercrank": {("O2", "A"): "a", ("A", "B"): "b"},
     "invertedslidercrank": {("O2", "A"): "a", ("O4", "B"): "c", ("O2", "O4"): "d"},
-    "fivebar": {("O2", "A"): "a", ("A", "B"): "b", ("C", "B"): "c", ("O5", "C"): "d",
-                ("O2", "O5"): "f"},
+    "fivebar": {
+        ("O2", "A"): "a",
+        ("A", "B"): "b",
+        ("C", "B"): "c",
+        ("O5", "C"): "d",
+        ("O2", "O5"): "f",
+    },
     "rotation": {("O2", "P"): "p"},
     "slotted": {},
 }
-__all__ = ["draw_linkage", "draw_polygon", "draw_polygons", "save", "diagrams", "nice",
-           "fmt", "units_of", "arrow", "UNIT_SYSTEMS"]
+__all__ = [
+    "draw_linkage",
+    "draw_polygon",
+    "draw_polygons",
+    "save",
+    "diagrams",
+    "nice",
+    "fmt",
+    "units_of",
+    "arrow",
+    "UNIT_SYSTEMS",
+]
 
 
 # ---------------------------------------------------------------- helpers
@@ -82,9 +107,9 @@ def nice(x):
         return 1.0
     e = math.floor(math.log10(x))
     for m in (5, 2, 1):
-        if m * 10 ** e <= x * (1 + 1e-12):
-            return m * 10 ** e
-    return 10 ** e
+        if m * 10**e <= x * (1 + 1e-12):
+            return m * 10**e
+    return 10**e
 
 
 def fmt(x):
@@ -126,8 +151,9 @@ def _offset(ax, off):
     """ax.transData shifted by ``off`` (complex) points."""
     if off == 0:
         return ax.transData
-    return ax.transData + ScaledTranslation(off.real / 72.0, off.imag / 72.0,
-                                            ax.figure.dpi_scale_trans)
+    return ax.transData + ScaledTranslation(
+        off.real / 72.0, off.imag / 72.0, ax.figure.dpi_scale_trans
+    )
 
 
 def _arrow(ax, start, vector, kind, ppd, offset=0j, zorder=6):
@@ -141,15 +167,34 @@ def _arrow(ax, start, vector, kind, ppd, offset=0j, zorder=6):
     head = min(HEAD_LENGTH * (1.15 if kind == "resultant" else 1.0), 0.55 * length * ppd)
     tip = start + vector
     trans = _offset(ax, offset)
-    ax.add_patch(FancyArrowPatch((start.real, start.imag), (tip.real, tip.imag),
-                                 arrowstyle="-", shrinkA=0, shrinkB=0.6 * head,
-                                 color=st["color"], linewidth=st["linewidth"],
-                                 linestyle=st["linestyle"], capstyle="butt",
-                                 joinstyle="miter", transform=trans, zorder=zorder))
+    ax.add_patch(
+        FancyArrowPatch(
+            (start.real, start.imag),
+            (tip.real, tip.imag),
+            arrowstyle="-",
+            shrinkA=0,
+            shrinkB=0.6 * head,
+            color=st["color"],
+            linewidth=st["linewidth"],
+            linestyle=st["linestyle"],
+            capstyle="butt",
+            joinstyle="miter",
+            transform=trans,
+            zorder=zorder,
+        )
+    )
     angle = math.degrees(math.atan2(vector.imag, vector.real))
-    ax.plot([tip.real], [tip.imag], linestyle="none", transform=trans, zorder=zorder + 1,
-            marker=MarkerStyle(_HEAD, transform=Affine2D().rotate_deg(angle)),
-            markersize=2 * head, color=st["color"], markeredgewidth=0.4)
+    ax.plot(
+        [tip.real],
+        [tip.imag],
+        linestyle="none",
+        transform=trans,
+        zorder=zorder + 1,
+        marker=MarkerStyle(_HEAD, transform=Affine2D().rotate_deg(angle)),
+        markersize=2 * head,
+        color=st["color"],
+        markeredgewidth=0.4,
+    )
     return True
 
 
@@ -188,8 +233,7 @@ def _clip(point, u, box):
     return point + lo * u, point + hi * u
 
 
-def _construction_line(ax, labels, point, direction, name, box, letters=True,
-                       obstacles=None):
+def _construction_line(ax, labels, point, direction, name, box, letters=True, obstacles=None):
     u = direction / abs(direction)
     x0, x1, y0, y1 = box
     inset = 0.04 * max(x1 - x0, y1 - y0)
@@ -203,8 +247,7 @@ def _construction_line(ax, labels, point, direction, name, box, letters=True,
     labels.avoid(z0, z1, weight=0.12, width=1.0)
     if name and letters:
         for z in (z0, z1):
-            labels.add_fixed(name[0], z, color="#555555", style="italic",
-                             fontsize=style.FONT_SIZE)
+            labels.add_fixed(name[0], z, color="#555555", style="italic", fontsize=style.FONT_SIZE)
 
 
 def _extent(points):
@@ -231,21 +274,34 @@ def _frame(ax, points, margin, strip=0.0, box=None):
 def _scale_bar(ax, labels, x, y, length_data, text, tick):
     """A bar ``length_data`` long at (x, y) with its value written after it;
     the labels of the drawing keep clear of both."""
-    ax.plot([x, x + length_data], [y, y], color="black", linewidth=2.0, zorder=8,
-            solid_capstyle="butt")
+    ax.plot(
+        [x, x + length_data], [y, y], color="black", linewidth=2.0, zorder=8, solid_capstyle="butt"
+    )
     for xx in (x, x + length_data):
         ax.plot([xx, xx], [y - tick, y + tick], color="black", linewidth=1.3, zorder=8)
     labels.avoid(complex(x, y), complex(x + length_data, y), width=6.0)
-    labels.add_fixed(text, complex(x + length_data + 1.5 * tick, y), ha="left",
-                     boxed=False, fontsize=style.FONT_SIZE - 1)
+    labels.add_fixed(
+        text,
+        complex(x + length_data + 1.5 * tick, y),
+        ha="left",
+        boxed=False,
+        fontsize=style.FONT_SIZE - 1,
+    )
 
 
 def _legend(ax, kinds, with_lines, **kw):
     order = [k for k in style.COMPONENT if k in kinds]
-    handles = [Line2D([], [], color=style.component(k)["color"],
-                      linestyle=style.component(k)["linestyle"],
-                      linewidth=style.component(k)["linewidth"],
-                      label=style.component(k)["label"]) for k in order]
+    handles = [
+        Line2D(
+            [],
+            [],
+            color=style.component(k)["color"],
+            linestyle=style.component(k)["linestyle"],
+            linewidth=style.component(k)["linewidth"],
+            label=style.component(k)["label"],
+        )
+        for k in order
+    ]
     if with_lines:
         handles.append(Line2D([], [], label="construction line", **style.CONSTRUCTION_LINE))
     if handles:
@@ -261,25 +317,32 @@ def _caption(fig, con, step):
     if step == 0:
         return
     s = con.steps[step - 1]
-    head = (f"Step {s.label}" if s.phase == "acceleration" else
-            {"position": "Position", "velocity": f"Velocity {s.label}"}[s.phase])
+    head = (
+        f"Step {s.label}"
+        if s.phase == "acceleration"
+        else {"position": "Position", "velocity": f"Velocity {s.label}"}[s.phase]
+    )
     width = max(60, int(fig.get_figwidth() * 12))
     text = textwrap.fill(f"{head} ({step}/{len(con.steps)}): {s.text}", width)
     fig.text(0.5, 0.0, _mathtext(text), ha="center", va="top", fontsize=style.FONT_SIZE)
 
 
-_SYMBOL = re.compile(r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?"
-                     r"|\b(omega|alpha|theta|delta|gamma)(\d?)\b")
+_SYMBOL = re.compile(
+    r"\b([AV])_([A-Za-z0-9]+)(?:\^([a-z]))?"
+    r"|\b(omega|alpha|theta|delta|gamma)(\d?)\b"
+)
 
 
 def _mathtext(text):
     """Step texts say A_BA^t, omega3 ...: show them as the chapter's symbols."""
+
     def sub(m):
         if m.group(1):
             sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
             return rf"$\mathbf{{{m.group(1)}}}_{{{m.group(2)}}}{sup}$"
         sym = "\\" + m.group(4)
         return f"${sym}_{{{m.group(5)}}}$" if m.group(5) else f"${sym}$"
+
     return _SYMBOL.sub(sub, text).replace("^2", "$^2$")
 
 
@@ -321,17 +384,26 @@ def _inset_spot(ax, region, box, obstacles, frac):
     by1 = (box[3] - y0) / (y1 - y0)
     xm, ym = (bx0 + bx1 - w) / 2, (by0 + by1 - h) / 2
     best = None
-    for cx, cy in ((bx1 - w, by1 - h), (bx0, by1 - h), (bx1 - w, by0), (bx0, by0),
-                   (xm, by1 - h), (bx1 - w, ym), (bx0, ym), (xm, by0)):
+    for cx, cy in (
+        (bx1 - w, by1 - h),
+        (bx0, by1 - h),
+        (bx1 - w, by0),
+        (bx0, by0),
+        (xm, by1 - h),
+        (bx1 - w, ym),
+        (bx0, ym),
+        (xm, by0),
+    ):
         rx0, rx1 = x0 + cx * (x1 - x0), x0 + (cx + w) * (x1 - x0)
         ry0, ry1 = y0 + cy * (y1 - y0), y0 + (cy + h) * (y1 - y0)
         m = 0.05 * (x1 - x0)  # lines running up to its border read as running into it
-        inside = sum(1.0 if rx0 <= z.real <= rx1 and ry0 <= z.imag <= ry1 else 0.1
-                     for z in obstacles
-                     if rx0 - m <= z.real <= rx1 + m and ry0 - m <= z.imag <= ry1 + m)
-        covers = not (region[1] < rx0 or region[0] > rx1 or region[3] < ry0
-                      or region[2] > ry1)
-        cost = inside + (10 ** 6 if covers else 0)
+        inside = sum(
+            1.0 if rx0 <= z.real <= rx1 and ry0 <= z.imag <= ry1 else 0.1
+            for z in obstacles
+            if rx0 - m <= z.real <= rx1 + m and ry0 - m <= z.imag <= ry1 + m
+        )
+        covers = not (region[1] < rx0 or region[0] > rx1 or region[3] < ry0 or region[2] > ry1)
+        cost = inside + (10**6 if covers else 0)
         if best is None or cost < best[0]:
             best = (cost, (cx, cy, w, h))
     return best[1], best[0]
@@ -398,18 +470,37 @@ def _magnifier(ax, box, plan, tiny, draw, obstacles):
     inset.patch.set_alpha(0.95)
     labels = LabelLayer(inset)
     draw(inset, labels, region, tiny)
-    inset.text(0.04, 0.96, f"\u00d7{factor:g}", transform=inset.transAxes, ha="left",
-               va="top", fontsize=style.FONT_SIZE - 1, color="#555555")
-    rect = Polygon([(region[0], region[2]), (region[1], region[2]), (region[1], region[3]),
-                    (region[0], region[3])], closed=True, fill=False, edgecolor="#777777",
-                   linewidth=0.8, zorder=9)
+    inset.text(
+        0.04,
+        0.96,
+        f"\u00d7{factor:g}",
+        transform=inset.transAxes,
+        ha="left",
+        va="top",
+        fontsize=style.FONT_SIZE - 1,
+        color="#555555",
+    )
+    rect = Polygon(
+        [
+            (region[0], region[2]),
+            (region[1], region[2]),
+            (region[1], region[3]),
+            (region[0], region[3]),
+        ],
+        closed=True,
+        fill=False,
+        edgecolor="#777777",
+        linewidth=0.8,
+        zorder=9,
+    )
     ax.add_patch(rect)
     # a leader from the magnified region to the inset
     ix0, iy0, iw, ih = spot
     fx = ax.get_xlim()
     fy = ax.get_ylim()
-    inset_centre = complex(fx[0] + (ix0 + iw / 2) * (fx[1] - fx[0]),
-                           fy[0] + (iy0 + ih / 2) * (fy[1] - fy[0]))
+    inset_centre = complex(
+        fx[0] + (ix0 + iw / 2) * (fx[1] - fx[0]), fy[0] + (iy0 + ih / 2) * (fy[1] - fy[0])
+    )
     d = inset_centre - centre
     if abs(d) > 0:
         a = centre + d / abs(d) * half * 1.05
@@ -425,19 +516,41 @@ def _magnifier(ax, box, plan, tiny, draw, obstacles):
 # ---------------------------------------------------------------- linkage
 def _ground(ax, z, size):
     """A pivot's ground symbol: a hatched triangle under the pin."""
-    tri = [(z.real, z.imag), (z.real - 0.6 * size, z.imag - size),
-           (z.real + 0.6 * size, z.imag - size)]
-    ax.add_patch(Polygon(tri, closed=True, facecolor="white", edgecolor="#222222",
-                         hatch=style.GROUND_HATCH, linewidth=1.0, zorder=1))
+    tri = [
+        (z.real, z.imag),
+        (z.real - 0.6 * size, z.imag - size),
+        (z.real + 0.6 * size, z.imag - size),
+    ]
+    ax.add_patch(
+        Polygon(
+            tri,
+            closed=True,
+            facecolor="white",
+            edgecolor="#222222",
+            hatch=style.GROUND_HATCH,
+            linewidth=1.0,
+            zorder=1,
+        )
+    )
 
 
 def _block(ax, z, direction, size):
     u = direction / abs(direction)
     n = 1j * u
-    corners = [z + sx * 0.9 * size * u + sy * 0.5 * size * n
-               for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    ax.add_patch(Polygon([(c.real, c.imag) for c in corners], closed=True,
-                         facecolor="#e6e6e6", edgecolor="#222222", linewidth=1.2, zorder=4))
+    corners = [
+        z + sx * 0.9 * size * u + sy * 0.5 * size * n
+        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    ]
+    ax.add_patch(
+        Polygon(
+            [(c.real, c.imag) for c in corners],
+            closed=True,
+            facecolor="#e6e6e6",
+            edgecolor="#222222",
+            linewidth=1.2,
+            zorder=4,
+        )
+    )
 
 
 def _on(z, z0, z1, tol):
@@ -470,8 +583,12 @@ def _beside(arrows, segments, size):
                 if sine < math.sin(math.radians(ALONG)) and _on(probe, z0, z1, 0.01 * size):
                     along = True
             key = (round(start.real, 9), round(start.imag, 9))
-            same = [w for w in taken.get(key, []) if abs(math.degrees(math.atan2(
-                (w * u.conjugate()).imag, (w * u.conjugate()).real))) < ALONG]
+            same = [
+                w
+                for w in taken.get(key, [])
+                if abs(math.degrees(math.atan2((w * u.conjugate()).imag, (w * u.conjugate()).real)))
+                < ALONG
+            ]
             if along or same:
                 k = len(same) + (1 if along else 0)
                 side = 1 if k % 2 else -1
@@ -481,9 +598,26 @@ def _beside(arrows, segments, size):
     return offsets
 
 
-def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, legend=True,
-                 title=None, scale_bars=True, vectors=True, symbols=False, names=None,
-                 inset=True, lines=True, notes=None, colour=None, kinds=None):
+def draw_linkage(
+    con,
+    step=None,
+    ax=None,
+    scale=None,
+    *,
+    units=None,
+    box=None,
+    legend=True,
+    title=None,
+    scale_bars=True,
+    vectors=True,
+    symbols=False,
+    names=None,
+    inset=True,
+    lines=True,
+    notes=None,
+    colour=None,
+    kinds=None,
+):
     """The linkage to scale with the acceleration components at their points.
 
     Parameters
@@ -551,9 +685,13 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
     every = [(a.start * lf, a.vector * af * scale) for a in arrows_all]
     # a given frame fixes the scale bars too (the same in every figure drawn in it)
     bar = size if box is None else 0.6 * max(box[1] - box[0], box[3] - box[2])
-    box = _frame(ax, list(pts.values()) + [s + v for s, v in every] + [s for s, _ in every],
-                 0.13 * size, strip=(0.15 if arrows_all else 0.09) if scale_bars else 0.0,
-                 box=box)
+    box = _frame(
+        ax,
+        list(pts.values()) + [s + v for s, v in every] + [s for s, _ in every],
+        0.13 * size,
+        strip=(0.15 if arrows_all else 0.09) if scale_bars else 0.0,
+        box=box,
+    )
     span = max(box[1] - box[0], box[3] - box[2])
     ppd = _pts_per_data(ax)
     guides = []
@@ -563,7 +701,7 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
     for p0, d, t0, t1 in lk.rods:  # a slide carried by a link
         d = d / abs(d)
         guides.append((p0 * lf + t0 * lf * d, p0 * lf + t1 * lf * d))
-    for p0, d in lk.slides:        # a slide on the ground
+    for p0, d in lk.slides:  # a slide on the ground
         d = d / abs(d)
         guides.append((p0 * lf - 10 * size * d, p0 * lf + 10 * size * d))
     offsets = _beside(drawn, guides, size)
@@ -576,42 +714,57 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         for link in lk.links:
             zs = [pts[n] for n in link]
             if len(link) == 3:
-                target.add_patch(Polygon([(z.real, z.imag) for z in zs], closed=True,
-                                         **style.COUPLER_FILL))
+                target.add_patch(
+                    Polygon([(z.real, z.imag) for z in zs], closed=True, **style.COUPLER_FILL)
+                )
                 pairs = list(zip(zs, zs[1:] + zs[:1]))
             else:
-                target.plot([z.real for z in zs], [z.imag for z in zs],
-                            **dict(style.LINK, **({"color": colour} if colour else {})))
+                target.plot(
+                    [z.real for z in zs],
+                    [z.imag for z in zs],
+                    **dict(style.LINK, **({"color": colour} if colour else {})),
+                )
                 pairs = list(zip(zs, zs[1:]))
             for z0, z1 in pairs:
                 labels.avoid(z0, z1, width=style.LINK["linewidth"] if len(link) == 2 else 1.2)
                 if main:
                     obstacles.extend(z0 + (z1 - z0) * k / 40 for k in range(41))
             if symbols and len(link) == 2:
-                sym = LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(link)) or \
-                    LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(reversed(link)))
+                sym = LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(link)) or LINK_SYMBOLS.get(
+                    con.mechanism, {}
+                ).get(tuple(reversed(link)))
                 if sym:
-                    labels.add_vector(f"${sym}$", zs[0], zs[1] - zs[0], color="#333333",
-                                      priority=0.5)
+                    labels.add_vector(
+                        f"${sym}$", zs[0], zs[1] - zs[0], color="#333333", priority=0.5
+                    )
         for p0, d in lk.slides:
             d = d / abs(d)
             ts = [((z - p0 * lf) * d.conjugate()).real for z in pts.values()]
             t0, t1 = min(ts + [0.0]) - 0.15 * size, max(ts + [0.0]) + 0.15 * size
             za, zb = p0 * lf + t0 * d, p0 * lf + t1 * d
-            target.plot([za.real, zb.real], [za.imag, zb.imag], color="#222222",
-                        linewidth=1.0, linestyle="-.", zorder=1)
+            target.plot(
+                [za.real, zb.real],
+                [za.imag, zb.imag],
+                color="#222222",
+                linewidth=1.0,
+                linestyle="-.",
+                zorder=1,
+            )
             labels.avoid(za, zb, weight=0.5, width=1.0)
         for p0, d, t0, t1 in lk.rods:
             d = d / abs(d)
             za, zb = p0 * lf + t0 * lf * d, p0 * lf + t1 * lf * d
-            target.plot([za.real, zb.real], [za.imag, zb.imag], color="#4d4d4d",
-                        linewidth=2.2, zorder=2)
+            target.plot(
+                [za.real, zb.real], [za.imag, zb.imag], color="#4d4d4d", linewidth=2.2, zorder=2
+            )
             labels.avoid(za, zb, width=2.2)
         for name, d in lk.blocks:
             _block(target, pts[name], d, 0.06 * size)
             e = d / abs(d) * 0.06 * size
-            corners = [pts[name] + sx * 0.9 * e + sy * 0.5j * e
-                       for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            corners = [
+                pts[name] + sx * 0.9 * e + sy * 0.5j * e
+                for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+            ]
             for k in range(4):
                 labels.avoid(corners[k], corners[(k + 1) % 4], width=1.2)
         for g in lk.ground:
@@ -625,28 +778,43 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         for z in xs:
             labels.avoid_pin(z, 4.0)
         for ln in clines:
-            _construction_line(target, labels, ln.point * lf, ln.direction, ln.name,
-                               box if main else (region[0], region[1], region[2], region[3]),
-                               letters=main, obstacles=obstacles if main else None)
+            _construction_line(
+                target,
+                labels,
+                ln.point * lf,
+                ln.direction,
+                ln.name,
+                box if main else (region[0], region[1], region[2], region[3]),
+                letters=main,
+                obstacles=obstacles if main else None,
+            )
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
             if _arrow(target, s, v, a.kind, ppd_t, offsets[i]):
-                labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"],
-                             offset=offsets[i])
+                labels.avoid(
+                    s, s + v, width=style.component(a.kind)["linewidth"], offset=offsets[i]
+                )
                 if main:
                     obstacles.extend(s + v * k / 20 for k in range(21))
         for name, z in pts.items():
-            if _pretty(name, names) and (main or (region[0] <= z.real <= region[1]
-                                                  and region[2] <= z.imag <= region[3])):
+            if _pretty(name, names) and (
+                main or (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3])
+            ):
                 labels.add_point(_pretty(name, names), z, priority=0)
         for name, text in (notes or {}).items():
             if main and name in pts:
-                labels.add_point(text, pts[name], color="#444444", priority=0.7,
-                                 fontsize=style.FONT_SIZE - 1)
+                labels.add_point(
+                    text, pts[name], color="#444444", priority=0.7, fontsize=style.FONT_SIZE - 1
+                )
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
             if abs(v) > 0 and (main != (i in tiny)):
-                labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),
-                                  offset=offsets[i], priority=1 + (0 if a.kind == "resultant"
-                                                                   else 0.5))
+                labels.add_vector(
+                    f"${a.name}$",
+                    s,
+                    v,
+                    color=_label_colour(a.kind),
+                    offset=offsets[i],
+                    priority=1 + (0 if a.kind == "resultant" else 0.5),
+                )
 
     labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
     kinds = {a.kind for a in arrows}
@@ -654,20 +822,36 @@ def draw_linkage(con, step=None, ax=None, scale=None, *, units=None, box=None, l
         x0, x1, y0, y1 = box
         tick = 0.008 * span
         L = nice(0.22 * bar)
-        _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.045 * span, L,
-                   f"{fmt(L)} {lname}", tick)
+        _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.045 * span, L, f"{fmt(L)} {lname}", tick)
         if arrows:
             Aval = nice(0.22 * bar / scale)
-            _scale_bar(ax, labels, x0 + 0.02 * span, y0 - 0.11 * span, Aval * scale,
-                       f"{fmt(Aval)} {aname}", tick)
+            _scale_bar(
+                ax,
+                labels,
+                x0 + 0.02 * span,
+                y0 - 0.11 * span,
+                Aval * scale,
+                f"{fmt(Aval)} {aname}",
+                tick,
+            )
     if title is None or title is True:
-        title = (con.title + ": linkage to scale,\naccelerations drawn at their points"
-                 if arrows_all else con.title)
+        title = (
+            con.title + ": linkage to scale,\naccelerations drawn at their points"
+            if arrows_all
+            else con.title
+        )
     if title:
         ax.set_title(title, fontsize=style.TITLE_SIZE)
     if legend and (kinds or clines):
-        _legend(ax, kinds, bool(clines), loc="upper center", bbox_to_anchor=(0.5, 0.0),
-                ncol=3, borderaxespad=0.2)
+        _legend(
+            ax,
+            kinds,
+            bool(clines),
+            loc="upper center",
+            bbox_to_anchor=(0.5, 0.0),
+            ncol=3,
+            borderaxespad=0.2,
+        )
     if own:
         _caption(fig, con, step)
     return fig
@@ -679,8 +863,20 @@ def diagrams(con):
     return [d for d in DIAGRAMS if con.items(d)[0]]
 
 
-def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, legend=None,
-                 title=True, scale_bar=True, box=None, pole=True):
+def draw_polygon(
+    con,
+    diagram,
+    step=None,
+    ax=None,
+    *,
+    units=None,
+    inset=True,
+    legend=None,
+    title=True,
+    scale_bar=True,
+    box=None,
+    pole=True,
+):
     """One polygon: ``diagram`` is ``"velocity"``, ``"acceleration"`` or
     ``"point"``. ``box`` (x0, x1, y0, y1 in the drawing's unit) fixes the frame,
     so that several polygons are drawn at one scale. Returns ``(figure, kinds
@@ -709,8 +905,16 @@ def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, le
         ppd_t = ppd if main else _pts_per_data(target)
         frame = box if main else region
         for ln in clines:
-            _construction_line(target, labels, ln.point * uf, ln.direction, ln.name, frame,
-                               letters=main, obstacles=obstacles if main else None)
+            _construction_line(
+                target,
+                labels,
+                ln.point * uf,
+                ln.direction,
+                ln.name,
+                frame,
+                letters=main,
+                obstacles=obstacles if main else None,
+            )
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
             if _arrow(target, s, v, a.kind, ppd_t):
                 labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"])
@@ -720,24 +924,34 @@ def draw_polygon(con, diagram, step=None, ax=None, *, units=None, inset=True, le
             target.scatter([0.0], [0.0], s=22, color="black", zorder=9)
             labels.avoid_pin(0j, 3.0)
             if main or (region[0] <= 0 <= region[1] and region[2] <= 0 <= region[3]):
-                labels.add_point(r"$o_V$" if diagram == "velocity" else r"$o_A$", 0j,
-                                 priority=0)
+                labels.add_point(r"$o_V$" if diagram == "velocity" else r"$o_A$", 0j, priority=0)
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
             if abs(v) > 0 and (main != (i in tiny)):
-                labels.add_vector(f"${a.name}$", s, v, color=_label_colour(a.kind),
-                                  priority=1 + (0 if a.kind == "resultant" else 0.5))
+                labels.add_vector(
+                    f"${a.name}$",
+                    s,
+                    v,
+                    color=_label_colour(a.kind),
+                    priority=1 + (0 if a.kind == "resultant" else 0.5),
+                )
 
     labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
     kinds = {a.kind for a in arrows}
     if scale_bar:
         L = nice(0.22 * size)
-        _scale_bar(ax, labels, box[0] + 0.02 * span, box[2] - 0.07 * span, L,
-                   f"{fmt(L)} {uname}", 0.008 * span)
+        _scale_bar(
+            ax,
+            labels,
+            box[0] + 0.02 * span,
+            box[2] - 0.07 * span,
+            L,
+            f"{fmt(L)} {uname}",
+            0.008 * span,
+        )
     if title:
         ax.set_title(default_title if title is True else title, fontsize=style.TITLE_SIZE)
     if legend or (legend is None and own):
-        _legend(ax, kinds, bool(clines), loc="upper center", bbox_to_anchor=(0.5, 0.0),
-                ncol=2)
+        _legend(ax, kinds, bool(clines), loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2)
     if own:
         _caption(ax.figure, con, step)
     return ax.figure, kinds, bool(clines)
@@ -773,14 +987,16 @@ def save(con, outdir, stem, formats=("png", "svg"), step=None, units=None):
     """Write ``{stem}-linkage`` and ``{stem}-polygons`` in each format to
     ``outdir``; returns the list of paths written."""
     import os
+
     os.makedirs(outdir, exist_ok=True)
     paths = []
     for kind, maker in (("linkage", draw_linkage), ("polygons", draw_polygons)):
         fig = maker(con, step=step, units=units)
         for ext in formats:
             path = os.path.join(outdir, f"{stem}-{kind}.{ext}")
-            fig.savefig(path, dpi=style.DPI, bbox_inches="tight", pad_inches=0.12,
-                        metadata=_metadata(ext))
+            fig.savefig(
+                path, dpi=style.DPI, bbox_inches="tight", pad_inches=0.12, metadata=_metadata(ext)
+            )
             paths.append(path)
         plt.close(fig)
     return paths

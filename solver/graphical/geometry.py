@@ -57,9 +57,12 @@ def intersect_lines(p1, u1, p2, u2, what="the construction lines"):
     sin_angle = abs(den) / (abs(u1) * abs(u2))
     if not sin_angle >= PARALLEL_TOLERANCE:
         angle = math.degrees(math.asin(min(1.0, sin_angle)))
-        raise Singular(f"{what} are parallel (angle between them {angle:.2g} deg): "
-                       "the polygon cannot be closed at this position (a toggle or limit "
-                       "position); move the input angle away from it", condition=sin_angle)
+        raise Singular(
+            f"{what} are parallel (angle between them {angle:.2g} deg): "
+            "the polygon cannot be closed at this position (a toggle or limit "
+            "position); move the input angle away from it",
+            condition=sin_angle,
+        )
     w = p2 - p1
     t1 = cross(w, u2) / den
     t2 = cross(w, u1) / den
@@ -85,9 +88,11 @@ def intersect_circles(c1, r1, c2, r2, side, what="the links"):
     # (full relative accuracy as the triangle flattens), half chord h = 2 area / s
     prod = (s + r1 + r2) * (s + r1 - r2) * (s - r1 + r2) * (r1 + r2 - s)
     if prod < 0.0:
-        raise NotAssemblable(f"{what} cannot close: arcs of radius {r1:.6g} m and {r2:.6g} m "
-                             f"about centres {s:.6g} m apart do not meet "
-                             f"(need |{r1:.4g} - {r2:.4g}| <= {s:.4g} <= {r1:.4g} + {r2:.4g})")
+        raise NotAssemblable(
+            f"{what} cannot close: arcs of radius {r1:.6g} m and {r2:.6g} m "
+            f"about centres {s:.6g} m apart do not meet "
+            f"(need |{r1:.4g} - {r2:.4g}| <= {s:.4g} <= {r1:.4g} + {r2:.4g})"
+        )
     h = math.sqrt(prod) / (2.0 * s)
     x = (s * s + r1 * r1 - r2 * r2) / (2.0 * s)
     e = w / s
@@ -109,8 +114,10 @@ def intersect_line_circle(p, u, centre, r, sign, what="the link"):
     dist = abs(cross(w, u))  # distance from the centre to the line
     h2 = (r - dist) * (r + dist)
     if h2 < 0.0:
-        raise NotAssemblable(f"{what} cannot reach the line: the line passes "
-                             f"{dist:.6g} m from the centre, farther than the radius {r:.6g} m")
+        raise NotAssemblable(
+            f"{what} cannot reach the line: the line passes "
+            f"{dist:.6g} m from the centre, farther than the radius {r:.6g} m"
+        )
     t = -half_b + sign * math.sqrt(h2)
     return p + t * u, t
 

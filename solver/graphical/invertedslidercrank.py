@@ -19,7 +19,6 @@ import cmath
 import math
 
 from ..errors import NotAssemblable
-
 from . import crank
 from .construction import Arrow, Construction, Line, Linkage
 from .geometry import intersect_line_circle, intersect_lines
@@ -78,94 +77,155 @@ def construct(a, c, d, gamma, theta2, omega2, alpha2, theta1=0.0, circuit="open"
             f"it stays c |sin gamma| = {abs(c * eg.imag):.6g} m from O4 but A is only "
             f"{s:.6g} m from O4; shorten c, reduce |sin gamma| or change the input angle"
         ) from None
-    e4 = (A - O4) / Z        # turn link 4 so that point lands on A (|Z| = s)
+    e4 = (A - O4) / Z  # turn link 4 so that point lands on A (|Z| = s)
     e4 /= abs(e4)
     e3 = e4 * eg
     B = O4 + c * e4
     pts = {"O2": 0j, "A": A, "O4": O4, "B": B}
     links = [("O2", "A"), ("O4", "B")]
     m = 0.3 * max(abs(b), a)  # how far link 4's slide reaches past A and B
-    con = Construction("invertedslidercrank",
-                       Linkage(pts, links, ["O2", "O4"], blocks=[("A", e3)],
-                               rods=[(B, e3, min(0.0, b) - m, max(0.0, b) + m)]),
-                       [], {}, circuit, title=f"Inverted slider-crank ({circuit} circuit)")
+    con = Construction(
+        "invertedslidercrank",
+        Linkage(
+            pts,
+            links,
+            ["O2", "O4"],
+            blocks=[("A", e3)],
+            rods=[(B, e3, min(0.0, b) - m, max(0.0, b) + m)],
+        ),
+        [],
+        {},
+        circuit,
+        title=f"Inverted slider-crank ({circuit} circuit)",
+    )
     v = con.values
     R_AO4 = A - O4
-    con.step("P", "position",
-             "Draw the linkage to scale: A at a from O2. In link 4's frame the slide line "
-             "passes c |sin gamma| from O4; an arc of radius O4A cuts it, fixing theta4 "
-             f"and b ({circuit} circuit).")
+    con.step(
+        "P",
+        "position",
+        "Draw the linkage to scale: A at a from O2. In link 4's frame the slide line "
+        "passes c |sin gamma| from O4; an arc of radius O4A cuts it, fixing theta4 "
+        f"and b ({circuit} circuit).",
+    )
     theta4 = cmath.phase(e4 / e1) + theta1
     v.update(theta3=theta4 + gamma, theta4=theta4, b=b, R_A=A, R_B=B)
 
-    V_A, st = crank.velocity(con, A, omega2,
-                             "Velocity polygon: V_A = a omega2 perpendicular to O2A. V_A = V_A4 "
-                             "+ V_slip: A4 is the point of link 4 under A.")
-    st = con.step("V2", "velocity",
-                  "V_A4 is perpendicular to O4A: line through the pole; V_slip is along the "
-                  "slide: line through the tip of V_A.")
+    V_A, st = crank.velocity(
+        con,
+        A,
+        omega2,
+        "Velocity polygon: V_A = a omega2 perpendicular to O2A. V_A = V_A4 "
+        "+ V_slip: A4 is the point of link 4 under A.",
+    )
+    st = con.step(
+        "V2",
+        "velocity",
+        "V_A4 is perpendicular to O4A: line through the pole; V_slip is along the "
+        "slide: line through the tip of V_A.",
+    )
     st.lines += [Line("", 0j, 1j * R_AO4, "velocity"), Line("", V_A, e3, "velocity")]
-    V_A4, omega4, t = intersect_lines(0j, 1j * R_AO4, V_A, e3,
-                                      "the velocity lines (perpendicular to O4A, along the slide)")
+    V_A4, omega4, t = intersect_lines(
+        0j, 1j * R_AO4, V_A, e3, "the velocity lines (perpendicular to O4A, along the slide)"
+    )
     b_dot = -t
     V_slip = b_dot * e3
-    st = con.step("V3", "velocity",
-                  "They meet at the tip of V_A4: omega4 = V_A4 / O4A, V_slip = b' along the slide.")
-    st.arrows += [Arrow(r"\mathbf{V}_{A_4}", 0j, V_A4, "velocity", "velocity"),
-                  Arrow(r"\mathbf{V}_{slip}", V_A4, V_slip, "slip", "velocity")]
+    st = con.step(
+        "V3",
+        "velocity",
+        "They meet at the tip of V_A4: omega4 = V_A4 / O4A, V_slip = b' along the slide.",
+    )
+    st.arrows += [
+        Arrow(r"\mathbf{V}_{A_4}", 0j, V_A4, "velocity", "velocity"),
+        Arrow(r"\mathbf{V}_{slip}", V_A4, V_slip, "slip", "velocity"),
+    ]
     V_B = 1j * omega4 * (B - O4)
     v.update(omega3=omega4, omega4=omega4, b_dot=b_dot, V_A=V_A, V_B=V_B)
 
     A_A_n, A_A_t = crank.acceleration(con, A, a, omega2, alpha2)
     A_A = A_A_n + A_A_t
-    A_A4_n = -omega4 ** 2 * R_AO4
-    st = con.step("3", "acceleration",
-                  f"A4 turns about O4: A_A4^n = O4A omega4^2 = {abs(A_A4_n):.4g} m/s^2 toward "
-                  "O4; construction line pp through A perpendicular to O4A: the direction of "
-                  "A_A4^t.")
+    A_A4_n = -(omega4**2) * R_AO4
+    st = con.step(
+        "3",
+        "acceleration",
+        f"A4 turns about O4: A_A4^n = O4A omega4^2 = {abs(A_A4_n):.4g} m/s^2 toward "
+        "O4; construction line pp through A perpendicular to O4A: the direction of "
+        "A_A4^t.",
+    )
     st.arrows.append(Arrow(r"\mathbf{A}_{A_4}^{n}", A, A_A4_n, "normal", "linkage"))
     st.lines.append(Line("pp", A, 1j * R_AO4, "linkage"))
     A_cor = 2.0 * b_dot * omega4 * 1j * e3
-    st = con.step("4", "acceleration",
-                  "A_A = A_A4 + A_coriolis + A_slip: A slides on the turning link 4, so the "
-                  f"Coriolis component 2 omega4 V_slip = {abs(A_cor):.4g} m/s^2 appears, "
-                  "perpendicular to the slide, V_slip turned 90 deg in the sense of omega4 "
-                  "(eq. 7.19).")
+    st = con.step(
+        "4",
+        "acceleration",
+        "A_A = A_A4 + A_coriolis + A_slip: A slides on the turning link 4, so the "
+        f"Coriolis component 2 omega4 V_slip = {abs(A_cor):.4g} m/s^2 appears, "
+        "perpendicular to the slide, V_slip turned 90 deg in the sense of omega4 "
+        "(eq. 7.19).",
+    )
     st.arrows.append(Arrow(r"\mathbf{A}_{cor}", A, A_cor, "coriolis", "linkage"))
-    st = con.step("5", "acceleration",
-                  "A_slip lies along the slide: construction line rr through A.")
+    st = con.step(
+        "5", "acceleration", "A_slip lies along the slide: construction line rr through A."
+    )
     st.lines.append(Line("rr", A, e3, "linkage"))
     T = A_A4_n + A_cor
-    X, b_ddot, t = intersect_lines(T, e3, A_A, 1j * R_AO4,
-                                   "the lines rr and pp (along the slide, perpendicular to O4A)")
+    X, b_ddot, t = intersect_lines(
+        T, e3, A_A, 1j * R_AO4, "the lines rr and pp (along the slide, perpendicular to O4A)"
+    )
     alpha4 = -t
     A_slip = X - T
     A_A4_t = A_A - X
-    st = con.step("6", "acceleration",
-                  "Polygon: A_A (A_A^t, A_A^n) from the pole; from the pole also A_A4^n, then "
-                  "A_coriolis; a line parallel to rr through its tip and one parallel to pp "
-                  "through the tip of A_A meet: A_slip and A_A4^t close the polygon.")
+    st = con.step(
+        "6",
+        "acceleration",
+        "Polygon: A_A (A_A^t, A_A^n) from the pole; from the pole also A_A4^n, then "
+        "A_coriolis; a line parallel to rr through its tip and one parallel to pp "
+        "through the tip of A_A meet: A_slip and A_A4^t close the polygon.",
+    )
     st.arrows += crank.polygon(A_A_n, A_A_t) + [
-                  Arrow(r"\mathbf{A}_{A_4}^{n}", 0j, A_A4_n, "normal", "acceleration"),
-                  Arrow(r"\mathbf{A}_{cor}", A_A4_n, A_cor, "coriolis", "acceleration")]
+        Arrow(r"\mathbf{A}_{A_4}^{n}", 0j, A_A4_n, "normal", "acceleration"),
+        Arrow(r"\mathbf{A}_{cor}", A_A4_n, A_cor, "coriolis", "acceleration"),
+    ]
     st.lines += [Line("rr", T, e3, "acceleration"), Line("pp", A_A, 1j * R_AO4, "acceleration")]
-    st.arrows += [Arrow(r"\mathbf{A}_{slip}", T, A_slip, "slip", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A_4}^{t}", X, A_A4_t, "tangential", "acceleration"),
-                  Arrow(r"\mathbf{A}_{A}", 0j, A_A, "resultant", "acceleration")]
-    A_B_n = -omega4 ** 2 * (B - O4)
+    st.arrows += [
+        Arrow(r"\mathbf{A}_{slip}", T, A_slip, "slip", "acceleration"),
+        Arrow(r"\mathbf{A}_{A_4}^{t}", X, A_A4_t, "tangential", "acceleration"),
+        Arrow(r"\mathbf{A}_{A}", 0j, A_A, "resultant", "acceleration"),
+    ]
+    A_B_n = -(omega4**2) * (B - O4)
     A_B_t = alpha4 * 1j * (B - O4)
     A_B = A_B_n + A_B_t
-    st = con.step("7", "acceleration",
-                  f"alpha3 = alpha4 = A_A4^t / O4A = {alpha4:.6g} rad/s^2; b'' = {b_ddot:.6g} "
-                  "m/s^2 (A_slip along the slide, positive from B toward A).")
-    st = con.step("8", "acceleration",
-                  "A_B = A_B^n + A_B^t with O4B omega4^2 and O4B alpha4; the results drawn on "
-                  "the linkage.")
-    st.arrows += [Arrow(r"\mathbf{A}_{A}", A, A_A, "resultant", "linkage"),
-                  Arrow(r"\mathbf{A}_{slip}", A, A_slip, "slip", "linkage")]
+    st = con.step(
+        "7",
+        "acceleration",
+        f"alpha3 = alpha4 = A_A4^t / O4A = {alpha4:.6g} rad/s^2; b'' = {b_ddot:.6g} "
+        "m/s^2 (A_slip along the slide, positive from B toward A).",
+    )
+    st = con.step(
+        "8",
+        "acceleration",
+        "A_B = A_B^n + A_B^t with O4B omega4^2 and O4B alpha4; the results drawn on the linkage.",
+    )
+    st.arrows += [
+        Arrow(r"\mathbf{A}_{A}", A, A_A, "resultant", "linkage"),
+        Arrow(r"\mathbf{A}_{slip}", A, A_slip, "slip", "linkage"),
+    ]
     if c > 0.0:
         st.arrows.append(Arrow(r"\mathbf{A}_{B}", B, A_B, "resultant", "linkage"))
-    v.update(alpha3=alpha4, alpha4=alpha4, b_ddot=b_ddot, A_A=A_A, A_B=A_B, A_BA=A_B - A_A,
-             A_coriolis=A_cor, A_slip=A_slip, A_A4=A_A4_n + A_A4_t, A_A4_n=A_A4_n,
-             A_A4_t=A_A4_t, A_A_n=A_A_n, A_A_t=A_A_t, A_B_n=A_B_n, A_B_t=A_B_t)
+    v.update(
+        alpha3=alpha4,
+        alpha4=alpha4,
+        b_ddot=b_ddot,
+        A_A=A_A,
+        A_B=A_B,
+        A_BA=A_B - A_A,
+        A_coriolis=A_cor,
+        A_slip=A_slip,
+        A_A4=A_A4_n + A_A4_t,
+        A_A4_n=A_A4_n,
+        A_A4_t=A_A4_t,
+        A_A_n=A_A_n,
+        A_A_t=A_A_t,
+        A_B_n=A_B_n,
+        A_B_t=A_B_t,
+    )
     return con

@@ -24,13 +24,13 @@ from matplotlib.transforms import IdentityTransform
 from . import style
 
 #: cost of one label spot: what each fault weighs (distances in pixels)
-COST_OUTSIDE = 1e5        # any part of the label outside the axes
-COST_OVERLAP = 4e3        # per unit of overlapped area (fraction of the label's own area)
-COST_TOUCH = 600.0        # per label it overlaps at all
-COST_SEGMENT = 900.0      # per link or vector it crosses (times the segment's weight)
-COST_PIN = 900.0          # per pin inside it
-COST_LEADER = 120.0       # a spot that needs a leader line
-COST_DISTANCE = 1.5       # per pixel from the anchor
+COST_OUTSIDE = 1e5  # any part of the label outside the axes
+COST_OVERLAP = 4e3  # per unit of overlapped area (fraction of the label's own area)
+COST_TOUCH = 600.0  # per label it overlaps at all
+COST_SEGMENT = 900.0  # per link or vector it crosses (times the segment's weight)
+COST_PIN = 900.0  # per pin inside it
+COST_LEADER = 120.0  # a spot that needs a leader line
+COST_DISTANCE = 1.5  # per pixel from the anchor
 
 
 _SIZES = {}  # (text, size, style, weight) -> (width, height) [pt]
@@ -81,12 +81,12 @@ class LabelLayer(Artist):
     def __init__(self, ax, fontsize=None, auto=False):
         super().__init__()
         self.ax = ax
-        self.auto = auto          # also keep clear of every line and text of the axes
+        self.auto = auto  # also keep clear of every line and text of the axes
         self.fontsize = fontsize or style.LABEL_SIZE
-        self.segments = []      # (z0, z1, weight, halfwidth [pt], offset [pt])
-        self.pins = []          # (z, radius [pt])
-        self.labels = []        # see add_point / add_vector / add_fixed
-        self.placed = []        # pixel boxes of the last draw
+        self.segments = []  # (z0, z1, weight, halfwidth [pt], offset [pt])
+        self.pins = []  # (z, radius [pt])
+        self.labels = []  # see add_point / add_vector / add_fixed
+        self.placed = []  # pixel boxes of the last draw
         self.set_zorder(20)
         ax.add_artist(self)
         self.set_clip_on(False)
@@ -94,8 +94,7 @@ class LabelLayer(Artist):
     # ------------------------------------------------------------ geometry
     def avoid(self, z0, z1, weight=1.0, width=2.0, offset=0j):
         """Keep labels off the segment z0-z1 (data); ``width`` is its line width [pt]."""
-        self.segments.append((complex(z0), complex(z1), weight, 0.5 * width + 1.5,
-                              complex(offset)))
+        self.segments.append((complex(z0), complex(z1), weight, 0.5 * width + 1.5, complex(offset)))
 
     def avoid_pin(self, z, radius=4.0):
         self.pins.append((complex(z), radius))
@@ -103,21 +102,34 @@ class LabelLayer(Artist):
     # ------------------------------------------------------------ labels
     def add_point(self, text, z, color="black", priority=0, **kw):
         """A label beside the point z (a pin's name, the pole)."""
-        self.labels.append(dict(kind="point", text=text, z=complex(z), color=color,
-                                priority=priority, kw=kw))
+        self.labels.append(
+            dict(kind="point", text=text, z=complex(z), color=color, priority=priority, kw=kw)
+        )
 
     def add_vector(self, text, start, vector, color="black", priority=1, offset=0j, **kw):
         """A label beside the vector drawn from ``start`` (data) along ``vector``."""
-        self.labels.append(dict(kind="vector", text=text, z=complex(start),
-                                v=complex(vector), color=color, priority=priority,
-                                offset=complex(offset), kw=kw))
+        self.labels.append(
+            dict(
+                kind="vector",
+                text=text,
+                z=complex(start),
+                v=complex(vector),
+                color=color,
+                priority=priority,
+                offset=complex(offset),
+                kw=kw,
+            )
+        )
 
     def add_fixed(self, text, z, color="black", boxed=True, **kw):
         """A label exactly at z (the letters at the ends of a construction line,
         a scale bar's value); the others keep clear of it. ``ha``/``va`` as for
         matplotlib's text (default: centred)."""
-        self.labels.append(dict(kind="fixed", text=text, z=complex(z), color=color,
-                                priority=-1, boxed=boxed, kw=kw))
+        self.labels.append(
+            dict(
+                kind="fixed", text=text, z=complex(z), color=color, priority=-1, boxed=boxed, kw=kw
+            )
+        )
 
     # ------------------------------------------------------------ drawing
     def _px(self, z, offset, ppt):
@@ -128,9 +140,15 @@ class LabelLayer(Artist):
         kw = dict(lab["kw"])
         kw.setdefault("ha", "center")
         kw.setdefault("va", "center")
-        t = Text(0.0, 0.0, lab["text"], color=lab["color"],
-                 fontsize=kw.pop("fontsize", self.fontsize), transform=IdentityTransform(),
-                 **kw)
+        t = Text(
+            0.0,
+            0.0,
+            lab["text"],
+            color=lab["color"],
+            fontsize=kw.pop("fontsize", self.fontsize),
+            transform=IdentityTransform(),
+            **kw,
+        )
         t.set_figure(self.figure)
         key = (lab["text"], t.get_fontsize(), t.get_fontstyle(), t.get_fontweight())
         ppt = renderer.points_to_pixels(1.0)
@@ -150,8 +168,10 @@ class LabelLayer(Artist):
             c = self._px(lab["z"], 0j, ppt)
             for ring, leader in ((1.0, False), (2.6, True)):
                 for k in range(12):
-                    d = complex(math.cos(k * math.pi / 6 + math.pi / 4),
-                                math.sin(k * math.pi / 6 + math.pi / 4))
+                    d = complex(
+                        math.cos(k * math.pi / 6 + math.pi / 4),
+                        math.sin(k * math.pi / 6 + math.pi / 4),
+                    )
                     reach = abs(d.real) * w / 2 + abs(d.imag) * h / 2
                     out.append((c + d * (ring * (reach + 7.0 * ppt)), leader))
             return out
@@ -177,9 +197,15 @@ class LabelLayer(Artist):
         if not self.get_visible() or not self.labels:
             return
         ppt = renderer.points_to_pixels(1.0)
-        seg = np.array([[*(lambda a: (a.real, a.imag))(self._px(z0, off, ppt)),
-                         *(lambda b: (b.real, b.imag))(self._px(z1, off, ppt))]
-                        for z0, z1, _, _, off in self.segments]).reshape(-1, 4)
+        seg = np.array(
+            [
+                [
+                    *(lambda a: (a.real, a.imag))(self._px(z0, off, ppt)),
+                    *(lambda b: (b.real, b.imag))(self._px(z1, off, ppt)),
+                ]
+                for z0, z1, _, _, off in self.segments
+            ]
+        ).reshape(-1, 4)
         weights = np.array([s[2] for s in self.segments])
         halfw = np.array([s[3] * ppt for s in self.segments])
         pins = [(self._px(z, 0j, ppt), r * ppt) for z, r in self.pins]
@@ -216,21 +242,35 @@ class LabelLayer(Artist):
             text, w, h = self._text(lab, renderer)
             anchor = self._px(lab["z"], lab.get("offset", 0j), ppt)
             if lab["kind"] == "vector":
-                anchor = anchor + 0.5 * (self._px(lab["z"] + lab["v"], lab["offset"], ppt)
-                                         - self._px(lab["z"], lab["offset"], ppt))
+                anchor = anchor + 0.5 * (
+                    self._px(lab["z"] + lab["v"], lab["offset"], ppt)
+                    - self._px(lab["z"], lab["offset"], ppt)
+                )
             cands = self._candidates(lab, w, h, ppt)
-            boxes = np.array([(c.real - w / 2 - pad, c.imag - h / 2 - pad,
-                               c.real + w / 2 + pad, c.imag + h / 2 + pad) for c, _ in cands])
-            hits = (_segments_hit(seg, halfw, boxes) @ weights if len(seg)
-                    else np.zeros(len(boxes)))
+            boxes = np.array(
+                [
+                    (
+                        c.real - w / 2 - pad,
+                        c.imag - h / 2 - pad,
+                        c.real + w / 2 + pad,
+                        c.imag + h / 2 + pad,
+                    )
+                    for c, _ in cands
+                ]
+            )
+            hits = _segments_hit(seg, halfw, boxes) @ weights if len(seg) else np.zeros(len(boxes))
             best = None
             for rank, ((c, leader), box) in enumerate(zip(cands, boxes)):
                 cost = COST_DISTANCE * abs(c - anchor) + 0.5 * rank
                 if leader:
                     cost += COST_LEADER
                 if lab["kind"] != "fixed":
-                    if (box[0] < inner[0] or box[1] < inner[1] or box[2] > inner[2]
-                            or box[3] > inner[3]):
+                    if (
+                        box[0] < inner[0]
+                        or box[1] < inner[1]
+                        or box[2] > inner[2]
+                        or box[3] > inner[3]
+                    ):
                         cost += COST_OUTSIDE
                     area = (box[2] - box[0]) * (box[3] - box[1])
                     for other in self.placed:
@@ -239,8 +279,7 @@ class LabelLayer(Artist):
                             cost += COST_TOUCH + COST_OVERLAP * shared / area
                     cost += COST_SEGMENT * float(hits[rank])
                     for z, r in pins:
-                        if (box[0] - r < z.real < box[2] + r
-                                and box[1] - r < z.imag < box[3] + r):
+                        if box[0] - r < z.real < box[2] + r and box[1] - r < z.imag < box[3] + r:
                             cost += COST_PIN
                 if best is None or cost < best[0]:
                     best = (cost, c, tuple(box), leader)
@@ -254,14 +293,18 @@ class LabelLayer(Artist):
                 # from the anchor to the nearest point of the label's box
                 ex = min(max(anchor.real, box[0]), box[2])
                 ey = min(max(anchor.imag, box[1]), box[3])
-                line = Line2D([anchor.real, ex], [anchor.imag, ey], color="#777777",
-                              linewidth=0.7, transform=IdentityTransform())
+                line = Line2D(
+                    [anchor.real, ex],
+                    [anchor.imag, ey],
+                    color="#777777",
+                    linewidth=0.7,
+                    transform=IdentityTransform(),
+                )
                 line.set_figure(self.figure)
                 line.draw(renderer)
             text.set_position((c.real, c.imag))
             if lab["kind"] != "fixed" or lab.get("boxed", True):
-                text.set_bbox(dict(boxstyle="round,pad=0.1", fc="white", ec="none",
-                                   alpha=0.85))
+                text.set_bbox(dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85))
             text.draw(renderer)
         self.stale = False
 

@@ -18,23 +18,54 @@ velocity      orange           solid       velocity-polygon vectors
 Construction lines (pp, qq, rr) are thin grey long-dashed lines.
 """
 
-OKABE_ITO = {"black": "#000000", "orange": "#E69F00", "sky": "#56B4E9", "green": "#009E73",
-             "yellow": "#F0E442", "blue": "#0072B2", "vermillion": "#D55E00",
-             "purple": "#CC79A7"}
+OKABE_ITO = {
+    "black": "#000000",
+    "orange": "#E69F00",
+    "sky": "#56B4E9",
+    "green": "#009E73",
+    "yellow": "#F0E442",
+    "blue": "#0072B2",
+    "vermillion": "#D55E00",
+    "purple": "#CC79A7",
+}
 
 COMPONENT = {
-    "normal": {"color": OKABE_ITO["blue"], "linestyle": "-", "linewidth": 1.8,
-               "label": "normal (centripetal)"},
-    "tangential": {"color": OKABE_ITO["vermillion"], "linestyle": (0, (5, 2.5)),
-                   "linewidth": 1.8, "label": "tangential"},
-    "coriolis": {"color": OKABE_ITO["green"], "linestyle": (0, (6, 2, 1.5, 2)),
-                 "linewidth": 2.0, "label": "Coriolis"},
-    "slip": {"color": OKABE_ITO["purple"], "linestyle": (0, (1.5, 1.5)), "linewidth": 2.2,
-             "label": "slip"},
-    "resultant": {"color": OKABE_ITO["black"], "linestyle": "-", "linewidth": 2.6,
-                  "label": "resultant (absolute)"},
-    "velocity": {"color": OKABE_ITO["orange"], "linestyle": "-", "linewidth": 1.8,
-                 "label": "velocity"},
+    "normal": {
+        "color": OKABE_ITO["blue"],
+        "linestyle": "-",
+        "linewidth": 1.8,
+        "label": "normal (centripetal)",
+    },
+    "tangential": {
+        "color": OKABE_ITO["vermillion"],
+        "linestyle": (0, (5, 2.5)),
+        "linewidth": 1.8,
+        "label": "tangential",
+    },
+    "coriolis": {
+        "color": OKABE_ITO["green"],
+        "linestyle": (0, (6, 2, 1.5, 2)),
+        "linewidth": 2.0,
+        "label": "Coriolis",
+    },
+    "slip": {
+        "color": OKABE_ITO["purple"],
+        "linestyle": (0, (1.5, 1.5)),
+        "linewidth": 2.2,
+        "label": "slip",
+    },
+    "resultant": {
+        "color": OKABE_ITO["black"],
+        "linestyle": "-",
+        "linewidth": 2.6,
+        "label": "resultant (absolute)",
+    },
+    "velocity": {
+        "color": OKABE_ITO["orange"],
+        "linestyle": "-",
+        "linewidth": 1.8,
+        "label": "velocity",
+    },
     "known": {"color": "#555555", "linestyle": "-", "linewidth": 1.5, "label": "known"},
 }
 

@@ -20,9 +20,9 @@ and for a vector whose length b(t) also varies (a slider, eq. 7.19):
 Each helper returns the (x, y) components of such a term.
 """
 
-from dataclasses import dataclass, field, fields
 import functools
 import math
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -80,8 +80,7 @@ def classify(gap, span):
     if np.ndim(gap) == 0:  # one position: plain floats are ten times faster
         gap = float(gap)
         roundoff = ROUNDOFF_GAIN * EPS * span / gap if gap > 0 else math.inf
-        status = (NOT_ASSEMBLABLE if not gap > -tol else
-                  OK if roundoff <= MAX_ROUNDOFF else SINGULAR)
+        status = NOT_ASSEMBLABLE if not gap > -tol else OK if roundoff <= MAX_ROUNDOFF else SINGULAR
         return np.int8(status), roundoff
     if gap.size and gap.min() > 0.0:  # every position closes (the usual sweep): fewer passes
         roundoff = ROUNDOFF_GAIN * EPS * span / gap
@@ -90,8 +89,9 @@ def classify(gap, span):
         return np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR).astype(np.int8), roundoff
     with np.errstate(divide="ignore", invalid="ignore"):
         roundoff = np.where(gap > 0, ROUNDOFF_GAIN * EPS * span / gap, np.inf)
-    status = np.where(gap > -tol, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR),
-                      NOT_ASSEMBLABLE).astype(np.int8)
+    status = np.where(
+        gap > -tol, np.where(roundoff <= MAX_ROUNDOFF, OK, SINGULAR), NOT_ASSEMBLABLE
+    ).astype(np.int8)
     return status, roundoff
 
 
@@ -158,10 +158,12 @@ def without_float_warnings(func):
     positions that do not assemble, and the status says so; an overflow
     (inputs too large for float64's range) is refused by the unit-aware layer
     and the batch, which check the outputs they give."""
+
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
+
     return wrapper
 
 
@@ -323,8 +325,9 @@ def piecewise(theta2, motion, others):
 def same_shapes(theta2, motion, others):
     """Each of ``motion`` a scalar or of theta2's shape, and ``others`` scalars."""
     shape = theta2.shape
-    return (all(np.ndim(x) == 0 or np.shape(x) == shape for x in motion)
-            and all(np.ndim(x) == 0 for x in others))
+    return all(np.ndim(x) == 0 or np.shape(x) == shape for x in motion) and all(
+        np.ndim(x) == 0 for x in others
+    )
 
 
 def in_pieces(solve, theta2, omega2, alpha2, jerk2):
@@ -349,12 +352,17 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
 
             def per_position(v):
                 return isinstance(v, np.ndarray) and v.shape == (m,)
-            full = {k: np.empty(n, getattr(part, k).dtype) for k in part.keys()
-                    if k not in inputs and per_position(getattr(part, k))}
-            directions = {k: [np.empty(n) if per_position(x) else x for x in v]
-                          for k, v in part.directions.items()}
-            out = Motion(**{f: (None if f in full else getattr(part, f))
-                            for f in _MOTION_FIELDS})
+
+            full = {
+                k: np.empty(n, getattr(part, k).dtype)
+                for k in part.keys()
+                if k not in inputs and per_position(getattr(part, k))
+            }
+            directions = {
+                k: [np.empty(n) if per_position(x) else x for x in v]
+                for k, v in part.directions.items()
+            }
+            out = Motion(**{f: (None if f in full else getattr(part, f)) for f in _MOTION_FIELDS})
         for k, v in full.items():
             v[sl] = getattr(part, k)
         for k, v in directions.items():
@@ -363,8 +371,10 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
                     whole[sl] = piece
     for k, v in full.items():
         setattr(out, k, v.reshape(shape))
-    out.directions = {k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
-                      for k, v in directions.items()}
+    out.directions = {
+        k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
+        for k, v in directions.items()
+    }
     for k, v in inputs.items():
         if getattr(out, k) is not None:
             setattr(out, k, v)

@@ -23,16 +23,41 @@ x4 = (K_n . e3) / (c sin(theta3 - theta4)).
 
 import numpy as np
 
-from .common import (OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
-                     length_unit, masked,
-                     piecewise, without_float_warnings, triangle_angles)
+from .common import (
+    OK,
+    Motion,
+    acc_term,
+    as_input,
+    classify,
+    in_pieces,
+    jerk_term,
+    length_unit,
+    masked,
+    piecewise,
+    triangle_angles,
+    without_float_warnings,
+)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
 @without_float_warnings
-def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-          circuit="open", order=3):
+def solve(
+    a,
+    b,
+    c,
+    d,
+    f,
+    lam,
+    phi,
+    theta2,
+    omega2,
+    alpha2=0.0,
+    jerk2=0.0,
+    theta1=0.0,
+    circuit="open",
+    order=3,
+):
     """Geared fivebar kinematics from position to jerk.
 
     Parameters
@@ -61,16 +86,21 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
-    unit = length_unit(a, b, c, d, f)      # scale-free: lengths near 1, exactly
+    unit = length_unit(a, b, c, d, f)  # scale-free: lengths near 1, exactly
     a, b, c, d, f = a / unit, b / unit, c / unit, d / unit, f / unit
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
-        return in_pieces(lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit,
-                                               order), theta2, omega2, alpha2, jerk2)
+        return in_pieces(
+            lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit, order),
+            theta2,
+            omega2,
+            alpha2,
+            jerk2,
+        )
     t2 = theta2 - theta1
     t5 = lam * t2 + phi
     cos2, sin2 = np.cos(t2), np.sin(t2)
     cos5, sin5 = np.cos(t5), np.sin(t5)
-    rx = f + d * cos5 - a * cos2   # r = C - A
+    rx = f + d * cos5 - a * cos2  # r = C - A
     ry = d * sin5 - a * sin2
     s = np.hypot(rx, ry)
     span = a + b + c + d + f
@@ -87,8 +117,17 @@ def solve(a, b, c, d, f, lam, phi, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
-    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, theta5=t5 + theta1,
-                 status=status, condition=condition, roundoff=roundoff, circuit=circuit)
+    out = Motion(
+        order=order,
+        theta2=theta2,
+        theta3=theta3,
+        theta4=theta4,
+        theta5=t5 + theta1,
+        status=status,
+        condition=condition,
+        roundoff=roundoff,
+        circuit=circuit,
+    )
     # cos and sin of each link in the ground frame, for the points of the links
     out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4), "5": (cos5, sin5)}
     if order < 1:

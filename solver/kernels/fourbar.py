@@ -59,9 +59,21 @@ import threading
 import numpy as np
 
 from . import common
-from .common import (EPS, MAX_ROUNDOFF, OK, ROUNDOFF_GAIN, SINGULAR, Motion, as_input,
-                     classify, length_unit, masked, pieces, same_shapes,
-                     without_float_warnings)
+from .common import (
+    EPS,
+    MAX_ROUNDOFF,
+    OK,
+    ROUNDOFF_GAIN,
+    SINGULAR,
+    Motion,
+    as_input,
+    classify,
+    length_unit,
+    masked,
+    pieces,
+    same_shapes,
+    without_float_warnings,
+)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
@@ -84,13 +96,13 @@ def position(a, b, c, d, cos2, sin2, sigma):
     toggle position itself.
     """
     scalar = np.ndim(cos2) == 0
-    rx = d - a * cos2            # r = O4 - A
+    rx = d - a * cos2  # r = O4 - A
     ry = -a * sin2
     ss = rx * rx + ry * ry
     s = np.sqrt(ss)
     bmc, bpc = b - c, b + c
     f2, f3, f4 = s + bmc, s - bmc, bpc - s
-    f23 = s - abs(bmc)           # = min(f2, f3)
+    f23 = s - abs(bmc)  # = min(f2, f3)
     prod = (s + bpc) * f2 * f3 * f4
     tol = 2.0 * EPS * (a + b + c + d)
     if scalar:
@@ -99,7 +111,7 @@ def position(a, b, c, d, cos2, sin2, sigma):
             prod = 0.0
     else:
         gap = np.minimum(f23, f4)
-        if not gap.min(initial=np.inf) > 0.0:   # a limit position, or past one
+        if not gap.min(initial=np.inf) > 0.0:  # a limit position, or past one
             prod = np.where((gap <= 0.0) & (gap > -tol), 0.0, prod)
     area4 = np.sqrt(prod)
     k = b * b - c * c
@@ -120,13 +132,18 @@ def _coefficients(a, omega2, alpha2, jerk2):
     """The crank's terms of K_1..K_3 (floats, or arrays for array inputs): a omega2,
     -a omega2, -a omega2^2, a alpha2, -3 a omega2 alpha2 and a (jerk2 - omega2^3)."""
     mk = -a * omega2
-    return (a * omega2, mk, mk * omega2, a * alpha2, -3.0 * a * omega2 * alpha2,
-            a * (jerk2 - omega2 * omega2 * omega2))
+    return (
+        a * omega2,
+        mk,
+        mk * omega2,
+        a * alpha2,
+        -3.0 * a * omega2 * alpha2,
+        a * (jerk2 - omega2 * omega2 * omega2),
+    )
 
 
 @without_float_warnings
-def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-          circuit="open", order=3):
+def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
     """Fourbar kinematics from position to jerk.
 
     Parameters
@@ -163,12 +180,27 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     sigma = CIRCUITS[circuit]
     theta2 = as_input(theta2)
     order = min(order, 3)
-    unit = length_unit(a, b, c, d)      # scale-free: lengths near 1, exactly
+    unit = length_unit(a, b, c, d)  # scale-free: lengths near 1, exactly
     a, b, c, d = a / unit, b / unit, c / unit, d / unit
-    if (type(theta2) is not float and theta2.size >= MIN_IN_PLACE
-            and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))):
-        return _solve_in_place(float(a), float(b), float(c), float(d), theta2, omega2, alpha2,
-                               jerk2, float(theta1), sigma, circuit, order)
+    if (
+        type(theta2) is not float
+        and theta2.size >= MIN_IN_PLACE
+        and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))
+    ):
+        return _solve_in_place(
+            float(a),
+            float(b),
+            float(c),
+            float(d),
+            theta2,
+            omega2,
+            alpha2,
+            jerk2,
+            float(theta1),
+            sigma,
+            circuit,
+            order,
+        )
     turned = np.ndim(theta1) > 0 or theta1 != 0.0
     t2 = theta2 - theta1 if turned else theta2
     cos2, sin2 = np.cos(t2), np.sin(t2)
@@ -179,14 +211,22 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     theta4 = np.arctan2(s4, c4)
     if turned:
         theta3, theta4 = theta3 + theta1, theta4 + theta1
-    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, status=status,
-                 condition=condition, roundoff=roundoff, circuit=circuit)
+    out = Motion(
+        order=order,
+        theta2=theta2,
+        theta3=theta3,
+        theta4=theta4,
+        status=status,
+        condition=condition,
+        roundoff=roundoff,
+        circuit=circuit,
+    )
     # cos and sin of each link in the ground frame, for the points of the links
     out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
     cond = masked(status != OK, condition)
-    bS = cond * (-sigma * b)     # b sin(theta3 - theta4)
+    bS = cond * (-sigma * b)  # b sin(theta3 - theta4)
     cS = cond * (-sigma * c)
     k, mk, n, t, R2, I2 = _coefficients(a, omega2, alpha2, jerk2)
     # order 1: K = j a omega2 e2
@@ -220,8 +260,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
     return out
 
 
-def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circuit,
-                    order):
+def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, circuit, order):
     """:func:`solve` over an array of positions, piece by piece, in place.
 
     The same operations as :func:`solve` and :func:`position` in the same
@@ -234,13 +273,23 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
     varying = any(np.ndim(x) for x in motion)
     if not varying:
         coef = _coefficients(a, *motion)
-    names = ["theta3", "theta4", "cos2", "sin2", "c3", "s3", "c4", "s4", "condition",
-             "roundoff"] + ["omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4"][:2 * order]
+    names = [
+        "theta3",
+        "theta4",
+        "cos2",
+        "sin2",
+        "c3",
+        "s3",
+        "c4",
+        "s4",
+        "condition",
+        "roundoff",
+    ] + ["omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4"][: 2 * order]
     res = {k: np.empty(n) for k in names}
     status = np.empty(n, dtype=np.int8)
     span = a + b + c + d
     tol = 2.0 * EPS * span
-    gain = ROUNDOFF_GAIN * EPS * span     # as in classify
+    gain = ROUNDOFF_GAIN * EPS * span  # as in classify
     bmc, bpc = b - c, b + c
     abs_bmc = abs(bmc)
     bbcc = b * b - c * c
@@ -251,7 +300,7 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
     plus, minus = (np.add, np.subtract) if sigma > 0 else (np.subtract, np.add)
     work = _work()
     for sl in pieces(n):
-        rx, ry, ss, s, f2, f3, f4, gap, P, Q, inv3, inv4, t = work[:, :sl.stop - sl.start]
+        rx, ry, ss, s, f2, f3, f4, gap, P, Q, inv3, inv4, t = work[:, : sl.stop - sl.start]
         cos2, sin2 = res["cos2"][sl], res["sin2"][sl]
         c3, s3, c4, s4 = res["c3"][sl], res["s3"][sl], res["c4"][sl], res["s4"][sl]
         condition, roundoff = res["condition"][sl], res["roundoff"][sl]
@@ -279,7 +328,7 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
         prod *= f3
         prod *= f4
         gmin = gap.min()
-        if not gmin > 0.0:   # a limit position, or past one, in this piece
+        if not gmin > 0.0:  # a limit position, or past one, in this piece
             np.copyto(prod, 0.0, where=(gap <= 0.0) & (gap > -tol))
         area4 = np.sqrt(prod, out=prod)
         np.divide(area4, two_bc, out=condition)
@@ -376,11 +425,21 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
         np.multiply(p4, w4, out=t)
         j4 += t
     res = {k: v.reshape(shape) for k, v in res.items()}
-    out = Motion(order=order, theta2=theta2, theta3=res["theta3"], theta4=res["theta4"],
-                 status=status.reshape(shape), condition=res["condition"],
-                 roundoff=res["roundoff"], circuit=circuit)
-    out.directions = {"2": (res["cos2"], res["sin2"]), "3": (res["c3"], res["s3"]),
-                 "4": (res["c4"], res["s4"])}
+    out = Motion(
+        order=order,
+        theta2=theta2,
+        theta3=res["theta3"],
+        theta4=res["theta4"],
+        status=status.reshape(shape),
+        condition=res["condition"],
+        roundoff=res["roundoff"],
+        circuit=circuit,
+    )
+    out.directions = {
+        "2": (res["cos2"], res["sin2"]),
+        "3": (res["c3"], res["s3"]),
+        "4": (res["c4"], res["s4"]),
+    }
     if order >= 1:
         out.omega2, out.omega3, out.omega4 = omega2, res["omega3"], res["omega4"]
     if order >= 2:

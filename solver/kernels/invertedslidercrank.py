@@ -30,16 +30,30 @@ perpendicular from the slide line to O4's circle: a limit position).
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
-                     length_unit, masked,
-                     piecewise, scale_lengths, without_float_warnings, where)
+from .common import (
+    EPS,
+    OK,
+    Motion,
+    acc_term,
+    as_input,
+    classify,
+    in_pieces,
+    jerk_term,
+    length_unit,
+    masked,
+    piecewise,
+    scale_lengths,
+    where,
+    without_float_warnings,
+)
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
 @without_float_warnings
-def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-          circuit="open", order=3):
+def solve(
+    a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3
+):
     """Inverted slider-crank kinematics from position to jerk.
 
     Parameters
@@ -65,10 +79,11 @@ def solve(a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
         (see :func:`accelab.solver.kernels.fourbar.solve`).
     """
-    unit = length_unit(a, c, d)      # scale-free: lengths near 1, exactly
-    out = _solve(a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit,
-                 order)
-    return scale_lengths(out, ('b', 'b_dot', 'b_ddot', 'b_dddot'), unit)
+    unit = length_unit(a, c, d)  # scale-free: lengths near 1, exactly
+    out = _solve(
+        a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
+    )
+    return scale_lengths(out, ("b", "b_dot", "b_ddot", "b_dddot"), unit)
 
 
 def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -77,8 +92,13 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     theta2 = as_input(theta2)
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
-        return in_pieces(lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
-                         theta2, omega2, alpha2, jerk2)
+        return in_pieces(
+            lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
+            theta2,
+            omega2,
+            alpha2,
+            jerk2,
+        )
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     cg, sg = np.cos(gamma), np.sin(gamma)
@@ -103,8 +123,18 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
-    out = Motion(order=order, theta2=theta2, theta3=theta3, theta4=theta4, b=b, status=status,
-                 condition=condition, roundoff=roundoff, circuit=circuit, gamma=gamma)
+    out = Motion(
+        order=order,
+        theta2=theta2,
+        theta3=theta3,
+        theta4=theta4,
+        b=b,
+        status=status,
+        condition=condition,
+        roundoff=roundoff,
+        circuit=circuit,
+        gamma=gamma,
+    )
     # cos and sin of each link in the ground frame, for the points of the links
     out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:

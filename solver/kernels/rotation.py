@@ -28,8 +28,15 @@ def rotating_point(p, theta, omega, alpha=0.0, jerk=0.0):
     je = 1j * e
     A_t = p * alpha * je
     A_n = -p * omega * omega * e
-    return Motion(_all_ok(A_t), R=p * e, V=p * omega * je, A_t=A_t, A_n=A_n, A=A_t + A_n,
-                  J=p * (-3.0 * omega * alpha + 1j * (jerk - omega * omega * omega)) * e)
+    return Motion(
+        _all_ok(A_t),
+        R=p * e,
+        V=p * omega * je,
+        A_t=A_t,
+        A_n=A_n,
+        A=A_t + A_n,
+        J=p * (-3.0 * omega * alpha + 1j * (jerk - omega * omega * omega)) * e,
+    )
 
 
 def _all_ok(x):
@@ -62,8 +69,22 @@ def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.
     A_coriolis = 2.0 * p_dot * omega * je
     A_slip = p_ddot * e
     w2 = omega * omega
-    J = (p_dddot - 3.0 * p_dot * w2 - 3.0 * p * omega * alpha
-         + 1j * (3.0 * p_ddot * omega + 3.0 * p_dot * alpha + p * jerk - p * w2 * omega)) * e
-    return Motion(_all_ok(A_t), R=p * e, V_t=p * omega * je, V_slip=p_dot * e,
-                  V=(p_dot + 1j * p * omega) * e, A_t=A_t, A_n=A_n, A_coriolis=A_coriolis,
-                  A_slip=A_slip, A=A_t + A_n + A_coriolis + A_slip, J=J)
+    J = (
+        p_dddot
+        - 3.0 * p_dot * w2
+        - 3.0 * p * omega * alpha
+        + 1j * (3.0 * p_ddot * omega + 3.0 * p_dot * alpha + p * jerk - p * w2 * omega)
+    ) * e
+    return Motion(
+        _all_ok(A_t),
+        R=p * e,
+        V_t=p * omega * je,
+        V_slip=p_dot * e,
+        V=(p_dot + 1j * p * omega) * e,
+        A_t=A_t,
+        A_n=A_n,
+        A_coriolis=A_coriolis,
+        A_slip=A_slip,
+        A=A_t + A_n + A_coriolis + A_slip,
+        J=J,
+    )

@@ -20,16 +20,28 @@ singular where cos theta3 = 0: the coupler stands perpendicular to the slide.
 
 import numpy as np
 
-from .common import (EPS, OK, Motion, acc_term, as_input, classify, in_pieces, jerk_term,
-                     length_unit, masked,
-                     piecewise, scale_lengths, without_float_warnings, where)
+from .common import (
+    EPS,
+    OK,
+    Motion,
+    acc_term,
+    as_input,
+    classify,
+    in_pieces,
+    jerk_term,
+    length_unit,
+    masked,
+    piecewise,
+    scale_lengths,
+    where,
+    without_float_warnings,
+)
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
 
 @without_float_warnings
-def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
-          circuit="open", order=3):
+def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
     """Slider-crank kinematics from position to jerk.
 
     Parameters
@@ -55,10 +67,11 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0,
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
         ``roundoff`` (see :func:`accelab.solver.kernels.fourbar.solve`).
     """
-    unit = length_unit(a, b, c)      # scale-free: lengths near 1, exactly
-    out = _solve(a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit,
-                 order)
-    return scale_lengths(out, ('d', 'd_dot', 'd_ddot', 'd_dddot'), unit)
+    unit = length_unit(a, b, c)  # scale-free: lengths near 1, exactly
+    out = _solve(
+        a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit, order
+    )
+    return scale_lengths(out, ("d", "d_dot", "d_ddot", "d_dddot"), unit)
 
 
 def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -67,8 +80,13 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     theta2 = as_input(theta2)
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
-        return in_pieces(lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
-                         theta2, omega2, alpha2, jerk2)
+        return in_pieces(
+            lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
+            theta2,
+            omega2,
+            alpha2,
+            jerk2,
+        )
     t2 = theta2 - theta1
     cos2, sin2 = np.cos(t2), np.sin(t2)
     y = a * sin2 - c
@@ -83,8 +101,16 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
-    out = Motion(order=order, theta2=theta2, theta3=theta3, d=d, status=status, condition=condition,
-                 roundoff=roundoff, circuit=circuit)
+    out = Motion(
+        order=order,
+        theta2=theta2,
+        theta3=theta3,
+        d=d,
+        status=status,
+        condition=condition,
+        roundoff=roundoff,
+        circuit=circuit,
+    )
     # cos and sin of each link in the ground frame, for the points of the links
     out.directions = {"2": (cos2, sin2), "3": (c3, s3)}
     if order < 1:

@@ -5,11 +5,11 @@ Each class converts its geometry to SI once, calls the unit-free kernel in
 """
 
 from .base import Mechanism, Result
-from .fourbar import FourBar
-from .slidercrank import SliderCrank
-from .invertedslidercrank import InvertedSliderCrank
 from .fivebar import GearedFiveBar
+from .fourbar import FourBar
+from .invertedslidercrank import InvertedSliderCrank
 from .rotation import RotatingPoint, SlottedLink
+from .slidercrank import SliderCrank
 
 MECHANISMS = {
     "fourbar": FourBar,
@@ -19,5 +19,14 @@ MECHANISMS = {
     "rotation": RotatingPoint,
 }
 
-__all__ = ["Mechanism", "Result", "FourBar", "SliderCrank", "InvertedSliderCrank",
-           "GearedFiveBar", "RotatingPoint", "SlottedLink", "MECHANISMS"]
+__all__ = [
+    "Mechanism",
+    "Result",
+    "FourBar",
+    "SliderCrank",
+    "InvertedSliderCrank",
+    "GearedFiveBar",
+    "RotatingPoint",
+    "SlottedLink",
+    "MECHANISMS",
+]

@@ -9,24 +9,38 @@ import math
 import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
-from ..kernels import MAX_ROUNDOFF, NOT_ASSEMBLABLE, OK
-from ..kernels import points
+from ..kernels import MAX_ROUNDOFF, NOT_ASSEMBLABLE, OK, points
 from ..parameters import MOTION, PARAMETERS
 from ..results import Kinematics
 from ..units import SI_UNITS, parse_quantity, quantity, show, to_si
 
 #: name prefixes -> kind of quantity, longest prefix first
-_KINDS = [("theta", "angle"), ("gamma", "angle"), ("delta", "angle"), ("phi", "angle"),
-          ("omega", "angular_velocity"), ("alpha", "angular_acceleration"),
-          ("jerk", "angular_jerk"), ("R_", "length"), ("V_", "velocity"),
-          ("A_", "acceleration"), ("J_", "jerk")]
-_SLIDER_KINDS = {"": "length", "_dot": "velocity", "_ddot": "acceleration",
-                 "_dddot": "jerk"}
+_KINDS = [
+    ("theta", "angle"),
+    ("gamma", "angle"),
+    ("delta", "angle"),
+    ("phi", "angle"),
+    ("omega", "angular_velocity"),
+    ("alpha", "angular_acceleration"),
+    ("jerk", "angular_jerk"),
+    ("R_", "length"),
+    ("V_", "velocity"),
+    ("A_", "acceleration"),
+    ("J_", "jerk"),
+]
+_SLIDER_KINDS = {"": "length", "_dot": "velocity", "_ddot": "acceleration", "_dddot": "jerk"}
 _VECTOR_ORDER = {"R": 0, "V": 1, "A": 2, "J": 3}
 _ANGLE_ORDER = {"theta": 0, "omega": 1, "alpha": 2, "jerk": 3}
 _SUFFIX_ORDER = {"_dddot": 3, "_ddot": 2, "_dot": 1}
-_EXACT = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk", "p": "length",
-          "lam": "dimensionless", "condition": "dimensionless"}
+_EXACT = {
+    "R": "length",
+    "V": "velocity",
+    "A": "acceleration",
+    "J": "jerk",
+    "p": "length",
+    "lam": "dimensionless",
+    "condition": "dimensionless",
+}
 
 
 @functools.lru_cache(maxsize=1024)
@@ -38,8 +52,8 @@ def kind_of(name):
         if name.startswith(prefix):
             return kind
     base, _, _ = name.partition("_")
-    if len(base) == 1 and name[len(base):] in _SLIDER_KINDS:  # d, d_dot, b_ddot, p ...
-        return _SLIDER_KINDS[name[len(base):]]
+    if len(base) == 1 and name[len(base) :] in _SLIDER_KINDS:  # d, d_dot, b_ddot, p ...
+        return _SLIDER_KINDS[name[len(base) :]]
     raise AttributeError(name)
 
 
@@ -60,10 +74,12 @@ def order_of(name):
 
 def check_order(order):
     """``order`` as an int 0..3 (position .. jerk), or InvalidInput."""
-    if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or \
-            not 0 <= order <= 3:
-        raise InvalidInput(f"order must be 0 (position), 1 (velocity), 2 (acceleration) or 3 "
-                           f"(jerk), got {show(order)}", "order")
+    if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or not 0 <= order <= 3:
+        raise InvalidInput(
+            f"order must be 0 (position), 1 (velocity), 2 (acceleration) or 3 "
+            f"(jerk), got {show(order)}",
+            "order",
+        )
     return int(order)
 
 
@@ -115,7 +131,7 @@ class Result(Kinematics):
         if name in cache:
             return cache[name]
         value = self._motion.get(name)
-        if value is not None and name in self._verified:    # checked when solved
+        if value is not None and name in self._verified:  # checked when solved
             cache[name] = value
             return value
         if value is None:
@@ -153,7 +169,9 @@ class Result(Kinematics):
         raise InvalidInput(
             f"{name} overflows float64: the inputs are too large for its range (up to about "
             f"1.8e308 in SI units). Give smaller speeds or lengths (the angles do not depend "
-            f"on the scale of the lengths), or solve to a lower order", name)
+            f"on the scale of the lengths), or solve to a lower order",
+            name,
+        )
 
     def kind(self, name):
         return kind_of(name)
@@ -171,7 +189,8 @@ class Result(Kinematics):
         if order_of(name) > self._motion.order and self._names(name):
             raise AttributeError(
                 f"{name} was not computed: this result was solved with order="
-                f"{self._motion.order}; solve with order={order_of(name)} or more to read it")
+                f"{self._motion.order}; solve with order={order_of(name)} or more to read it"
+            )
         value = self._mech._extra(self, name)
         if value is not None:
             return value
@@ -186,8 +205,8 @@ class Result(Kinematics):
                 return self._point(rest, order)
             # a relative vector X-Y named XY (e.g. BA)
             for x in pts:
-                if rest.startswith(x) and rest[len(x):] in pts:
-                    y = rest[len(x):]
+                if rest.startswith(x) and rest[len(x) :] in pts:
+                    y = rest[len(x) :]
                     if comp is not None:
                         if order != 2:
                             break
@@ -195,8 +214,10 @@ class Result(Kinematics):
                     return self._point(x, order) - self._point(y, order)
             if comp is not None and rest in pts and order == 2:
                 return self._component(rest, pts[rest][0], comp)
-        raise AttributeError(f"{type(self._mech).__name__} results have no output {name!r}; "
-                             f"available: {', '.join(self.outputs())}")
+        raise AttributeError(
+            f"{type(self._mech).__name__} results have no output {name!r}; "
+            f"available: {', '.join(self.outputs())}"
+        )
 
     def _names(self, name):
         """Whether ``name`` is an output this mechanism would give at some order."""
@@ -228,7 +249,7 @@ class Result(Kinematics):
         key = ("e", theta_key, offset)
         pair = self._cache.get(key)
         if pair is None:
-            known = self._motion.directions.get(theta_key[len("theta"):])
+            known = self._motion.directions.get(theta_key[len("theta") :])
             if known is not None and offset == 0.0:
                 e = points.from_components(*known)
                 theta1 = self._mech._si.get("theta1", 0.0)
@@ -240,7 +261,7 @@ class Result(Kinematics):
         return pair
 
     def _relative(self, length, theta_key, offset, order):
-        n = theta_key[len("theta"):]
+        n = theta_key[len("theta") :]
         m = self._motion
         theta = m.get(theta_key)
         e, je = self._unit(theta_key, offset)
@@ -249,10 +270,12 @@ class Result(Kinematics):
         if order == 1:
             return points.relative_velocity(length, theta, m.get("omega" + n), offset, e, je)
         if order == 2:
-            return points.relative_acceleration(length, theta, m.get("omega" + n),
-                                                m.get("alpha" + n), offset, e, je)
-        return points.relative_jerk(length, theta, m.get("omega" + n), m.get("alpha" + n),
-                                    m.get("jerk" + n), offset, e, je)
+            return points.relative_acceleration(
+                length, theta, m.get("omega" + n), m.get("alpha" + n), offset, e, je
+            )
+        return points.relative_jerk(
+            length, theta, m.get("omega" + n), m.get("alpha" + n), m.get("jerk" + n), offset, e, je
+        )
 
     def _component(self, x, y, comp):
         rel = self._mech._relative.get(x + y)
@@ -262,13 +285,20 @@ class Result(Kinematics):
         else:
             base, length, theta_key, offset = self._pts[x]
             if base != y or callable(length):
-                raise AttributeError(f"no tangential/normal split of A_{x}{y}: {x} and {y} "
-                                     f"are not two points of one rigid link")
-        n = theta_key[len("theta"):]
+                raise AttributeError(
+                    f"no tangential/normal split of A_{x}{y}: {x} and {y} "
+                    f"are not two points of one rigid link"
+                )
+        n = theta_key[len("theta") :]
         m = self._motion
-        t, nn = points.relative_acceleration_parts(length, m.get(theta_key), m.get("omega" + n),
-                                                  m.get("alpha" + n), offset,
-                                                  *self._unit(theta_key, offset))
+        t, nn = points.relative_acceleration_parts(
+            length,
+            m.get(theta_key),
+            m.get("omega" + n),
+            m.get("alpha" + n),
+            offset,
+            *self._unit(theta_key, offset),
+        )
         return t if comp == "t" else nn
 
     def point(self, link, p, delta=0, base=None):
@@ -297,12 +327,18 @@ class Result(Kinematics):
         """
         bases = self._mech._link_bases
         if isinstance(link, bool) or link not in bases:
-            raise InvalidInput(f"{type(self._mech).__name__} has no rotating link {show(link)}; "
-                               f"use one of {sorted(bases)}", "link")
+            raise InvalidInput(
+                f"{type(self._mech).__name__} has no rotating link {show(link)}; "
+                f"use one of {sorted(bases)}",
+                "link",
+            )
         pins = sorted(set(self._pts) | set(self._mech._pivots))
         if base is not None and (not isinstance(base, str) or base not in pins):
-            raise InvalidInput(f"base must be a pin of the {type(self._mech).__name__}: one of "
-                               f"{', '.join(pins)} (got {show(base)})", "base")
+            raise InvalidInput(
+                f"base must be a pin of the {type(self._mech).__name__}: one of "
+                f"{', '.join(pins)} (got {show(base)})",
+                "base",
+            )
         base = base or bases[link]
         p_si = to_si(p, "p", "length")
         delta_si = to_si(delta, "delta", "angle")
@@ -310,7 +346,7 @@ class Result(Kinematics):
             raise InvalidInput("p and delta of a point must be single values", "p")
         key = f"theta{link}"
         parts = {}
-        for order, letter in enumerate("RVAJ"[:self._motion.order + 1]):
+        for order, letter in enumerate("RVAJ"[: self._motion.order + 1]):
             rel = self._relative(p_si, key, delta_si, order)
             if base in self._pts:
                 rel = rel + self._point(base, order)
@@ -321,7 +357,8 @@ class Result(Kinematics):
         m = self._motion
         if m.order >= 2:
             parts["A_t"], parts["A_n"] = points.relative_acceleration_parts(
-                p_si, m.get(key), m.get("omega" + n), m.get("alpha" + n), delta_si)
+                p_si, m.get(key), m.get("omega" + n), m.get("alpha" + n), delta_si
+            )
         if self._scalar:
             parts = {k: v[()] if isinstance(v, np.ndarray) else v for k, v in parts.items()}
         return PointMotion(parts)
@@ -369,8 +406,14 @@ class PointMotion:
     """Position, velocity, acceleration and jerk of one point, as Quantities
     (``R``, ``V``, ``A``, ``J``, and ``A_t``, ``A_n`` about its base pin)."""
 
-    _KINDS = {"R": "length", "V": "velocity", "A": "acceleration", "A_t": "acceleration",
-              "A_n": "acceleration", "J": "jerk"}
+    _KINDS = {
+        "R": "length",
+        "V": "velocity",
+        "A": "acceleration",
+        "A_t": "acceleration",
+        "A_n": "acceleration",
+        "J": "jerk",
+    }
 
     def __init__(self, parts):
         self._si = parts
@@ -384,13 +427,18 @@ class PointMotion:
         if name.startswith("_") or name not in self._KINDS:
             raise AttributeError(name)
         if name not in self._si:
-            raise AttributeError(f"{name} of the point was not computed at the order this "
-                                 f"result was solved with; solve with a higher order")
+            raise AttributeError(
+                f"{name} of the point was not computed at the order this "
+                f"result was solved with; solve with a higher order"
+            )
         return quantity(self._si[name], self._KINDS[name])
 
     def __repr__(self):
-        return "<PointMotion " + ", ".join(f"{k}={getattr(self, k):.5g~P}"
-                                            for k in self._KINDS if k in self._si) + ">"
+        return (
+            "<PointMotion "
+            + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._KINDS if k in self._si)
+            + ">"
+        )
 
 
 class Mechanism:
@@ -411,23 +459,29 @@ class Mechanism:
     _pivots = ("O2",)
     _outputs = ()
     #: the real outputs a kernel computes (links' angles and derivatives, sliders)
-    _solved = frozenset([f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
-                        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")])
+    _solved = frozenset(
+        [f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
+        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")]
+    )
 
     def __init__(self, **geometry):
         decl = self.declaration()
         names = [p.name for p in decl.geometry]
         unknown = sorted(set(geometry) - set(names))
         if unknown:
-            raise InvalidInput(f"{type(self).__name__} has no parameter "
-                               f"{', '.join(map(str, unknown))}; it takes {', '.join(names)}",
-                               unknown[0])
+            raise InvalidInput(
+                f"{type(self).__name__} has no parameter "
+                f"{', '.join(map(str, unknown))}; it takes {', '.join(names)}",
+                unknown[0],
+            )
         si, units = {}, {}
         for p in decl.geometry:
             if p.name not in geometry:
                 if p.required:
-                    raise InvalidInput(f"{type(self).__name__} needs {p.name} ({p.meaning}), "
-                                       f"e.g. {p.name}='2 in'", p.name)
+                    raise InvalidInput(
+                        f"{type(self).__name__} needs {p.name} ({p.meaning}), e.g. {p.name}='2 in'",
+                        p.name,
+                    )
                 si[p.name] = p.default
                 continue
             q = parse_quantity(geometry[p.name], p.kind, p.name)
@@ -436,7 +490,9 @@ class Mechanism:
                 raise InvalidInput(
                     f"{p.name} must be a single value: a {type(self).__name__} object is one "
                     f"linkage (got an array). Sweep theta2 (an array) on one linkage, or make "
-                    f"one object per geometry", p.name)
+                    f"one object per geometry",
+                    p.name,
+                )
             si[p.name] = float(value)
             units[p.name] = getattr(q, "units", None)
         self._init(si, geometry, units)
@@ -452,8 +508,10 @@ class Mechanism:
         format's path: no second conversion). ``given`` holds the user's own
         values and ``units`` the units they were written in, for messages."""
         obj = cls.__new__(cls)
-        si = {p.name: float(geometry[p.name]) if p.name in geometry else p.default
-              for p in cls.declaration().geometry}
+        si = {
+            p.name: float(geometry[p.name]) if p.name in geometry else p.default
+            for p in cls.declaration().geometry
+        }
         missing = [p.name for p in cls.declaration().geometry if si[p.name] is None]
         if missing:
             raise InvalidInput(f"{cls.__name__} needs {missing[0]}", missing[0])
@@ -574,8 +632,10 @@ class Mechanism:
         raise NotImplementedError
 
     def _motion_inputs(self, theta2, omega2, alpha2, jerk2):
-        inputs = {p.name: to_si(v, p.name, p.kind)
-                  for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))}
+        inputs = {
+            p.name: to_si(v, p.name, p.kind)
+            for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))
+        }
         arrays = {k: v.shape for k, v in inputs.items() if type(v) is not float}
         if not arrays or len(arrays) == 1 and "theta2" in arrays:  # the common cases
             return inputs
@@ -583,10 +643,11 @@ class Mechanism:
         try:
             shape = np.broadcast_shapes(*shapes.values())
         except ValueError:
-            raise InvalidInput("theta2, omega2, alpha2 and jerk2 must be scalars or arrays of "
-                               "one shape (got shapes " + ", ".join(
-                                   f"{k} {v}" for k, v in shapes.items()) + ")",
-                               "omega2") from None
+            raise InvalidInput(
+                "theta2, omega2, alpha2 and jerk2 must be scalars or arrays of "
+                "one shape (got shapes " + ", ".join(f"{k} {v}" for k, v in shapes.items()) + ")",
+                "omega2",
+            ) from None
         if shape != shapes["theta2"]:  # the sweep runs over theta2's shape
             inputs["theta2"] = np.broadcast_to(inputs["theta2"], shape)
         return inputs
@@ -598,10 +659,15 @@ class Mechanism:
             return circuits[0] if circuits else None
         if not isinstance(circuit, str) or circuit not in circuits:
             if not circuits:
-                raise InvalidInput(f"a {type(self).__name__} has one assembly: give no circuit "
-                                   f"(got {show(circuit)})", "circuit")
-            raise InvalidInput(f"circuit must be one of {', '.join(map(repr, circuits))} "
-                               f"(got {show(circuit)})", "circuit")
+                raise InvalidInput(
+                    f"a {type(self).__name__} has one assembly: give no circuit "
+                    f"(got {show(circuit)})",
+                    "circuit",
+                )
+            raise InvalidInput(
+                f"circuit must be one of {', '.join(map(repr, circuits))} (got {show(circuit)})",
+                "circuit",
+            )
         return circuit
 
     def _finish(self, motion, inputs, raise_errors=True, pts=None):
@@ -613,27 +679,37 @@ class Mechanism:
         key = (type(self), motion.order)
         top = _TOPS.get(key)
         if top is None:
-            top = _TOPS[key] = sorted(n for n in self._solved if order_of(n) == motion.order
-                                      and getattr(motion, n) is not None)
+            top = _TOPS[key] = sorted(
+                n
+                for n in self._solved
+                if order_of(n) == motion.order and getattr(motion, n) is not None
+            )
         result._verify(top)
         return result
 
     def _raise(self, motion, inputs):
         where = f"theta2 = {_fmt_angle(inputs['theta2'])}"
         if motion.status == NOT_ASSEMBLABLE:
-            raise NotAssemblable(f"{type(self).__name__} cannot be assembled at {where}: "
-                                 f"{self._not_assemblable_reason(motion, inputs)}")
+            raise NotAssemblable(
+                f"{type(self).__name__} cannot be assembled at {where}: "
+                f"{self._not_assemblable_reason(motion, inputs)}"
+            )
         roundoff = float(motion.roundoff) if motion.roundoff is not None else math.inf
-        cost = ("exactly there" if not np.isfinite(roundoff) else
-                f"round-off would spoil about {roundoff:.1e} of each output, more than the "
-                f"{MAX_ROUNDOFF:g} the solver vouches for")
-        raise Singular(f"{type(self).__name__} is at (or within round-off of) a limit position "
-                       f"at {where}: {self._singular_reason()} (condition "
-                       f"{float(motion.condition):.2e}), so its velocity and acceleration "
-                       f"equations are singular or nearly so ({cost}). Move theta2 "
-                       f"away from the limit (about 1e-6 rad is enough), or pass an array of "
-                       f"theta2 to get a validity mask instead of this error.",
-                       condition=float(motion.condition))
+        cost = (
+            "exactly there"
+            if not np.isfinite(roundoff)
+            else f"round-off would spoil about {roundoff:.1e} of each output, more than the "
+            f"{MAX_ROUNDOFF:g} the solver vouches for"
+        )
+        raise Singular(
+            f"{type(self).__name__} is at (or within round-off of) a limit position "
+            f"at {where}: {self._singular_reason()} (condition "
+            f"{float(motion.condition):.2e}), so its velocity and acceleration "
+            f"equations are singular or nearly so ({cost}). Move theta2 "
+            f"away from the limit (about 1e-6 rad is enough), or pass an array of "
+            f"theta2 to get a validity mask instead of this error.",
+            condition=float(motion.condition),
+        )
 
     def _not_assemblable_reason(self, motion, inputs):
         return "the links cannot close the vector loop. Change theta2 or the link lengths."

@@ -29,27 +29,69 @@ class GearedFiveBar(Mechanism):
 
     name = "fivebar"
     _pivots = ("O2", "O5")
-    _points = {"A": ("O2", "a", "theta2", 0.0), "C": ("O5", "d", "theta5", 0.0),
-               "B": ("A", "b", "theta3", 0.0)}
+    _points = {
+        "A": ("O2", "a", "theta2", 0.0),
+        "C": ("O5", "d", "theta5", 0.0),
+        "B": ("A", "b", "theta3", 0.0),
+    }
     _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "C", 5: "O5"}
-    _outputs = ("theta3", "theta4", "theta5", "omega3", "omega4", "omega5", "alpha3", "alpha4",
-                "alpha5", "jerk3", "jerk4", "jerk5", "R_A", "R_B", "R_C", "V_A", "V_B", "V_C",
-                "A_A", "A_B", "A_C", "A_BA", "J_A", "J_B", "J_C")
+    _outputs = (
+        "theta3",
+        "theta4",
+        "theta5",
+        "omega3",
+        "omega4",
+        "omega5",
+        "alpha3",
+        "alpha4",
+        "alpha5",
+        "jerk3",
+        "jerk4",
+        "jerk5",
+        "R_A",
+        "R_B",
+        "R_C",
+        "V_A",
+        "V_B",
+        "V_C",
+        "A_A",
+        "A_B",
+        "A_C",
+        "A_BA",
+        "J_A",
+        "J_B",
+        "J_C",
+    )
 
     def _pivot(self, key):
         return self._f * np.exp(1j * self._theta1) if key == "O5" else 0j
 
     def _kernel(self, motion, circuit, order):
-        return kernel.solve(self._a, self._b, self._c, self._d, self._f, self._lam, self._phi,
-                            motion["theta2"], motion["omega2"], motion["alpha2"],
-                            motion["jerk2"], self._theta1, circuit, order)
+        return kernel.solve(
+            self._a,
+            self._b,
+            self._c,
+            self._d,
+            self._f,
+            self._lam,
+            self._phi,
+            motion["theta2"],
+            motion["omega2"],
+            motion["alpha2"],
+            motion["jerk2"],
+            self._theta1,
+            circuit,
+            order,
+        )
 
     def _not_assemblable_reason(self, motion, inputs):
-        return (f"the couplers b = {self._given_text('b')} and c = {self._given_text('c')} "
-                f"cannot span the "
-                f"distance between the crank pins A and C there (need |b - c| <= |C - A| <= "
-                f"b + c). Choose another theta2, phase phi or link lengths.")
+        return (
+            f"the couplers b = {self._given_text('b')} and c = {self._given_text('c')} "
+            f"cannot span the "
+            f"distance between the crank pins A and C there (need |b - c| <= |C - A| <= "
+            f"b + c). Choose another theta2, phase phi or link lengths."
+        )
 
     def _singular_reason(self):
         return "the two couplers (links 3 and 4) are collinear"

@@ -29,15 +29,31 @@ class FourBar(Mechanism):
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
-                "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
+    _outputs = (
+        "theta3",
+        "theta4",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+        "jerk3",
+        "jerk4",
+        "R_A",
+        "R_B",
+        "V_A",
+        "V_B",
+        "A_A",
+        "A_B",
+        "A_BA",
+        "J_A",
+        "J_B",
+    )
     _point_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
 
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open",
-              p=None, delta3=0, order=3):
+    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open", p=None, delta3=0, order=3):
         """Solve the fourbar at one or many crank angles.
 
         Parameters
@@ -70,8 +86,10 @@ class FourBar(Mechanism):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         point = {}
         if p is not None:
-            point = {"p": to_si(p, "p", "length", positive=True),
-                     "delta3": to_si(delta3, "delta3", "angle")}
+            point = {
+                "p": to_si(p, "p", "length", positive=True),
+                "delta3": to_si(delta3, "delta3", "angle"),
+            }
         return self.solve_si(inputs, circuit, order, **point)
 
     def solve_si(self, motion, circuit="open", order=3, p=None, delta3=0.0):
@@ -84,9 +102,19 @@ class FourBar(Mechanism):
         if p is not None:
             inputs.update(p=p, delta3=delta3)
             pts = dict(self._points, P=("A", p, "theta3", delta3))
-        m = kernel.solve(self._a, self._b, self._c, self._d, inputs["theta2"],
-                         inputs["omega2"], inputs["alpha2"], inputs["jerk2"],
-                         self._theta1, circuit, order)
+        m = kernel.solve(
+            self._a,
+            self._b,
+            self._c,
+            self._d,
+            inputs["theta2"],
+            inputs["omega2"],
+            inputs["alpha2"],
+            inputs["jerk2"],
+            self._theta1,
+            circuit,
+            order,
+        )
         return self._finish(m, inputs, pts=pts)
 
     def outputs(self, result):
@@ -97,22 +125,26 @@ class FourBar(Mechanism):
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._d - self._a * np.cos(t), self._a * np.sin(t)))
-        need = (f"the coupler (b = {self._given_text('b')}) and rocker (c = "
-                f"{self._given_text('c')}) must span the distance |A - O4| = {self._show(s)}, "
-                f"which needs |b - c| <= |A - O4| <= b + c")
+        need = (
+            f"the coupler (b = {self._given_text('b')}) and rocker (c = "
+            f"{self._given_text('c')}) must span the distance |A - O4| = {self._show(s)}, "
+            f"which needs |b - c| <= |A - O4| <= b + c"
+        )
         return need + ". " + self._crank_range_text()
 
     def _crank_range_text(self):
         """Where the crank can sit: |b - c| <= |A - O4| <= b + c as a range of theta2."""
         a, b, c, d = self._a, self._b, self._c, self._d
-        lower = (a * a + d * d - (b + c) ** 2) / (2 * a * d)   # cos(theta2) >= lower
-        upper = (a * a + d * d - (b - c) ** 2) / (2 * a * d)   # cos(theta2) <= upper
+        lower = (a * a + d * d - (b + c) ** 2) / (2 * a * d)  # cos(theta2) >= lower
+        upper = (a * a + d * d - (b - c) ** 2) / (2 * a * d)  # cos(theta2) <= upper
         if lower > 1 or upper < -1:
             return "These lengths never close the loop: change the link lengths."
         lo = np.degrees(np.arccos(min(1.0, upper)))
         hi = np.degrees(np.arccos(max(-1.0, lower)))
-        return (f"With these lengths theta2 - theta1 must lie within +/-({lo:.4g} to {hi:.4g}) "
-                f"deg; choose theta2 there or change the link lengths.")
+        return (
+            f"With these lengths theta2 - theta1 must lie within +/-({lo:.4g} to {hi:.4g}) "
+            f"deg; choose theta2 there or change the link lengths."
+        )
 
     def _singular_reason(self):
         return "the coupler and rocker (links 3 and 4) are collinear (a toggle position)"

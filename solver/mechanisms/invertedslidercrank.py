@@ -38,14 +38,40 @@ class InvertedSliderCrank(Mechanism):
     _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = ("theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4", "jerk3", "jerk4",
-                "b", "b_dot", "b_ddot", "b_dddot", "R_A", "R_B", "V_A", "V_B", "A_A", "A_B",
-                "A_BA", "A_coriolis", "A_slip", "A_A4", "J_A", "J_B")
+    _outputs = (
+        "theta3",
+        "theta4",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+        "jerk3",
+        "jerk4",
+        "b",
+        "b_dot",
+        "b_ddot",
+        "b_dddot",
+        "R_A",
+        "R_B",
+        "V_A",
+        "V_B",
+        "A_A",
+        "A_B",
+        "A_BA",
+        "A_coriolis",
+        "A_slip",
+        "A_A4",
+        "J_A",
+        "J_B",
+    )
 
     def _validate(self):
         if self._c < 0:
-            raise InvalidInput(f"c must be >= 0 (got {self._given_text('c')}): it is the length "
-                               f"O4B; turn the slide line with gamma instead", "c")
+            raise InvalidInput(
+                f"c must be >= 0 (got {self._given_text('c')}): it is the length "
+                f"O4B; turn the slide line with gamma instead",
+                "c",
+            )
 
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
@@ -64,17 +90,29 @@ class InvertedSliderCrank(Mechanism):
         return None
 
     def _kernel(self, motion, circuit, order):
-        return kernel.solve(self._a, self._c, self._d, self._gamma, motion["theta2"],
-                            motion["omega2"], motion["alpha2"], motion["jerk2"], self._theta1,
-                            circuit, order)
+        return kernel.solve(
+            self._a,
+            self._c,
+            self._d,
+            self._gamma,
+            motion["theta2"],
+            motion["omega2"],
+            motion["alpha2"],
+            motion["jerk2"],
+            self._theta1,
+            circuit,
+            order,
+        )
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1
         s = float(np.hypot(self._a * np.cos(t) - self._d, self._a * np.sin(t)))
         reach = self._c * abs(np.sin(self._gamma))
-        return (f"the slide line passes at least c |sin gamma| = {self._show(reach)} from O4, "
-                f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or reduce c or "
-                f"|sin gamma|.")
+        return (
+            f"the slide line passes at least c |sin gamma| = {self._show(reach)} from O4, "
+            f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or reduce c or "
+            f"|sin gamma|."
+        )
 
     def _singular_reason(self):
         return "the slide line is tangent to the crank pin's reach (b + c cos gamma = 0)"

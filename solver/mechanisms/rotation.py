@@ -21,8 +21,9 @@ class RotatingPoint(Mechanism):
     _outputs = ("R", "V", "A", "A_t", "A_n", "J")
 
     def _kernel(self, motion, circuit, order):
-        return kernel.rotating_point(self._p, motion["theta2"], motion["omega2"],
-                                     motion["alpha2"], motion["jerk2"])
+        return kernel.rotating_point(
+            self._p, motion["theta2"], motion["omega2"], motion["alpha2"], motion["jerk2"]
+        )
 
 
 class SlottedLink(Mechanism):
@@ -42,18 +43,24 @@ class SlottedLink(Mechanism):
     name = "slotted"
     _outputs = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
 
-    def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0,
-              jerk2=0):
+    def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0, jerk2=0):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         values = {"p": p, "p_dot": p_dot, "p_ddot": p_ddot, "p_dddot": p_dddot}
-        block = {q.name: to_si(values[q.name], q.name, q.kind)
-                 for q in self.declaration().point}
+        block = {q.name: to_si(values[q.name], q.name, q.kind) for q in self.declaration().point}
         return self.solve_si(inputs, **block)
 
     def solve_si(self, motion, p, p_dot, p_ddot=0.0, p_dddot=0.0):
         """:meth:`solve` from SI floats: the motion [rad, rad/s, ...] and the
         block's distance and rates [m, m/s, m/s^2, m/s^3]."""
         inputs = dict(motion, p=p, p_dot=p_dot, p_ddot=p_ddot, p_dddot=p_dddot)
-        m = kernel.slotted_link(motion["theta2"], motion["omega2"], motion["alpha2"],
-                                p, p_dot, p_ddot, p_dddot, motion["jerk2"])
+        m = kernel.slotted_link(
+            motion["theta2"],
+            motion["omega2"],
+            motion["alpha2"],
+            p,
+            p_dot,
+            p_ddot,
+            p_dddot,
+            motion["jerk2"],
+        )
         return self._finish(m, inputs)

@@ -32,8 +32,25 @@ class SliderCrank(Mechanism):
     name = "slidercrank"
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
-    _outputs = ("theta3", "omega3", "alpha3", "jerk3", "d", "d_dot", "d_ddot", "d_dddot",
-                "R_A", "R_B", "V_A", "V_B", "A_A", "A_B", "A_BA", "J_A", "J_B")
+    _outputs = (
+        "theta3",
+        "omega3",
+        "alpha3",
+        "jerk3",
+        "d",
+        "d_dot",
+        "d_ddot",
+        "d_dddot",
+        "R_A",
+        "R_B",
+        "V_A",
+        "V_B",
+        "A_A",
+        "A_B",
+        "A_BA",
+        "J_A",
+        "J_B",
+    )
 
     def _init(self, si, given, units):
         super()._init(si, given, units)
@@ -46,14 +63,26 @@ class SliderCrank(Mechanism):
         return result.si(("d_dot", "d_ddot", "d_dddot")[order - 1]) * axis
 
     def _kernel(self, motion, circuit, order):
-        return kernel.solve(self._a, self._b, self._c, motion["theta2"], motion["omega2"],
-                            motion["alpha2"], motion["jerk2"], self._theta1, circuit, order)
+        return kernel.solve(
+            self._a,
+            self._b,
+            self._c,
+            motion["theta2"],
+            motion["omega2"],
+            motion["alpha2"],
+            motion["jerk2"],
+            self._theta1,
+            circuit,
+            order,
+        )
 
     def _not_assemblable_reason(self, motion, inputs):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
-        return (f"the crank pin is {self._show(abs(y))} from the slide line but the rod is "
-                f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose another "
-                f"theta2, a longer rod or a smaller offset.")
+        return (
+            f"the crank pin is {self._show(abs(y))} from the slide line but the rod is "
+            f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose another "
+            f"theta2, a longer rod or a smaller offset."
+        )
 
     def _singular_reason(self):
         return "the connecting rod is perpendicular to the slide"

@@ -22,10 +22,21 @@ import numpy as np
 
 from ..errors import NotAssemblable, Singular
 from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
-from .crossing import (SWITCH_DISTANCE, ambiguity_message, crossing_note, other_branch,
-                       singular_passage_note)
-from .newton import (CONVERGED, ORIENTATION_FLOOR, SINGULAR_CONDITION, SINGULAR_STEP,
-                     condition, no_convergence)
+from .crossing import (
+    SWITCH_DISTANCE,
+    ambiguity_message,
+    crossing_note,
+    other_branch,
+    singular_passage_note,
+)
+from .newton import (
+    CONVERGED,
+    ORIENTATION_FLOOR,
+    SINGULAR_CONDITION,
+    SINGULAR_STEP,
+    condition,
+    no_convergence,
+)
 from .walks import JUMP_TOLERANCE, MATCH_TOLERANCE, sign_of
 
 
@@ -60,8 +71,9 @@ def step(rec, cont, i, result=None):
         ok, q, slope, orient = rejoin(rec, cont, i, np.asarray(q), slope, orient)
         if not ok:
             return False
-    elif ((change is not None and cont.jumped(q, pred, change))
-          or (rec.flipped(orient) and trusted and not leaving)):
+    elif (change is not None and cont.jumped(q, pred, change)) or (
+        rec.flipped(orient) and trusted and not leaving
+    ):
         found = subdivide(rec, cont, i, t, it)
         if found is None:
             return False
@@ -108,8 +120,14 @@ def scan_gap(rec, cont, i, stop):
     q0, _ = rec.predict(t)
     q, it, res, reason, slope, orient = cont.system.newton(q0, t, cont.tol)
     for k, n in enumerate(idx):
-        result = (q[k], int(it[k]), float(res[k]), reason[k],
-                  slope[k] if reason[k] == CONVERGED else None, float(orient[k]))
+        result = (
+            q[k],
+            int(it[k]),
+            float(res[k]),
+            reason[k],
+            slope[k] if reason[k] == CONVERGED else None,
+            float(orient[k]),
+        )
         if step(rec, cont, n, result):
             return n + 1
     return stop
@@ -128,21 +146,32 @@ def subdivide(rec, cont, i, t, it):
     Returns ``(q, iterations, slope, orient)`` or None (position i failed)."""
     t_a, q_a, s_a = rec.state
     if s_a is None:
-        rec.fail(i, SINGULAR, _BranchJump(
-            f"at theta2 = {np.degrees(t):.6g} deg Newton-Raphson reaches the loops' closure "
-            f"only on another assembly, and the sweep cannot walk there from theta2 = "
-            f"{np.degrees(t_a):.6g} deg. Sweep in smaller steps."))
+        rec.fail(
+            i,
+            SINGULAR,
+            _BranchJump(
+                f"at theta2 = {np.degrees(t):.6g} deg Newton-Raphson reaches the loops' closure "
+                f"only on another assembly, and the sweep cannot walk there from theta2 = "
+                f"{np.degrees(t_a):.6g} deg. Sweep in smaller steps."
+            ),
+        )
         return None
-    kind, data = cont.follow(np.array(q_a), np.array(s_a), t_a, t, rec.sign,
-                             float(rec.orient[rec.last]))
+    kind, data = cont.follow(
+        np.array(q_a), np.array(s_a), t_a, t, rec.sign, float(rec.orient[rec.last])
+    )
     if kind == "arrived":
         q_w, s_w, o_w = data
         return q_w, it, s_w, o_w
     if kind == "stuck":
-        rec.fail(i, SINGULAR, _BranchJump(
-            f"near theta2 = {np.degrees(t_a + math.copysign(data, t - t_a)):.6g} deg "
-            f"Newton-Raphson reaches the loops' closure only on another assembly: the "
-            f"linkage passes a limit (toggle) position there. Sweep a range that avoids it."))
+        rec.fail(
+            i,
+            SINGULAR,
+            _BranchJump(
+                f"near theta2 = {np.degrees(t_a + math.copysign(data, t - t_a)):.6g} deg "
+                f"Newton-Raphson reaches the loops' closure only on another assembly: the "
+                f"linkage passes a limit (toggle) position there. Sweep a range that avoids it."
+            ),
+        )
         return None
     t_p, q_p, o_p, s_p, t_n, q_n, o_n = data
     # the orientation is about linear in theta2 there
@@ -167,8 +196,9 @@ def switch(rec, cont, i, t_c, q_c, v, t):
         if abs(o_k) >= ORIENTATION_FLOOR and sign_of(o_k) == rec.sign:
             near = np.asarray(q_k), it, np.asarray(s_k), o_k
         else:
-            near = other_branch(cont.system, t_c, q_c, t_w, np.asarray(q_k), rec.sign,
-                                cont.tol, JUMP_TOLERANCE)
+            near = other_branch(
+                cont.system, t_c, q_c, t_w, np.asarray(q_k), rec.sign, cont.tol, JUMP_TOLERANCE
+            )
     if near is not None and t_w == t:
         found = near
     elif near is not None:
@@ -193,8 +223,9 @@ def rejoin(rec, cont, i, q_try, slope_try, orient_try):
     Returns ``(ok, q, slope, orient)``; not ok with position i failed.
     """
     t = float(rec.theta2[i])
-    anchors = np.flatnonzero(rec.sequential[:i] & (rec.status[:i] == OK)
-                             & np.isfinite(rec.slope[:i]).all(axis=1))
+    anchors = np.flatnonzero(
+        rec.sequential[:i] & (rec.status[:i] == OK) & np.isfinite(rec.slope[:i]).all(axis=1)
+    )
     d = t - rec.theta2[anchors]
     period = cont.system.period
     walks = []
@@ -209,13 +240,13 @@ def rejoin(rec, cont, i, q_try, slope_try, orient_try):
     for _, a, dist in sorted(walks):
         key = (a, dist > 0)
         if key in rec.walk_failed and abs(dist) > rec.walk_failed[key]:
-            continue            # an earlier walk from a stopped short of this
+            continue  # an earlier walk from a stopped short of this
         reached = walk(rec, cont, a, dist)
         if isinstance(reached, float):
             rec.walk_failed[key] = reached
             continue
         q_w, slope_w, orient_w = reached
-        if dist != t - rec.theta2[a]:   # the same configuration, whole turns away
+        if dist != t - rec.theta2[a]:  # the same configuration, whole turns away
             q_w, _, _, reason, slope_w, orient_w = cont.system.newton1(q_w, t, cont.tol)
             if reason != CONVERGED or slope_w is None or rec.flipped(orient_w):
                 continue
@@ -223,11 +254,16 @@ def rejoin(rec, cont, i, q_try, slope_try, orient_try):
         if np.max(np.abs(q_w - q_try) / cont.scale) <= MATCH_TOLERANCE:
             return True, q_try, slope_try, orient_try
         return True, q_w, slope_w, orient_w
-    rec.fail(i, NOT_ASSEMBLABLE, NotAssemblable(
-        f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range where "
-        f"they cannot, but not on the assembly this sweep follows: no continuous path "
-        f"from the positions solved before reaches it. Solve this range on its own, with "
-        f"guesses for the assembly you want."))
+    rec.fail(
+        i,
+        NOT_ASSEMBLABLE,
+        NotAssemblable(
+            f"at theta2 = {np.degrees(t):.6g} deg the loops close again after a range where "
+            f"they cannot, but not on the assembly this sweep follows: no continuous path "
+            f"from the positions solved before reaches it. Solve this range on its own, with "
+            f"guesses for the assembly you want."
+        ),
+    )
     return False, None, None, None
 
 
@@ -236,8 +272,14 @@ def walk(rec, cont, a, dist):
     the followed orientation (:meth:`.walks.Continuation.follow`). Returns
     (q, slope, orient) at theta2[a] + dist, or the distance [rad] it reached
     before it had to give up."""
-    kind, data = cont.follow(rec.q[a], rec.slope[a], float(rec.theta2[a]),
-                             float(rec.theta2[a]) + dist, rec.sign, float(rec.orient[a]))
+    kind, data = cont.follow(
+        rec.q[a],
+        rec.slope[a],
+        float(rec.theta2[a]),
+        float(rec.theta2[a]) + dist,
+        rec.sign,
+        float(rec.orient[a]),
+    )
     if kind == "arrived":
         return data
     return data if kind == "stuck" else abs(data[0] - float(rec.theta2[a]))

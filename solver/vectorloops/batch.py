@@ -35,18 +35,31 @@ def result_dict(system, motion, i=0):
     vectors = {}
     for v, name in enumerate(model.names):
         th = float(motion.theta[i, v])
-        entry = {"angle": float(np.remainder(th + np.pi, 2 * np.pi) - np.pi),
-                 "omega": float(motion.dth[0][i, v]), "alpha": float(motion.dth[1][i, v]),
-                 "jerk": float(motion.dth[2][i, v])}
+        entry = {
+            "angle": float(np.remainder(th + np.pi, 2 * np.pi) - np.pi),
+            "omega": float(motion.dth[0][i, v]),
+            "alpha": float(motion.dth[1][i, v]),
+            "jerk": float(motion.dth[2][i, v]),
+        }
         if model.length_unknown[v] >= 0:
-            entry.update(length=float(motion.L[i, v]), length_dot=float(motion.dL[0][i, v]),
-                         length_ddot=float(motion.dL[1][i, v]),
-                         length_dddot=float(motion.dL[2][i, v]))
+            entry.update(
+                length=float(motion.L[i, v]),
+                length_dot=float(motion.dL[0][i, v]),
+                length_ddot=float(motion.dL[1][i, v]),
+                length_dddot=float(motion.dL[2][i, v]),
+            )
         vectors[name] = entry
-    points = {name: {key: as_plain(motion.points[n][i, p]) for n, key in enumerate("RVAJ")}
-              for p, name in enumerate(model.point_names)}
-    return {"ok": True, "vectors": vectors, "points": points,
-            "iterations": int(motion.iterations[i]), "condition": float(motion.condition[i])}
+    points = {
+        name: {key: as_plain(motion.points[n][i, p]) for n, key in enumerate("RVAJ")}
+        for p, name in enumerate(model.point_names)
+    }
+    return {
+        "ok": True,
+        "vectors": vectors,
+        "points": points,
+        "iterations": int(motion.iterations[i]),
+        "condition": float(motion.condition[i]),
+    }
 
 
 def solve_loops_case(case):
@@ -54,8 +67,11 @@ def solve_loops_case(case):
     try:
         unknown = sorted((k for k in case if k not in KEYS), key=str)
         if unknown:
-            raise InvalidInput(f"unknown key {unknown[0]!r} in a loops case; it takes "
-                               f"{', '.join(sorted(KEYS - {'mechanism'}))}", unknown[0])
+            raise InvalidInput(
+                f"unknown key {unknown[0]!r} in a loops case; it takes "
+                f"{', '.join(sorted(KEYS - {'mechanism'}))}",
+                unknown[0],
+            )
         system = system_from_case(case)
         m = read_motion(case)
         motion = solve(system, m["theta2"], m["omega2"], m["alpha2"], m["jerk2"])

@@ -28,8 +28,8 @@ import numpy as np
 from .newton import CONVERGED, ORIENTATION_FLOOR
 
 SWITCH_DISTANCE = 0.01  # [rad] of theta2 from the crossing where the curves are told apart
-REACH = 8.0             # the other curve's point is at most this many times farther from
-                        # q_c than q_s is (plus JUMP_TOLERANCE), in scaled units
+REACH = 8.0  # the other curve's point is at most this many times farther from
+# q_c than q_s is (plus JUMP_TOLERANCE), in scaled units
 
 
 def other_branch(system, t_c, q_c, t, q_s, sign, tol, slack):
@@ -76,46 +76,58 @@ def other_branch(system, t_c, q_c, t, q_s, sign, tol, slack):
     reach = REACH * r + slack
     for k in tries:
         q, it, _, reason, slope, orient = system.newton1(q_s + k * phi, t, tol)
-        if (reason == CONVERGED and slope is not None and abs(orient) >= ORIENTATION_FLOOR
-                and math.copysign(1.0, orient) == sign
-                and np.max(np.abs(np.asarray(q) - q_c) / scale) <= reach):
+        if (
+            reason == CONVERGED
+            and slope is not None
+            and abs(orient) >= ORIENTATION_FLOOR
+            and math.copysign(1.0, orient) == sign
+            and np.max(np.abs(np.asarray(q) - q_c) / scale) <= reach
+        ):
             return np.asarray(q), it, np.asarray(slope), orient
     return None
 
 
 def crossing_note(t_c, t):
     """What a sweep says when it kept its assembly through a crossing."""
-    return (f"near theta2 = {math.degrees(t_c):.6g} deg the linkage passes a singular position "
-            f"where two of its assemblies meet (a change point: the Jacobian's orientation "
-            f"changes sign through it), and its geometry does not decide which one it takes "
-            f"after it. From theta2 = {math.degrees(t):.6g} deg on, this sweep stays on the "
-            f"assembly it followed before (the same orientation, continuous through the meeting "
-            f"point); the other is equally possible: sweep from there with guesses on it to see "
-            f"it.")
+    return (
+        f"near theta2 = {math.degrees(t_c):.6g} deg the linkage passes a singular position "
+        f"where two of its assemblies meet (a change point: the Jacobian's orientation "
+        f"changes sign through it), and its geometry does not decide which one it takes "
+        f"after it. From theta2 = {math.degrees(t):.6g} deg on, this sweep stays on the "
+        f"assembly it followed before (the same orientation, continuous through the meeting "
+        f"point); the other is equally possible: sweep from there with guesses on it to see "
+        f"it."
+    )
 
 
 def ambiguity_message(t_c, t):
     """What a sweep says when it cannot find its assembly past a crossing."""
-    return (f"near theta2 = {math.degrees(t_c):.6g} deg the linkage passes a singular position "
-            f"where two of its assemblies meet, and at theta2 = {math.degrees(t):.6g} deg this "
-            f"sweep cannot find the assembly it followed before (only the other, which it does "
-            f"not report as if it were the same): positions past that point are marked singular. "
-            f"Sweep from there with guesses on the assembly you want.")
+    return (
+        f"near theta2 = {math.degrees(t_c):.6g} deg the linkage passes a singular position "
+        f"where two of its assemblies meet, and at theta2 = {math.degrees(t):.6g} deg this "
+        f"sweep cannot find the assembly it followed before (only the other, which it does "
+        f"not report as if it were the same): positions past that point are marked singular. "
+        f"Sweep from there with guesses on the assembly you want."
+    )
 
 
 def singular_start_note(t0, t1):
     """What a sweep says when it starts on a singular position."""
-    return (f"the sweep starts on a singular position (theta2 = {math.degrees(t0):.6g} deg), "
-            f"where assemblies can meet, so the guesses there do not choose one: it continues "
-            f"from theta2 = {math.degrees(t1):.6g} deg on the assembly Newton-Raphson reached "
-            f"there, and another may be equally possible. Start the sweep off the singular "
-            f"position, with guesses on the assembly you want, to choose.")
+    return (
+        f"the sweep starts on a singular position (theta2 = {math.degrees(t0):.6g} deg), "
+        f"where assemblies can meet, so the guesses there do not choose one: it continues "
+        f"from theta2 = {math.degrees(t1):.6g} deg on the assembly Newton-Raphson reached "
+        f"there, and another may be equally possible. Start the sweep off the singular "
+        f"position, with guesses on the assembly you want, to choose."
+    )
 
 
 def singular_passage_note(t_s, t):
     """What a sweep says when it went through a singular sampled position and
     found its own orientation again past it."""
-    return (f"at theta2 = {math.degrees(t_s):.6g} deg the sweep passes a singular position; "
-            f"from theta2 = {math.degrees(t):.6g} deg on it continues on the assembly with the "
-            f"orientation it followed before. If two assemblies meet there (a change point), "
-            f"the other is equally possible.")
+    return (
+        f"at theta2 = {math.degrees(t_s):.6g} deg the sweep passes a singular position; "
+        f"from theta2 = {math.degrees(t):.6g} deg on it continues on the assembly with the "
+        f"orientation it followed before. If two assemblies meet there (a change point), "
+        f"the other is equally possible."
+    )

@@ -33,8 +33,12 @@ def vector_derivative(n, L, dL, th_d, e):
     if n == 2:
         return (dL[1] - L * w * w + 1j * (L * al + 2.0 * dL[0] * w)) * e
     jk = th_d[2]
-    return (dL[2] - 3.0 * dL[0] * w * w - 3.0 * L * w * al
-            + 1j * (3.0 * dL[1] * w + 3.0 * dL[0] * al + L * jk - L * w * w * w)) * e
+    return (
+        dL[2]
+        - 3.0 * dL[0] * w * w
+        - 3.0 * L * w * al
+        + 1j * (3.0 * dL[1] * w + 3.0 * dL[0] * al + L * jk - L * w * w * w)
+    ) * e
 
 
 def solve_derivatives(system, q, theta2, inputs, order=3):
@@ -64,10 +68,10 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
     N = q.shape[0]
     nv = s.n_vectors
     L, theta = s.vectors(q, theta2)
-    L = np.array(L)                       # (N, nv), writable
+    L = np.array(L)  # (N, nv), writable
     c, sn = np.cos(theta), np.sin(theta)
     e = c + 1j * sn
-    J = s.evaluate_lt(L, c, sn)[1]        # rows: (real, imaginary) of each loop
+    J = s.evaluate_lt(L, c, sn)[1]  # rows: (real, imaginary) of each loop
     dL = [np.zeros((N, nv)) for _ in range(3)]
     dth = [np.zeros((N, nv)) for _ in range(3)]
     q_d = []
@@ -76,8 +80,8 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
         # the input's share of theta_v^(n); unknowns' n-th derivatives still zero
         dth[n - 1][:, s.vin] = s.ratio[s.vin] * inputs[n - 1][:, None]
         K = rows_times(vector_derivative(n, L, dL, dth, e), signs_T)  # (N, n_loops) complex
-        rhs = -K.view(np.float64)                               # interleaved re, im
-        x = solve_stack(J, rhs[..., None])[0][..., 0]          # NaN where J is singular
+        rhs = -K.view(np.float64)  # interleaved re, im
+        x = solve_stack(J, rhs[..., None])[0][..., 0]  # NaN where J is singular
         q_d.append(x)
         dL[n - 1][:, s.vl] = x[:, s.il]
         dth[n - 1][:, s.va] = s.ratio[s.va] * x[:, s.ia]
@@ -87,6 +91,7 @@ def solve_derivatives(system, q, theta2, inputs, order=3):
 def point_motion(system, d, order=3):
     """R, V, A, J [m, m/s, m/s^2, m/s^3] of every named point, as complex (N, n_points)."""
     signs = system.model.point_signs
-    z = [d["L"] * d["e"]] + [vector_derivative(n, d["L"], d["dL"], d["dth"], d["e"])
-                             for n in range(1, order + 1)]
+    z = [d["L"] * d["e"]] + [
+        vector_derivative(n, d["L"], d["dL"], d["dth"], d["e"]) for n in range(1, order + 1)
+    ]
     return [rows_times(z_n, signs.T.astype(complex)) for z_n in z]

@@ -34,21 +34,21 @@ MAX_SUM = 2000
 class LoopModel:
     """A checked description in SI, as arrays indexed by vector."""
 
-    names: list            # vector names, in order
-    loop_names: list       # the loop strings, for messages
-    signs: np.ndarray      # (n_loops, n_vectors) of -1, 0, +1
+    names: list  # vector names, in order
+    loop_names: list  # the loop strings, for messages
+    signs: np.ndarray  # (n_loops, n_vectors) of -1, 0, +1
     point_names: list
     point_signs: np.ndarray  # (n_points, n_vectors)
-    length: np.ndarray     # fixed lengths (NaN where unknown)
+    length: np.ndarray  # fixed lengths (NaN where unknown)
     length_unknown: np.ndarray  # index into q of the length, or -1
-    angle_unknown: np.ndarray   # index into q of the base angle, or -1
-    angle_input: np.ndarray     # True where the base is theta2
-    angle_ratio: np.ndarray     # k_v
-    angle_offset: np.ndarray    # o_v [rad]
-    guess: np.ndarray           # starting values of q (angles [rad], lengths [m])
+    angle_unknown: np.ndarray  # index into q of the base angle, or -1
+    angle_input: np.ndarray  # True where the base is theta2
+    angle_ratio: np.ndarray  # k_v
+    angle_offset: np.ndarray  # o_v [rad]
+    guess: np.ndarray  # starting values of q (angles [rad], lengths [m])
     unknown_is_length: np.ndarray  # per q entry
-    unknown_names: list         # "R3.angle", "S.length" per q entry
-    length_scale: float         # a typical length [m], for tolerances
+    unknown_names: list  # "R3.angle", "S.length" per q entry
+    length_scale: float  # a typical length [m], for tolerances
 
     @property
     def n_unknowns(self):
@@ -57,11 +57,15 @@ class LoopModel:
 
 def _parse_sum(text, names, what):
     if not isinstance(text, str) or not text.strip():
-        raise InvalidInput(f"{what} must be a signed sum of vector names like 'R2 + R3 - R4 - R1' "
-                           f"(got {show(text)})", what)
+        raise InvalidInput(
+            f"{what} must be a signed sum of vector names like 'R2 + R3 - R4 - R1' "
+            f"(got {show(text)})",
+            what,
+        )
     if len(text) > MAX_SUM:
-        raise InvalidInput(f"{what} is {len(text)} characters long; a loop or point is at most "
-                           f"{MAX_SUM}", what)
+        raise InvalidInput(
+            f"{what} is {len(text)} characters long; a loop or point is at most {MAX_SUM}", what
+        )
     signs = np.zeros(len(names))
     pos = 0
     first = True
@@ -69,12 +73,17 @@ def _parse_sum(text, names, what):
     while pos < len(text):
         m = _TERM.match(text, pos)
         if not m or (not first and not m.group(1)):
-            raise InvalidInput(f"cannot read {what} at {show(text[pos:])}: write a signed "
-                               f"sum of vector names like 'R2 + R3 - R4 - R1'", what)
+            raise InvalidInput(
+                f"cannot read {what} at {show(text[pos:])}: write a signed "
+                f"sum of vector names like 'R2 + R3 - R4 - R1'",
+                what,
+            )
         name = m.group(2)
         if name not in names:
-            raise InvalidInput(f"{what} names an unknown vector {show(name)}; the vectors "
-                               f"are {', '.join(names)}", what)
+            raise InvalidInput(
+                f"{what} names an unknown vector {show(name)}; the vectors are {', '.join(names)}",
+                what,
+            )
         signs[names.index(name)] += -1.0 if m.group(1) == "-" else 1.0
         pos = m.end()
         first = False
@@ -99,26 +108,32 @@ def read_description(case):
     """
     vectors = case.get("vectors")
     if not isinstance(vectors, dict) or not vectors:
-        raise InvalidInput("a loops case needs 'vectors': an object of named vectors, e.g. "
-                           "{\"R2\": {\"length\": \"2 in\", \"angle\": \"input\"}}", "vectors")
+        raise InvalidInput(
+            "a loops case needs 'vectors': an object of named vectors, e.g. "
+            '{"R2": {"length": "2 in", "angle": "input"}}',
+            "vectors",
+        )
     loops = case.get("loops")
     if not isinstance(loops, list) or not loops:
-        raise InvalidInput("a loops case needs 'loops': a list like [\"R2 + R3 - R4 - R1\"]",
-                           "loops")
+        raise InvalidInput(
+            "a loops case needs 'loops': a list like [\"R2 + R3 - R4 - R1\"]", "loops"
+        )
     points = case.get("points", {}) or {}
     if not isinstance(points, dict):
         raise InvalidInput("'points' must be an object of point names to vector sums", "points")
     if len(vectors) > MAX_VECTORS:
-        raise InvalidInput(f"a loops case has at most {MAX_VECTORS} vectors (got "
-                           f"{len(vectors)})", "vectors")
+        raise InvalidInput(
+            f"a loops case has at most {MAX_VECTORS} vectors (got {len(vectors)})", "vectors"
+        )
     long = [k for k in vectors if not isinstance(k, str) or len(k) > MAX_NAME or not k]
     if long:
-        raise InvalidInput(f"vector names are 1 to {MAX_NAME} characters (got "
-                           f"{show(long[0])})", "vectors")
+        raise InvalidInput(
+            f"vector names are 1 to {MAX_NAME} characters (got {show(long[0])})", "vectors"
+        )
     if not all(isinstance(p, str) and 0 < len(p) <= MAX_NAME for p in points):
         raise InvalidInput(f"point names are 1 to {MAX_NAME} characters", "points")
     if not all(isinstance(text, str) for text in loops):
-        raise InvalidInput("each loop must be a string like \"R2 + R3 - R4 - R1\"", "loops")
+        raise InvalidInput('each loop must be a string like "R2 + R3 - R4 - R1"', "loops")
     names = list(vectors)
     n = len(names)
     length = np.full(n, np.nan)
@@ -137,8 +152,11 @@ def read_description(case):
         if spec["length"] == "unknown":
             key = "guess_length" if both or "guess_length" in spec else "guess"
             if key not in spec:
-                raise InvalidInput(f"vector {name} has an unknown length and needs a guess "
-                                   f"length ('{key}': '7 in')", name)
+                raise InvalidInput(
+                    f"vector {name} has an unknown length and needs a guess "
+                    f"length ('{key}': '7 in')",
+                    name,
+                )
             guesses.append(_quantity(spec, key, name, "length"))
             is_length.append(True)
             unknown_names.append(f"{name}.length")
@@ -151,9 +169,11 @@ def read_description(case):
         if angle == "unknown":
             key = "guess_angle" if both or "guess_angle" in spec else "guess"
             if key not in spec:
-                raise InvalidInput(f"vector {name} has an unknown angle and needs a guess "
-                                   f"angle ('{key}': '90 deg'); the guess picks the assembly",
-                                   name)
+                raise InvalidInput(
+                    f"vector {name} has an unknown angle and needs a guess "
+                    f"angle ('{key}': '90 deg'); the guess picks the assembly",
+                    name,
+                )
             guesses.append(_quantity(spec, key, name, "angle"))
             is_length.append(False)
             unknown_names.append(f"{name}.angle")
@@ -170,10 +190,12 @@ def read_description(case):
         chain, k, o = [], 1.0, 0.0
         while True:
             if name in chain:
-                shown = " -> ".join(chain[chain.index(name):] + [name])
-                raise InvalidInput(f"follow chain loops back on itself ({show(shown)}): one "
-                                   f"vector in it must have an input, unknown or fixed angle",
-                                   name)
+                shown = " -> ".join(chain[chain.index(name) :] + [name])
+                raise InvalidInput(
+                    f"follow chain loops back on itself ({show(shown)}): one "
+                    f"vector in it must have an input, unknown or fixed angle",
+                    name,
+                )
             chain.append(name)
             angle = raw_angle[name]
             if isinstance(angle, str) and angle == "input":
@@ -183,17 +205,22 @@ def read_description(case):
             if isinstance(angle, dict):
                 target = angle.get("follow")
                 if not isinstance(target, str) or target not in raw_angle:
-                    raise InvalidInput(f"vector {name} follows {show(target)}, which is not a "
-                                       f"vector (the vectors are {', '.join(names)})", name)
+                    raise InvalidInput(
+                        f"vector {name} follows {show(target)}, which is not a "
+                        f"vector (the vectors are {', '.join(names)})",
+                        name,
+                    )
                 extra = set(angle) - {"follow", "offset", "ratio"}
                 if extra:
-                    raise InvalidInput(f"vector {name}: unknown follow key(s) "
-                                       f"{show(sorted(map(str, extra)))}", name)
+                    raise InvalidInput(
+                        f"vector {name}: unknown follow key(s) {show(sorted(map(str, extra)))}",
+                        name,
+                    )
                 r = angle.get("ratio", 1.0)
-                if isinstance(r, bool) or not isinstance(r, (int, float)) or \
-                        not np.isfinite(r):
-                    raise InvalidInput(f"vector {name}: follow ratio must be a number (got "
-                                       f"{show(r)})", name)
+                if isinstance(r, bool) or not isinstance(r, (int, float)) or not np.isfinite(r):
+                    raise InvalidInput(
+                        f"vector {name}: follow ratio must be a number (got {show(r)})", name
+                    )
                 off = to_si(angle.get("offset", 0), f"{name}.offset", "angle")
                 # this vector's angle is r * (target's angle) + off
                 o = o + k * off
@@ -210,20 +237,52 @@ def read_description(case):
         elif base is not None:
             angle_unknown[i] = base
     if not angle_input.any():
-        raise InvalidInput("no vector is driven by the input: give one vector \"angle\": "
-                           "\"input\" (or one that follows it)", "vectors")
+        raise InvalidInput(
+            'no vector is driven by the input: give one vector "angle": '
+            '"input" (or one that follows it)',
+            "vectors",
+        )
     signs = np.array([_parse_sum(text, names, f"loop {text!r}") for text in loops])
     n_unknowns = len(guesses)
     if n_unknowns != 2 * len(loops):
-        raise InvalidInput(f"{len(loops)} loop(s) give {2 * len(loops)} scalar equations but "
-                           f"there are {n_unknowns} unknowns ({', '.join(unknown_names) or 'none'}"
-                           f"); add or remove loops or unknowns so they match", "loops")
+        raise InvalidInput(
+            f"{len(loops)} loop(s) give {2 * len(loops)} scalar equations but "
+            f"there are {n_unknowns} unknowns ({', '.join(unknown_names) or 'none'}"
+            f"); add or remove loops or unknowns so they match",
+            "loops",
+        )
     point_names = list(points)
-    point_signs = (np.array([_parse_sum(points[p], names, f"point {p}") for p in point_names])
-                   if point_names else np.zeros((0, n)))
+    point_signs = (
+        np.array([_parse_sum(points[p], names, f"point {p}") for p in point_names])
+        if point_names
+        else np.zeros((0, n))
+    )
     fixed = length[~np.isnan(length)]
-    scale = float(np.max(np.abs(np.concatenate([fixed, np.array(guesses)[is_length]
-                                                 if any(is_length) else []])))) if n else 1.0
-    return LoopModel(names, list(loops), signs, point_names, point_signs, length, length_unknown,
-                     angle_unknown, angle_input, ratio, offset, np.array(guesses, dtype=float),
-                     np.array(is_length, dtype=bool), unknown_names, scale or 1.0)
+    scale = (
+        float(
+            np.max(
+                np.abs(
+                    np.concatenate([fixed, np.array(guesses)[is_length] if any(is_length) else []])
+                )
+            )
+        )
+        if n
+        else 1.0
+    )
+    return LoopModel(
+        names,
+        list(loops),
+        signs,
+        point_names,
+        point_signs,
+        length,
+        length_unknown,
+        angle_unknown,
+        angle_input,
+        ratio,
+        offset,
+        np.array(guesses, dtype=float),
+        np.array(is_length, dtype=bool),
+        unknown_names,
+        scale or 1.0,
+    )

@@ -82,19 +82,28 @@ class VectorLoopLinkage:
         a sweep that starts on a singular position reports that position
         ``singular`` and continues from the next one.
         """
-        t2, w2, a2, j2 = (to_si(v, p.name, p.kind)
-                          for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2)))
+        t2, w2, a2, j2 = (
+            to_si(v, p.name, p.kind) for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))
+        )
         if isinstance(order, bool) or order not in (1, 2, 3):
-            raise InvalidInput(f"order must be 1 (velocity), 2 (acceleration) or 3 (jerk), got "
-                               f"{show(order)}", "order")
+            raise InvalidInput(
+                f"order must be 1 (velocity), 2 (acceleration) or 3 (jerk), got {show(order)}",
+                "order",
+            )
         if np.ndim(t2) > 1:
-            raise InvalidInput("theta2 must be one angle or a 1-D array of angles (a sweep) "
-                               f"for a vector-loop linkage (got shape {np.shape(t2)})", "theta2")
+            raise InvalidInput(
+                "theta2 must be one angle or a 1-D array of angles (a sweep) "
+                f"for a vector-loop linkage (got shape {np.shape(t2)})",
+                "theta2",
+            )
         N = np.size(t2)
         for name, v in (("omega2", w2), ("alpha2", a2), ("jerk2", j2)):
             if np.ndim(v) and np.shape(v) != (N,):
-                raise InvalidInput(f"{name} must be one value or an array shaped like theta2 "
-                                   f"({N} positions; got shape {np.shape(v)})", name)
+                raise InvalidInput(
+                    f"{name} must be one value or an array shaped like theta2 "
+                    f"({N} positions; got shape {np.shape(v)})",
+                    name,
+                )
         motion = solve(self.system, t2, w2, a2, j2, order, tol=tol)
         scalar = np.ndim(t2) == 0
         if scalar and motion.status[0] != OK:
@@ -123,10 +132,16 @@ class _Named:
         return "<" + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._values) + ">"
 
 
-_VECTOR_KINDS = {"angle": "angle", "omega": "angular_velocity",
-                 "alpha": "angular_acceleration", "jerk": "angular_jerk", "length": "length",
-                 "length_dot": "velocity", "length_ddot": "acceleration",
-                 "length_dddot": "jerk"}
+_VECTOR_KINDS = {
+    "angle": "angle",
+    "omega": "angular_velocity",
+    "alpha": "angular_acceleration",
+    "jerk": "angular_jerk",
+    "length": "length",
+    "length_dot": "velocity",
+    "length_ddot": "acceleration",
+    "length_dddot": "jerk",
+}
 _POINT_KINDS = {"R": "length", "V": "velocity", "A": "acceleration", "J": "jerk"}
 
 
@@ -164,14 +179,15 @@ class LoopResult(Kinematics):
             self._values.update({f"{name}.{k}": (x, _VECTOR_KINDS[k]) for k, x in values.items()})
         self.points = {}
         for p, name in enumerate(model.point_names):
-            values = {k: m.points[n][:, p] for n, k in enumerate("RVAJ"[:order + 1])}
+            values = {k: m.points[n][:, p] for n, k in enumerate("RVAJ"[: order + 1])}
             self.points[name] = _Named(values, _POINT_KINDS, scalar)
             self._values.update({f"{name}.{k}": (x, _POINT_KINDS[k]) for k, x in values.items()})
 
     def si(self, name):
         if name not in self._values:
-            raise KeyError(f"this linkage has no output {name!r}; its outputs are "
-                           f"{', '.join(self._values)}")
+            raise KeyError(
+                f"this linkage has no output {name!r}; its outputs are {', '.join(self._values)}"
+            )
         v = self._values[name][0]
         return v[0] if self._scalar else v
 

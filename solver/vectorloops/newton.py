@@ -43,10 +43,10 @@ from .straightline import compile_kernel
 SINGULAR_CONDITION = 1e-4
 
 MAX_ITERATIONS = 50
-MAX_ANGLE_STEP = 0.5      # [rad] per iteration: keeps Newton on the guessed assembly
-MAX_LENGTH_STEP = 0.5     # [length scale] per iteration
-DEFAULT_TOL = 1e-13       # loop residual / length scale that Newton gets below
-STEP_TOL_FACTOR = 1e-8 / math.sqrt(DEFAULT_TOL)   # last step <= this * sqrt(tol)
+MAX_ANGLE_STEP = 0.5  # [rad] per iteration: keeps Newton on the guessed assembly
+MAX_LENGTH_STEP = 0.5  # [length scale] per iteration
+DEFAULT_TOL = 1e-13  # loop residual / length scale that Newton gets below
+STEP_TOL_FACTOR = 1e-8 / math.sqrt(DEFAULT_TOL)  # last step <= this * sqrt(tol)
 #: a loop residual this small (times the length scale) is round-off: Newton stops
 #: there whatever its step (at a singular root the step stalls near 1e-8 in noise)
 ROUNDOFF_RESIDUAL = 1e-14
@@ -63,12 +63,12 @@ class NewtonResult(NamedTuple):
     """What Newton-Raphson returns for one position (lists / floats) or a
     stack of M positions (arrays with a first axis of M)."""
 
-    q: object          #: the solution (the last iterate where not converged)
+    q: object  #: the solution (the last iterate where not converged)
     iterations: object  #: Newton steps taken
-    residual: object   #: loop residual norm at the last evaluation [m]
-    reason: object     #: CONVERGED, NOT_CLOSED or SINGULAR_STEP
-    slope: object      #: dq/dtheta2 at the solution (None / NaN where not converged)
-    orient: object     #: the orientation at the solution (NaN where not converged)
+    residual: object  #: loop residual norm at the last evaluation [m]
+    reason: object  #: CONVERGED, NOT_CLOSED or SINGULAR_STEP
+    slope: object  #: dq/dtheta2 at the solution (None / NaN where not converged)
+    orient: object  #: the orientation at the solution (NaN where not converged)
 
 
 def check_tol(tol):
@@ -78,8 +78,11 @@ def check_tol(tol):
     except (TypeError, ValueError):
         raise InvalidInput(f"tol must be a plain number like 1e-13 (got {tol!r})", "tol") from None
     if not 0 < tol <= 1e-2:
-        raise InvalidInput(f"tol must be in (0, 1e-2], a loop residual relative to the longest "
-                           f"link (got {tol!r}); the default is {DEFAULT_TOL:g}", "tol")
+        raise InvalidInput(
+            f"tol must be in (0, 1e-2], a loop residual relative to the longest "
+            f"link (got {tol!r}); the default is {DEFAULT_TOL:g}",
+            "tol",
+        )
     return tol
 
 
@@ -106,23 +109,24 @@ class LoopSystem:
         self.unit = unit = length_unit(model.length_scale)
         guess = np.where(model.unknown_is_length, model.guess / unit, model.guess)
         self.model = model = dataclasses.replace(
-            model, length=model.length / unit, guess=guess,
-            length_scale=model.length_scale / unit)
+            model, length=model.length / unit, guess=guess, length_scale=model.length_scale / unit
+        )
         m = model
         self.signs = m.signs
         self.n_loops = nl = m.signs.shape[0]
         self.n_unknowns = nu = m.n_unknowns
-        self.vl = np.flatnonzero(m.length_unknown >= 0)        # vectors with unknown length
+        self.vl = np.flatnonzero(m.length_unknown >= 0)  # vectors with unknown length
         self.il = m.length_unknown[self.vl]
-        self.va = np.flatnonzero(m.angle_unknown >= 0)          # vectors on an unknown angle
+        self.va = np.flatnonzero(m.angle_unknown >= 0)  # vectors on an unknown angle
         self.ia = m.angle_unknown[self.va]
-        self.vin = np.flatnonzero(m.angle_input)                # vectors driven by theta2
+        self.vin = np.flatnonzero(m.angle_input)  # vectors driven by theta2
         self.ratio = m.angle_ratio
         self.offset = m.angle_offset
         self.fixed_length = np.where(np.isnan(m.length), 0.0, m.length)
         self.scale = np.where(m.unknown_is_length, m.length_scale, 1.0)  # per unknown
-        self.step_limit = np.where(m.unknown_is_length, MAX_LENGTH_STEP * m.length_scale,
-                                   MAX_ANGLE_STEP)
+        self.step_limit = np.where(
+            m.unknown_is_length, MAX_LENGTH_STEP * m.length_scale, MAX_ANGLE_STEP
+        )
         # dense maps from vectors to unknowns, for a Jacobian in real arithmetic
         nv = len(self.fixed_length)
         self.n_vectors = nv
@@ -142,10 +146,10 @@ class LoopSystem:
         # B maps the row [L cos, cos, L sin, sin] (one entry per vector) of one
         # position to column blocks of 2 n_loops each: F; dF/dq_0 ... dF/dq_{nu-1};
         # dF/dtheta2 (rows of each block: real and imaginary part of each loop).
-        Bc = np.zeros((2 * nv, nu + 2, nl), dtype=complex)   # acting on [z, e]
+        Bc = np.zeros((2 * nv, nu + 2, nl), dtype=complex)  # acting on [z, e]
         Bc[:nv, 0, :] = m.signs.T
-        Bc[:nv, 1:nu + 1, :] = 1j * self.Ma[:, :, None] * m.signs.T[:, None, :]
-        Bc[nv:, 1:nu + 1, :] = self.Ml[:, :, None] * m.signs.T[:, None, :]
+        Bc[:nv, 1 : nu + 1, :] = 1j * self.Ma[:, :, None] * m.signs.T[:, None, :]
+        Bc[nv:, 1 : nu + 1, :] = self.Ml[:, :, None] * m.signs.T[:, None, :]
         Bc[:nv, nu + 1, :] = 1j * self.k_in[:, None] * m.signs.T
         # real form: (yr + j yi)(br + j bi) = (yr br - yi bi) + j (yr bi + yi br)
         B = np.zeros((2, 2 * nv, nu + 2, nl, 2))
@@ -176,9 +180,19 @@ class LoopSystem:
                     lterms.append((r, int(m.length_unknown[v]), sg))
                 if m.angle_input[v]:
                     dterms.append((r, sg * float(self.ratio[v])))
-            rows.append((int(self.base_index[v]), float(self.ratio[v]), float(self.offset[v]),
-                         int(m.length_unknown[v]), float(self.fixed_length[v]),
-                         tuple(fterms), tuple(aterms), tuple(lterms), tuple(dterms)))
+            rows.append(
+                (
+                    int(self.base_index[v]),
+                    float(self.ratio[v]),
+                    float(self.offset[v]),
+                    int(m.length_unknown[v]),
+                    float(self.fixed_length[v]),
+                    tuple(fterms),
+                    tuple(aterms),
+                    tuple(lterms),
+                    tuple(dterms),
+                )
+            )
         self.step_tables = tuple(rows)
         self._py_scale = [float(x) for x in self.scale]
         self._py_limit = [float(x) for x in self.step_limit]
@@ -213,7 +227,7 @@ class LoopSystem:
         nu, nl = self.n_unknowns, self.n_loops
         Y = np.concatenate([L * c, c, L * s, s], axis=1)
         R = rows_times(Y, self.B).reshape(M, nu + 2, 2 * nl)
-        return R[:, 0], R[:, 1:nu + 1].transpose(0, 2, 1), R[:, nu + 1]
+        return R[:, 0], R[:, 1 : nu + 1].transpose(0, 2, 1), R[:, nu + 1]
 
     # --- Newton-Raphson -----------------------------------------------------
     def newton(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS, slopes=True):
@@ -291,8 +305,9 @@ class LoopSystem:
             iterations[active] += 1
         return NewtonResult(q, iterations, residual, reason, slope, orient)
 
-    def newton1(self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS,
-                least_squares=False):
+    def newton1(
+        self, q0, theta2, tol=DEFAULT_TOL, max_iterations=MAX_ITERATIONS, least_squares=False
+    ):
         """Newton-Raphson at one position, in plain Python floats.
 
         The same iteration, stopping rule and damping as :meth:`newton`, for
@@ -333,9 +348,10 @@ class LoopSystem:
                 if a > size * sc:
                     size = a / sc
             if size <= step_tol:
-                return NewtonResult([x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED,
-                                    slope, orient)
-            if res <= floor:        # round-off already: at a singular root the step is noise
+                return NewtonResult(
+                    [x + y for x, y in zip(q, dq)], steps + 1, res, CONVERGED, slope, orient
+                )
+            if res <= floor:  # round-off already: at a singular root the step is noise
                 return NewtonResult(q, steps, res, CONVERGED, slope, orient)
             if steps == max_iterations:
                 return NewtonResult(q, steps, res, NOT_CLOSED, None, math.nan)
@@ -376,19 +392,27 @@ def no_convergence(theta2, residual, iterations, reason):
     """The NoConvergence error for one position that Newton-Raphson did not close."""
     residual, iterations = float(residual), int(iterations)
     if not math.isfinite(theta2):
-        return NoConvergence(f"theta2 = {theta2} is not a finite angle: no position to solve",
-                             residual=residual, iterations=iterations)
+        return NoConvergence(
+            f"theta2 = {theta2} is not a finite angle: no position to solve",
+            residual=residual,
+            iterations=iterations,
+        )
     if reason == SINGULAR_STEP:
         return NoConvergence(
             f"Newton-Raphson hit a singular Jacobian at theta2 = {np.degrees(theta2):.6g} deg "
             f"(loop residual {residual:.3e} m): the guesses sit at a singular configuration; "
-            f"move them.", residual=residual, iterations=iterations)
+            f"move them.",
+            residual=residual,
+            iterations=iterations,
+        )
     return NoConvergence(
         f"Newton-Raphson did not close the loops at theta2 = {np.degrees(theta2):.6g} deg "
         f"after {iterations} iterations (loop residual {residual:.3e} m): the linkage cannot "
         f"be assembled there, or the guesses are too far from an assembly. Check the lengths, "
         f"or give guesses closer to the intended assembly.",
-        residual=residual, iterations=iterations)
+        residual=residual,
+        iterations=iterations,
+    )
 
 
 def orientation(J):

@@ -31,29 +31,29 @@ class SweepRecord:
         self.theta2, self.sample_singular = theta2, sample_singular
         N, nu = len(theta2), len(scale)
         self.q = np.full((N, nu), np.nan)
-        self.slope = np.full((N, nu), np.nan)     # at sequentially solved positions
-        self.orient = np.full(N, np.nan)          # orientation of solved positions
+        self.slope = np.full((N, nu), np.nan)  # at sequentially solved positions
+        self.orient = np.full(N, np.nan)  # orientation of solved positions
         self.status = np.full(N, OK, dtype=np.int8)
         self.iterations = np.zeros(N, dtype=int)
         self.sequential = np.zeros(N, dtype=bool)  # solved by continuation (anchors)
         self.errors = {}
-        self.notes = {}         # position -> what the sweep decided there (crossings)
+        self.notes = {}  # position -> what the sweep decided there (crossings)
         self.guess = np.asarray(q0, dtype=float)
-        self.last = None        # index of the last position solved by continuation
-        self.taylor = None      # 2nd and 3rd Taylor coefficients of q(theta2) at last
-        self.gap = False        # a position failed since self.last
-        self.walk_failed = {}   # (anchor, direction) -> distance a rejoining walk failed at
-        self.failures = 0       # consecutive failed positions
+        self.last = None  # index of the last position solved by continuation
+        self.taylor = None  # 2nd and 3rd Taylor coefficients of q(theta2) at last
+        self.gap = False  # a position failed since self.last
+        self.walk_failed = {}  # (anchor, direction) -> distance a rejoining walk failed at
+        self.failures = 0  # consecutive failed positions
         self.scale = scale
         self.scale_list = [float(x) for x in scale]
         # the continuation state in plain floats: (theta2, q, slope or None) of
         # self.last; the per-position bookkeeping of a 4-unknown linkage is
         # cheaper in Python than in numpy calls
         self.state = None
-        self.sign = None        # orientation (+1 / -1) of the followed assembly
+        self.sign = None  # orientation (+1 / -1) of the followed assembly
         self.singular_last = False  # self.last is a singular position
         self.singular_start = None  # index of a singular first position, until the sign is set
-        self.blocked = None     # (theta2, direction, i): past it the assembly was lost
+        self.blocked = None  # (theta2, direction, i): past it the assembly was lost
 
     def accept(self, i, q, it, slope, orient):
         """Position i solved by continuation: ``q``, Newton ``it``erations, its
@@ -63,7 +63,7 @@ class SweepRecord:
         q = [float(x) for x in q]
         singular = not abs(orient) >= self.sample_singular
         if singular:
-            slope = None            # dq/dtheta2 means nothing at a singular position
+            slope = None  # dq/dtheta2 means nothing at a singular position
         slope = None if slope is None else [float(x) for x in slope]
         if slope is not None and not all(math.isfinite(x) for x in slope):
             slope = None
@@ -88,8 +88,10 @@ class SweepRecord:
             if s0 is not None and abs(h) > 1e-9:
                 dq = [a - b for a, b in zip(q0, q)]
                 h2, h3 = h * h, h * h * h
-                self.taylor = ([(3 * d + h * (a + 2 * b)) / h2 for d, a, b in zip(dq, s0, slope)],
-                               [(2 * d + h * (a + b)) / h3 for d, a, b in zip(dq, s0, slope)])
+                self.taylor = (
+                    [(3 * d + h * (a + 2 * b)) / h2 for d, a, b in zip(dq, s0, slope)],
+                    [(2 * d + h * (a + b)) / h3 for d, a, b in zip(dq, s0, slope)],
+                )
         self.state = (t, q, slope)
         self.last, self.gap = i, False
         self.singular_last = singular
@@ -98,8 +100,11 @@ class SweepRecord:
     def restore(self, a):
         """Continue from solved position a (to walk an interval again)."""
         slope = self.slope[a]
-        self.state = (float(self.theta2[a]), [float(x) for x in self.q[a]],
-                      [float(x) for x in slope] if np.isfinite(slope).all() else None)
+        self.state = (
+            float(self.theta2[a]),
+            [float(x) for x in self.q[a]],
+            [float(x) for x in slope] if np.isfinite(slope).all() else None,
+        )
         self.last, self.gap, self.failures, self.taylor = a, False, 0, None
         self.singular_last = not abs(self.orient[a]) >= self.sample_singular
 
@@ -114,12 +119,12 @@ class SweepRecord:
 
     def reset_after(self, b):
         """Forget everything solved after position b (the chain is restarted there)."""
-        self.q[b + 1:] = np.nan
-        self.slope[b + 1:] = np.nan
-        self.orient[b + 1:] = np.nan
-        self.status[b + 1:] = OK
-        self.iterations[b + 1:] = 0
-        self.sequential[b + 1:] = False
+        self.q[b + 1 :] = np.nan
+        self.slope[b + 1 :] = np.nan
+        self.orient[b + 1 :] = np.nan
+        self.status[b + 1 :] = OK
+        self.iterations[b + 1 :] = 0
+        self.sequential[b + 1 :] = False
         self.errors = {i: e for i, e in self.errors.items() if i <= b}
         self.notes = {i: e for i, e in self.notes.items() if i <= b}
         self.walk_failed = {k: v for k, v in self.walk_failed.items() if k[0] <= b}
@@ -133,8 +138,11 @@ class SweepRecord:
 
     def flipped(self, orient):
         """Is ``orient`` (trusted in sign) the other orientation than the followed one?"""
-        return (self.sign is not None and abs(orient) >= ORIENTATION_FLOOR
-                and sign_of(orient) != self.sign)
+        return (
+            self.sign is not None
+            and abs(orient) >= ORIENTATION_FLOOR
+            and sign_of(orient) != self.sign
+        )
 
     def predict(self, t):
         """Continuation predictor from the last solved position to theta2 = t

@@ -4,8 +4,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..status import OK, SINGULAR
 from ..errors import Singular
+from ..status import OK, SINGULAR
 from .derivatives import point_motion, solve_derivatives
 from .description import read_description
 from .newton import DEFAULT_TOL, SINGULAR_CONDITION, LoopSystem, check_tol, condition
@@ -54,14 +54,21 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
     N = len(theta2)
     inputs = [np.broadcast_to(np.asarray(x, dtype=float), (N,)) for x in (omega2, alpha2, jerk2)]
     tol = check_tol(tol)
-    q, status, iterations, message, notes = solve_sweep(system, theta2, system.model.guess, tol,
-                                                        batch)
+    q, status, iterations, message, notes = solve_sweep(
+        system, theta2, system.model.guess, tol, batch
+    )
     if message is None and notes:
         message = Singular(" ".join(notes.values()))
     ok = status == OK
     nv = len(system.fixed_length)
-    out = LoopMotion(q=q, status=status, iterations=iterations, message=message, notes=notes,
-                     condition=np.full(N, np.nan))
+    out = LoopMotion(
+        q=q,
+        status=status,
+        iterations=iterations,
+        message=message,
+        notes=notes,
+        condition=np.full(N, np.nan),
+    )
     L = np.full((N, nv), np.nan)
     theta = np.full((N, nv), np.nan)
     dL = [np.full((N, nv), np.nan) for _ in range(order)]
@@ -84,9 +91,10 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
             for arr in dL + dth + pts[1:]:
                 arr[singular] = np.nan
             i = int(np.flatnonzero(singular)[0])
-            out.message = out.message or Singular(singular_message(theta2[i], out.condition[i]),
-                                                  condition=float(out.condition[i]))
-    unit = system.unit              # back from the system's normalized lengths
+            out.message = out.message or Singular(
+                singular_message(theta2[i], out.condition[i]), condition=float(out.condition[i])
+            )
+    unit = system.unit  # back from the system's normalized lengths
     if unit != 1.0:
         q[:, system.model.unknown_is_length] *= unit
         L *= unit

@@ -46,13 +46,13 @@ def _entries(vectors, nu):
     f, d = nu, nu + 1
     setup, terms = [], {}
     for v, (b, k, o, li, Lf, fterms, aterms, lterms, dterms) in enumerate(vectors):
-        if b == nu + 1:                       # a fixed angle
+        if b == nu + 1:  # a fixed angle
             angle = ("fixed", math.cos(o), math.sin(o))
         else:
             angle = ("turns", b, k, o)
         if li >= 0:
             length = ("unknown", li)
-        elif b == nu + 1:                     # a fixed vector: constants
+        elif b == nu + 1:  # a fixed vector: constants
             length = ("constant", Lf * math.cos(o), Lf * math.sin(o))
         else:
             length = ("fixed", Lf)
@@ -109,8 +109,10 @@ def kernel_source(vectors, nu):
         elif length[0] == "constant":
             body += [f"    lc{v} = {_num(length[1])}", f"    ls{v} = {_num(length[2])}"]
         else:
-            body += [f"    lc{v} = {_num(length[1])} * c{v}",
-                     f"    ls{v} = {_num(length[1])} * s{v}"]
+            body += [
+                f"    lc{v} = {_num(length[1])} * c{v}",
+                f"    ls{v} = {_num(length[1])} * s{v}",
+            ]
 
     def a(r, c):
         return f"a{r}_{c}"
@@ -125,19 +127,27 @@ def kernel_source(vectors, nu):
                 expr = "-" + expr[2:]
             body.append(f"    {a(r, c)} = {expr}")
     body.append(f"    res = hypot({', '.join(a(r, f) for r in range(n))})")
-    body.append("    norms = " + " * ".join(f"hypot({', '.join(a(r, c) for r in range(n))})"
-                                            for c in range(nu)))
+    body.append(
+        "    norms = "
+        + " * ".join(f"hypot({', '.join(a(r, c) for r in range(n))})" for c in range(nu))
+    )
     body.append("    det = 1.0")
     for k in range(nu):
         cols = range(k, width)
         row_k = ", ".join(a(k, c) for c in cols)
-        for r in range(k + 1, n):             # partial pivoting: the largest |a_rk| to row k
+        for r in range(k + 1, n):  # partial pivoting: the largest |a_rk| to row k
             row_r = ", ".join(a(r, c) for c in cols)
-            body += [f"    if abs({a(r, k)}) > abs({a(k, k)}):",
-                     f"        {row_k}, {row_r} = {row_r}, {row_k}",
-                     "        det = -det"]
-        body += [f"    if {a(k, k)} == 0.0:", "        return res, 0.0, None, None",
-                 f"    det *= {a(k, k)}", f"    i{k} = 1.0 / {a(k, k)}"]
+            body += [
+                f"    if abs({a(r, k)}) > abs({a(k, k)}):",
+                f"        {row_k}, {row_r} = {row_r}, {row_k}",
+                "        det = -det",
+            ]
+        body += [
+            f"    if {a(k, k)} == 0.0:",
+            "        return res, 0.0, None, None",
+            f"    det *= {a(k, k)}",
+            f"    i{k} = 1.0 / {a(k, k)}",
+        ]
         for r in range(k + 1, n):
             body.append(f"    m = {a(r, k)} * i{k}")
             for c in range(k + 1, width):

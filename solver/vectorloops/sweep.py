@@ -55,21 +55,42 @@ from ..status import OK
 from .assembly import scan_gap, step
 from .newton import CONVERGED, DEFAULT_TOL, ORIENTATION_FLOOR, SINGULAR_CONDITION
 from .record import HIGHER_ORDER_CAP, SweepRecord
-from .walks import (JUMP_TOLERANCE, MATCH_TOLERANCE, MIN_WALK_STEP, SAMPLE_SINGULAR, WALK_STEP,
-                    Continuation, sign_of)
+from .walks import (
+    JUMP_TOLERANCE,
+    MATCH_TOLERANCE,
+    MIN_WALK_STEP,
+    SAMPLE_SINGULAR,
+    WALK_STEP,
+    Continuation,
+    sign_of,
+)
 
-__all__ = ["Sweep", "solve_sweep", "singular_message", "COARSE_STEP", "COARSE_RANGE",
-           "COARSE_TARGET", "MAX_STRIDE", "MIN_STRIDE", "GAP_CHUNK",
-           # defined where they are used, named here too
-           "HIGHER_ORDER_CAP", "SAMPLE_SINGULAR", "JUMP_TOLERANCE", "MATCH_TOLERANCE",
-           "WALK_STEP", "MIN_WALK_STEP", "sign_of"]
+__all__ = [
+    "Sweep",
+    "solve_sweep",
+    "singular_message",
+    "COARSE_STEP",
+    "COARSE_RANGE",
+    "COARSE_TARGET",
+    "MAX_STRIDE",
+    "MIN_STRIDE",
+    "GAP_CHUNK",
+    # defined where they are used, named here too
+    "HIGHER_ORDER_CAP",
+    "SAMPLE_SINGULAR",
+    "JUMP_TOLERANCE",
+    "MATCH_TOLERANCE",
+    "WALK_STEP",
+    "MIN_WALK_STEP",
+    "sign_of",
+]
 
-COARSE_STEP = 0.25      # [rad] first theta2 step between sequentially solved positions
+COARSE_STEP = 0.25  # [rad] first theta2 step between sequentially solved positions
 COARSE_RANGE = (0.02, 0.6)  # [rad] the step adapts within this range
-COARSE_TARGET = 0.005   # [rad or length scale] aimed-at chord/slope mismatch per step
-MAX_STRIDE = 256        # most positions between two sequentially solved ones
-MIN_STRIDE = 2          # below this, walk position by position
-GAP_CHUNK = 16          # positions tried together while the loops do not close
+COARSE_TARGET = 0.005  # [rad or length scale] aimed-at chord/slope mismatch per step
+MAX_STRIDE = 256  # most positions between two sequentially solved ones
+MIN_STRIDE = 2  # below this, walk position by position
+GAP_CHUNK = 16  # positions tried together while the loops do not close
 
 
 class Sweep:
@@ -84,7 +105,7 @@ class Sweep:
         self.system, self.theta2, self.tol = system, theta2, tol
         self.continuation = Continuation(system, tol)
         self.record = SweepRecord(theta2, q0, system.scale, self.continuation.sample_singular)
-        self.coarse = COARSE_STEP   # current coarse step [rad]
+        self.coarse = COARSE_STEP  # current coarse step [rad]
         self.scale = system.scale
         self.theta2_list = [float(x) for x in theta2]
 
@@ -120,14 +141,20 @@ class Sweep:
         pred, change = rec.predict(t)
         q, it, res, reason, slope, orient = self.system.newton1(pred, t, self.tol)
         lo, hi = COARSE_RANGE
-        if (reason != CONVERGED or slope is None or not abs(orient) >= cont.sample_singular
-                or rec.flipped(orient)):
+        if (
+            reason != CONVERGED
+            or slope is None
+            or not abs(orient) >= cont.sample_singular
+            or rec.flipped(orient)
+        ):
             self.coarse = max(lo, 0.5 * self.coarse)
             return False
         ta, qa, sa = rec.state
         h = t - ta
-        error = max(abs(q1 - q0 - 0.5 * h * (s0 + s1)) / sc
-                    for q0, q1, s0, s1, sc in zip(qa, q, sa, slope, cont.scale_list))
+        error = max(
+            abs(q1 - q0 - 0.5 * h * (s0 + s1)) / sc
+            for q0, q1, s0, s1, sc in zip(qa, q, sa, slope, cont.scale_list)
+        )
         # the mismatch grows like h**3: aim the next step at COARSE_TARGET
         grow = 0.9 * (COARSE_TARGET / max(error, 1e-12)) ** (1 / 3)
         self.coarse = min(hi, max(lo, abs(h) * min(2.0, max(0.5, grow))))
@@ -149,13 +176,12 @@ class Sweep:
         idx = np.concatenate([np.arange(a + 1, b) for a, b in intervals])
         th = self.theta2
         guess, rate = self.hermite(idx, A[owner], Bn[owner])
-        q, it, res, reason, _, orient = self.system.newton(guess, th[idx], self.tol,
-                                                           slopes=False)
+        q, it, res, reason, _, orient = self.system.newton(guess, th[idx], self.tol, slopes=False)
         dt = np.abs(th[idx] - th[idx - 1])[:, None]
         change = np.max(np.abs(rate * dt) / self.scale, axis=1)
         off = np.max(np.abs(q - guess) / self.scale, axis=1)
         good = (reason == CONVERGED) & (off <= JUMP_TOLERANCE + 0.5 * change)
-        if rec.sign is not None:   # never the other orientation
+        if rec.sign is not None:  # never the other orientation
             good &= ~((np.abs(orient) >= ORIENTATION_FLOOR) & (np.sign(orient) != rec.sign))
         rec.q[idx], rec.iterations[idx], rec.orient[idx] = q, it, orient
         bad = np.unique(owner[~good])
@@ -169,10 +195,18 @@ class Sweep:
         s = ((th[idx] - th[a]) / (th[b] - th[a]))[:, None]
         s2, s3 = s * s, s * s * s
         qa, qb, sa, sb = rec.q[a], rec.q[b], rec.slope[a] * h, rec.slope[b] * h
-        guess = ((2 * s3 - 3 * s2 + 1) * qa + (s3 - 2 * s2 + s) * sa
-                 + (3 * s2 - 2 * s3) * qb + (s3 - s2) * sb)
-        rate = ((6 * s2 - 6 * s) * qa + (3 * s2 - 4 * s + 1) * sa
-                + (6 * s - 6 * s2) * qb + (3 * s2 - 2 * s) * sb) / h
+        guess = (
+            (2 * s3 - 3 * s2 + 1) * qa
+            + (s3 - 2 * s2 + s) * sa
+            + (3 * s2 - 2 * s3) * qb
+            + (s3 - s2) * sb
+        )
+        rate = (
+            (6 * s2 - 6 * s) * qa
+            + (3 * s2 - 4 * s + 1) * sa
+            + (6 * s - 6 * s2) * qb
+            + (3 * s2 - 2 * s) * sb
+        ) / h
         return guess, rate
 
     # --- position by position -----------------------------------------------------
@@ -205,8 +239,13 @@ class Sweep:
             i = start
             dense_until = -1
             while i < N:
-                if (batch and i > dense_until and rec.last == i - 1 and not rec.gap
-                        and rec.state[2] is not None):
+                if (
+                    batch
+                    and i > dense_until
+                    and rec.last == i - 1
+                    and not rec.gap
+                    and rec.state[2] is not None
+                ):
                     b = self.coarse_end(i - 1)
                     if b - (i - 1) >= MIN_STRIDE:
                         if self.coarse_step(i - 1, b):
@@ -222,8 +261,11 @@ class Sweep:
                 orient_b = rec.orient[b]
                 rec.restore(a)
                 self.walk_dense(a + 1, b + 1)
-                if (rec.status[b] == OK and rec.last == b
-                        and np.max(np.abs(rec.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE):
+                if (
+                    rec.status[b] == OK
+                    and rec.last == b
+                    and np.max(np.abs(rec.q[b] - q_b) / self.scale) <= MATCH_TOLERANCE
+                ):
                     rec.q[b], rec.slope[b], rec.iterations[b] = q_b, slope_b, it_b
                     rec.orient[b] = orient_b
                     continue
@@ -266,8 +308,10 @@ def solve_sweep(system, theta2, q0, tol=DEFAULT_TOL, batch=True):
 def singular_message(theta2, cond):
     """The message of a singular position: ``theta2`` [rad] and the Jacobian's
     condition measure ``cond`` (1 best, 0 singular) [-]."""
-    return (f"the loop equations are singular at theta2 = {np.degrees(theta2):.6g} deg "
-            f"(Jacobian condition measure {cond:.2e} < {SINGULAR_CONDITION:g}; its condition "
-            f"number is about {2 / max(cond, 1e-300):.2e}): two links are aligned (a toggle or "
-            f"limit position), so velocities and accelerations are not defined there. Move "
-            f"theta2 away from it.")
+    return (
+        f"the loop equations are singular at theta2 = {np.degrees(theta2):.6g} deg "
+        f"(Jacobian condition measure {cond:.2e} < {SINGULAR_CONDITION:g}; its condition "
+        f"number is about {2 / max(cond, 1e-300):.2e}): two links are aligned (a toggle or "
+        f"limit position), so velocities and accelerations are not defined there. Move "
+        f"theta2 away from it."
+    )

@@ -16,14 +16,14 @@ import numpy as np
 
 from .newton import CONVERGED, ORIENTATION_FLOOR, step_tolerance
 
-JUMP_TOLERANCE = 0.05   # [rad or length scale] beyond the predicted change
-WALK_STEP = 0.05        # [rad] largest continuation step of a walk
-MIN_WALK_STEP = 1e-6    # [rad] smallest step of a walk before it gives up
-WALK_ITERATIONS = 8     # Newton steps a walk step may take before it is halved
+JUMP_TOLERANCE = 0.05  # [rad or length scale] beyond the predicted change
+WALK_STEP = 0.05  # [rad] largest continuation step of a walk
+MIN_WALK_STEP = 1e-6  # [rad] smallest step of a walk before it gives up
+WALK_ITERATIONS = 8  # Newton steps a walk step may take before it is halved
 MATCH_TOLERANCE = 1e-8  # [rad or length scale] two solutions are the same assembly
 SAMPLE_SINGULAR = 100.0  # a solved position whose |orientation| is below this many times
-                         # Newton's step tolerance (at most 1e-3) is treated as singular:
-                         # its orientation's sign and its slope are not trusted
+# Newton's step tolerance (at most 1e-3) is treated as singular:
+# its orientation's sign and its slope are not trusted
 
 
 def sign_of(x):
@@ -75,20 +75,28 @@ class Continuation:
         while (target - t) * dist > 0.0:
             if not np.isfinite(slope).all():
                 return "stuck", abs(t - t0)
-            if abs(h) >= abs(target - t):     # the last step lands on target exactly
+            if abs(h) >= abs(target - t):  # the last step lands on target exactly
                 t_next, h = target, target - t
             else:
                 t_next = t + h
             pred = q + slope * h
             change = float(np.max(np.abs(slope * h) / self.scale))
-            qk, _, _, reason, sk, ok = self.system.newton1(pred, t_next, self.tol,
-                                                           WALK_ITERATIONS)
-            closed = (reason == CONVERGED and sk is not None
-                      and not self.jumped(np.asarray(qk), pred, change))
-            other = (closed and sign is not None and abs(ok) >= ORIENTATION_FLOOR
-                     and sign_of(ok) != sign)
-            if (closed and not other and sign is not None and math.isfinite(orient)
-                    and not abs(ok) >= self.sample_singular):
+            qk, _, _, reason, sk, ok = self.system.newton1(pred, t_next, self.tol, WALK_ITERATIONS)
+            closed = (
+                reason == CONVERGED
+                and sk is not None
+                and not self.jumped(np.asarray(qk), pred, change)
+            )
+            other = (
+                closed and sign is not None and abs(ok) >= ORIENTATION_FLOOR and sign_of(ok) != sign
+            )
+            if (
+                closed
+                and not other
+                and sign is not None
+                and math.isfinite(orient)
+                and not abs(ok) >= self.sample_singular
+            ):
                 return "flip", (t, q, orient, slope, t_next, np.asarray(qk), ok)
             if closed and not other:
                 q, slope, t, orient = np.asarray(qk), np.asarray(sk), t_next, ok
