@@ -542,7 +542,7 @@ def _table(walk, phase):
     v = walk.values
     if phase == "velocity":
         text += (
-            "\n\nMeasured, then divided by the link lengths (eq. 6.7): "
+            "\n\nMeasured, then divided by the link lengths ($V = r\\omega$): "
             + _rate(
                 r"\omega_4", r"V_B", "c", abs(v["V_B"]), lengths["c"], v["omega4"], walk, "rad/s"
             )
@@ -718,7 +718,9 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     top = 0.62  # [in] two lines of title
     kinds, lines = _kinds(walk, st.diagram)
     n_legend = len(kinds) + (1 if lines else 0) if st.label != "P" else 0
-    bottom = 0.12 + 0.2 * math.ceil(n_legend / 2) if n_legend else 0.1
+    # below the legend, room for the site's "full size" badge (bottom right) to cover nothing
+    badge = 0.3
+    bottom = badge + 0.04 + 0.2 * math.ceil(n_legend / 2) if n_legend else badge
     height = ax_h + top + bottom
     fig.set_size_inches(width, height)
     ax.set_position([left, bottom / height, 1 - left - right, ax_h / height])
@@ -736,7 +738,7 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
             kinds,
             lines,
             loc="lower left",
-            bbox_to_anchor=(0.02, 0.01),
+            bbox_to_anchor=(0.02, badge / height),
             ncol=2,
             handlelength=2.4,
             columnspacing=1.2,
@@ -812,10 +814,8 @@ def _position_marks(ax, walk, lf):
     ax.plot([z.real for z in zs], [z.imag for z in zs], color="#333333", linewidth=1.0, zorder=4)
     for z0, z1 in zip(zs, zs[1:]):
         layer.avoid(z0, z1, width=1.0)
-    mid = O2 + 1.9 * r * cmath.exp(1j * (theta1 + theta2) / 2)
-    layer.add_point(
-        rf"$\theta_2 = {math.degrees(theta2):.0f}^\circ$", mid, color="#333333", priority=0.6
-    )
+    mid = O2 + 1.35 * r * cmath.exp(1j * (theta1 + theta2) / 2)
+    layer.add_point(r"$\theta_2$", mid, color="#333333", priority=0.6)
 
 
 def _turn(ax, centre, along, rate, text, kind, walk):

@@ -958,10 +958,10 @@ def draw_linkage(
                 ln.name,
                 box if main else (region[0], region[1], region[2], region[3]),
                 letters=main,
-                halo=main and _among(ln, new),
+                halo=_among(ln, new),
             )
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
-            if main and _among(a, new) and abs(v) > 0:
+            if _among(a, new) and abs(v) > 0:
                 _halo(target, s, v, offsets[i])
             if _arrow(target, s, v, a.kind, ppd_t, offsets[i]):
                 labels.avoid(
@@ -1088,10 +1088,10 @@ def draw_polygon(
                 ln.name,
                 frame,
                 letters=main,
-                halo=main and _among(ln, new),
+                halo=_among(ln, new),
             )
         for a, (s, v) in zip(arrows, drawn):
-            if main and _among(a, new) and abs(v) > 0:
+            if _among(a, new) and abs(v) > 0:
                 _halo(target, s, v)
             if _arrow(target, s, v, a.kind, ppd_t):
                 labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"])
