@@ -97,6 +97,17 @@ def test_tables_in_the_drawings_units(walk):
     assert "| crank $O_2A$ (link 2) | $a$ | 2 in |" in given and "30°" in given
 
 
+def test_a_metric_linkage_is_walked_in_its_units():
+    si = dict(EXAMPLE_7_1, a="50 mm", b="150 mm", c="225 mm", d="175 mm", p="75 mm")
+    walk = by_hand(construct_case(si))
+    vel, acc = walk.table("velocity"), walk.table("acceleration")
+    assert " m/s |" in vel and "in/s" not in vel and " m/s² |" in acc
+    assert "/ 0.225 m = " in vel  # omega4 = V_B / c, in units that divide
+    fig = draw_stroke(walk, "6k")
+    assert any(t.endswith("m/s$^2$") for t in _texts(fig))
+    plt.close(fig)
+
+
 def test_refuses_what_it_does_not_draw():
     with pytest.raises(ValueError, match="draws the fourbar of Example 7-1"):
         by_hand(construction("graphical-slidercrank"))

@@ -596,9 +596,9 @@ def _lengths(walk):
 def _rate(symbol, of, link, size, length, value, walk, unit):
     kind = "velocity" if "omega" in symbol else "acceleration"
     uname, uf = _unit_text(walk, kind)
-    lname, lf = _unit_text(walk, "length")
+    lname = uname.split("/")[0]  # the length of the quantity's own unit: in/s / in, m/s / m
     return (
-        f"${symbol} = {of}/{link}$ = {size * uf:.4g} {uname} / {length * lf:.4g} {lname} "
+        f"${symbol} = {of}/{link}$ = {size * uf:.4g} {uname} / {length * uf:.4g} {lname} "
         f"= **{value:+.4g} {unit}** ({_sense(value)})"
     )
 
@@ -673,8 +673,6 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     -------
     matplotlib Figure
     """
-    import textwrap
-
     import matplotlib.pyplot as plt
 
     from .draw import _legend, draw_linkage, draw_polygon, units_of
@@ -714,7 +712,7 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     y0, y1 = ax.get_ylim()
     ax_w = (1 - left - right) * width
     ax_h = ax_w * (y1 - y0) / (x1 - x0)
-    title = textwrap.fill(f"{st.label}. {st.title}", 200)
+    title = f"{st.label}. {st.title}"
     top = 0.62  # [in] two lines of title
     kinds, lines = _kinds(walk, st.diagram)
     n_legend = len(kinds) + (1 if lines else 0) if st.label != "P" else 0
