@@ -18,6 +18,7 @@ from accelab.solver.graphical.labels import layers
 #: how wide a 390 px phone shows a figure of the site (measured in headless Chromium) [CSS px]
 PHONE_WIDTH = 342
 SMALLEST_TEXT = 9.0  # CSS px
+PAD = 0.1  # in: what a "tight" save (the notebook's inline backend) adds all round
 
 
 @pytest.fixture(scope="module")
@@ -162,7 +163,8 @@ def test_one_frame_one_scale_and_readable_on_a_phone(walk, diagram):
                     w = min(a[2], b[2]) - max(a[0], b[0])
                     h = min(a[3], b[3]) - max(a[1], b[1])
                     assert not (w > 0.5 and h > 0.5), (label, a, b)
-        shown = PHONE_WIDTH / (fig.get_figwidth() * 72)  # CSS px per pt
+        # saved as Jupyter saves it ("tight", 0.1 in of padding), shown 342 px wide
+        shown = PHONE_WIDTH / ((fig.get_figwidth() + 2 * PAD) * 72)  # CSS px per pt
         assert min(_fonts(fig)) * shown >= SMALLEST_TEXT, (label, min(_fonts(fig)))
         assert fig.get_figwidth() == FIGURE_WIDTH
         plt.close(fig)
@@ -175,6 +177,24 @@ def _texts(fig):
     for ax in fig.axes:
         out += [t.get_text() for t in ax.texts]
     return out + [lab["text"] for layer in layers(fig) for lab in layer.labels]
+
+
+def test_a_tight_save_keeps_the_figures_size(walk):
+    """Jupyter saves figures "tight": the badge room under the legend must survive it."""
+    import io
+
+    from PIL import Image
+
+    for label in ("P", "6g", "8e"):
+        fig = draw_stroke(walk, label)
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=100, bbox_inches="tight", pad_inches=PAD)
+        w, h = Image.open(buf).size
+        assert (w, h) == (
+            round((fig.get_figwidth() + 2 * PAD) * 100),
+            round((fig.get_figheight() + 2 * PAD) * 100),
+        )
+        plt.close(fig)
 
 
 def test_polygons_of_b_and_p_share_one_scale(walk):

@@ -44,9 +44,9 @@ from .geometry import intersect_lines
 
 __all__ = ["by_hand", "Walk", "Stroke", "draw_stroke", "case_table", "Markdown"]
 
-#: width of a walk's figures [in]: at 100 dpi on a phone's 358 CSS px, text of
-#: 10 pt is about 10 CSS px high
-FIGURE_WIDTH = 5.0
+#: width of a walk's figures [in]: saved "tight" (Jupyter pads 0.1 in all round) at
+#: 100 dpi, 500 px, which a phone shows 342 CSS px wide: text of 10 pt is 9.5 CSS px high
+FIGURE_WIDTH = 4.8
 #: how long the crank's normal component A_A^n is drawn on the linkage, as a
 #: fraction of the crank: it lies beside the crank and stops short of O2
 CRANK_FRACTION = 0.75
@@ -674,6 +674,7 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     matplotlib Figure
     """
     import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
 
     from .draw import _legend, draw_linkage, draw_polygon, units_of
 
@@ -730,6 +731,8 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
         va="top",
         fontsize=style.TITLE_SIZE,
     )
+    # an invisible frame: a "tight" save (Jupyter's) keeps the figure's own size, badge room too
+    fig.add_artist(Rectangle((0, 0), 1, 1, transform=fig.transFigure, fill=False, edgecolor="none"))
     if n_legend:
         _legend(
             fig,

@@ -630,6 +630,13 @@ def _magnifier(ax, plan, spot, tiny, draw):
     inset.patch.set_facecolor("white")
     inset.patch.set_alpha(0.95)
     labels = LabelLayer(inset)
+    # the factor's corner (top left): the labels keep off it
+    w, h = region[1] - region[0], region[3] - region[2]
+    corner = [
+        complex(region[0] + fx * w, region[2] + fy * h) for fx, fy in ((0.0, 0.8), (0.3, 1.0))
+    ]
+    labels.avoid(corner[0], corner[1], width=1.0)
+    labels.avoid(complex(corner[0].real, corner[1].imag), complex(corner[1].real, corner[0].imag))
     draw(inset, labels, region, tiny)
     inset.text(
         0.04,
