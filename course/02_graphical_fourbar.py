@@ -143,7 +143,7 @@ IN = 0.0254  # m per inch: the drawing is in inches
 # $\theta_2$; then swing an arc of radius $b$ about $A$ and one of radius $c$ about $O_4$.
 # They meet at $B$ (the open circuit takes the upper crossing).
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step P, on the linkage."}, "image": {"alt": "The fourbar of Example 7-1 drawn to scale, with the two arcs that locate B and the crank angle theta2."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step P, on the linkage."}, "image": {"alt": "The fourbar of Example 7-1 drawn to scale, with the two arcs that locate B and the crank angle theta2."}}
 show("P")
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
@@ -161,7 +161,7 @@ Markdown(
 # outright, $a\omega_2$ perpendicular to the crank in the sense of $\omega_2$; it is drawn
 # from a pole $o_V$, the point of zero velocity.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V1, on the velocity polygon."}, "image": {"alt": "Velocity polygon with the vector V_A drawn from the pole o_V."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V1, on the velocity polygon."}, "image": {"alt": "Velocity polygon with the vector V_A drawn from the pole o_V."}}
 show("V1")
 
 # %% [markdown]
@@ -169,20 +169,20 @@ show("V1")
 # through the pole. Relative to $A$, $B$ turns with link 3, so $\mathbf{V}_{BA}$ is
 # perpendicular to $AB$: a line through the tip of $\mathbf{V}_A$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V2, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_A and a line through the pole perpendicular to O4B."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V2, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_A and a line through the pole perpendicular to O4B."}}
 show("V2")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V3, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_A and the two direction lines, perpendicular to O4B and to AB."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V3, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_A and the two direction lines, perpendicular to O4B and to AB."}}
 show("V3")
 
 # %% [markdown]
 # Where the two lines cross is the tip of $\mathbf{V}_B$: from the pole to the crossing is
 # $\mathbf{V}_B$, from the tip of $\mathbf{V}_A$ to the crossing is $\mathbf{V}_{BA}$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V4, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_B drawn from the pole to where the two lines cross."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V4, on the velocity polygon."}, "image": {"alt": "Velocity polygon: V_B drawn from the pole to where the two lines cross."}}
 show("V4")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V5, on the velocity polygon."}, "image": {"alt": "The finished velocity polygon: V_A, V_B and V_BA."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step V5, on the velocity polygon."}, "image": {"alt": "The finished velocity polygon: V_A, V_B and V_BA."}}
 show("V5")
 
 # %% [markdown]
@@ -206,7 +206,7 @@ walk.table("velocity")
 # $\mathbf{A}^t_A$ perpendicular to $O_2A$ in the sense of $\alpha_2$. The vectors on the
 # linkage have their own scale (the lower bar), one for the whole linkage drawing.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 2a, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration of A drawn at A, toward O2."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 2a, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration of A drawn at A, toward O2."}}
 show("2a")
 
 # %% [markdown]
@@ -215,7 +215,7 @@ show("2a")
 # magnified in the small box, at the factor written in it. (The chapter's Figure 7-4 draws
 # these two components at twice size for the same reason.)
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 2b, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with both components of the acceleration of A, the short tangential one also shown magnified."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 2b, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with both components of the acceleration of A, the short tangential one also shown magnified."}}
 show("2b")
 
 # %% [markdown]
@@ -223,7 +223,7 @@ show("2b")
 # perpendicular to $O_4B$. Its size is unknown; draw its direction, the construction line
 # $pp$ through $B$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 3, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with construction line pp through B, perpendicular to O4B."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 3, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with construction line pp through B, perpendicular to O4B."}}
 show("3")
 
 # %% [markdown]
@@ -232,7 +232,7 @@ show("3")
 # $\mathbf{A}^t_B$ ($pp$) and $\mathbf{A}^n_B$ (along $BO_4$), and the size of
 # $\mathbf{A}^n_B = c\,\omega_4^2$ from the velocity polygon's $\omega_4$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 4, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration of B drawn at B, toward O4."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 4, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration of B drawn at B, toward O4."}}
 show("4")
 
 # %% [markdown]
@@ -241,10 +241,10 @@ show("4")
 # centre of the relative rotation), and $\mathbf{A}^t_{BA}$ is perpendicular to $AB$: the
 # construction line $qq$ through $B$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 5a, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration difference of B relative to A drawn at B, toward A."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 5a, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with the normal acceleration difference of B relative to A drawn at B, toward A."}}
 show("5a")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 5b, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with construction line qq through B, perpendicular to AB: Figure 7-4a complete."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 5b, on the linkage (Figure 7-4a)."}, "image": {"alt": "The linkage with construction line qq through B, perpendicular to AB: Figure 7-4a complete."}}
 show("5b")
 
 # %% [markdown]
@@ -254,13 +254,13 @@ show("5b")
 # equation gives them. The right side starts with $\mathbf{A}_A$: its two components, then
 # their sum.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6a, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the short tangential component of A_A from the pole, also shown magnified."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6a, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the short tangential component of A_A from the pole, also shown magnified."}}
 show("6a")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6b, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_A at the tip of the tangential one."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6b, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_A at the tip of the tangential one."}}
 show("6b")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6c, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: A_A from the pole, the sum of its two components."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6c, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: A_A from the pole, the sum of its two components."}}
 show("6c")
 
 # %% [markdown]
@@ -269,10 +269,10 @@ show("6c")
 # but it is on the *left* side of eq. 7.4, so it is subtracted: draw $-\mathbf{A}^n_B$ (the
 # opposite sense) at the tip of $\mathbf{A}^n_{BA}$.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6d, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_BA added at the tip of A_A."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6d, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_BA added at the tip of A_A."}}
 show("6d")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6e, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: minus the normal component of A_B added at the tip of the normal component of A_BA."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6e, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: minus the normal component of A_B added at the tip of the normal component of A_BA."}}
 show("6e")
 
 # %% [markdown]
@@ -281,10 +281,10 @@ show("6e")
 # $-\mathbf{A}^n_B$, and a line parallel to $pp$ (the direction of $\mathbf{A}^t_B$) through
 # the pole, since the left side, $\mathbf{A}_B$, must start where the polygon started.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6f, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: a line parallel to qq through the tip of minus A_B normal."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6f, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: a line parallel to qq through the tip of minus A_B normal."}}
 show("6f")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6g, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: a line parallel to pp through the pole; the two lines cross."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6g, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: a line parallel to pp through the pole; the two lines cross."}}
 show("6g")
 
 # %% [markdown]
@@ -295,10 +295,10 @@ show("6g")
 # $\mathbf{A}^n_B$ was moved across), from the pole to the same crossing: both chains end
 # there, which is eq. 7.4 drawn.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6h, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the tangential component of A_BA, from the tip of minus A_B normal to the crossing."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6h, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the tangential component of A_BA, from the tip of minus A_B normal to the crossing."}}
 show("6h")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6i, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the tangential component of A_B, from the pole to the crossing."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6i, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the tangential component of A_B, from the pole to the crossing."}}
 show("6i")
 
 # %% [markdown]
@@ -307,10 +307,10 @@ show("6i")
 # close with $\mathbf{A}_B$ from the pole. (The two copies of $\mathbf{A}^n_B$ and
 # $-\mathbf{A}^n_B$ are parallel and equal: a parallelogram, a check on the drawing.)
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6j, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_B drawn again at the tip of the tangential one."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6j, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "Acceleration polygon: the normal component of A_B drawn again at the tip of the tangential one."}}
 show("6j")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6k, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "The finished acceleration polygon, Figure 7-4b: A_B from the pole closes it."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 6k, on the acceleration polygon (Figure 7-4b)."}, "image": {"alt": "The finished acceleration polygon, Figure 7-4b: A_B from the pole closes it."}}
 show("6k")
 
 # %% [markdown]
@@ -322,7 +322,7 @@ show("6k")
 # depends on $\omega_4$ too. Here $\mathbf{A}^t_B$ turns the rocker counter-clockwise,
 # $\alpha_4 > 0$, while $\omega_4 < 0$ (clockwise): $B$ is slowing down.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 7a, on the linkage, reading the senses."}, "image": {"alt": "The linkage with the tangential acceleration of B at B, and curved arrows for the senses of alpha4 and omega4 about O4."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 7a, on the linkage, reading the senses."}, "image": {"alt": "The linkage with the tangential acceleration of B at B, and curved arrows for the senses of alpha4 and omega4 about O4."}}
 show("7a")
 
 # %% [markdown]
@@ -331,7 +331,7 @@ show("7a")
 # $\alpha_3$ turns $AB$ about $A$. Link 3's $\alpha_3$ is a free vector: the same at every
 # point of the link.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 7b, on the linkage, reading the senses."}, "image": {"alt": "The linkage with the tangential acceleration difference of B relative to A, and curved arrows for the senses of alpha3 and omega3."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 7b, on the linkage, reading the senses."}, "image": {"alt": "The linkage with the tangential acceleration difference of B relative to A, and curved arrows for the senses of alpha3 and omega3."}}
 show("7b")
 
 # %% [markdown]
@@ -352,16 +352,16 @@ walk.table("acceleration")
 # $PA$ (the chapter's equations (e) to (g)). All three are fully known: no construction lines,
 # and the same scale as the polygon of step 6.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8a, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: A_A from the pole."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8a, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: A_A from the pole."}}
 show("8a")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8b, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: the normal acceleration difference of P relative to A at the tip of A_A."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8b, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: the normal acceleration difference of P relative to A at the tip of A_A."}}
 show("8b")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8c, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: the tangential acceleration difference of P relative to A added."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8c, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "Polygon of P: the tangential acceleration difference of P relative to A added."}}
 show("8c")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8d, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "The polygon of P, Figure 7-4c: A_P from the pole closes it."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8d, on the polygon of P (Figure 7-4c)."}, "image": {"alt": "The polygon of P, Figure 7-4c: A_P from the pole closes it."}}
 show("8d")
 
 # %% tags=["remove-input"] jupyter={"source_hidden": true}
@@ -371,7 +371,7 @@ walk.table("point")
 # Last, the chapter's Figure 7-4d: the answers drawn back at their points on the linkage,
 # at the linkage's scale.
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8e, on the linkage (Figure 7-4d)."}, "image": {"alt": "The linkage with the accelerations of A, B and P drawn at their points: Figure 7-4d."}}
+# %% tags=["remove-input", "step-figure"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Step 8e, on the linkage (Figure 7-4d)."}, "image": {"alt": "The linkage with the accelerations of A, B and P drawn at their points: Figure 7-4d."}}
 show("8e")
 
 # %% [markdown]
