@@ -815,8 +815,9 @@ def _position_marks(ax, walk, lf):
     ax.plot([z.real for z in zs], [z.imag for z in zs], color="#333333", linewidth=1.0, zorder=4)
     for z0, z1 in zip(zs, zs[1:]):
         layer.avoid(z0, z1, width=1.0)
-    mid = O2 + 1.35 * r * cmath.exp(1j * (theta1 + theta2) / 2)
-    layer.add_point(r"$\theta_2$", mid, color="#333333", priority=0.6)
+    # in the wedge between the ground line and the crank, just beyond the arc
+    mid = O2 + 1.55 * r * cmath.exp(1j * (theta1 + theta2) / 2)
+    layer.add_fixed(r"$\theta_2$", mid, color="#333333", fontsize=style.LABEL_SIZE)
 
 
 def _turn(ax, centre, along, rate, text, kind, walk):
