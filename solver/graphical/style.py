@@ -15,7 +15,8 @@ resultant     black            solid, bold absolute vectors that close a polygon
 velocity      orange           solid       velocity-polygon vectors
 ============  ===============  ==========  =========================
 
-Construction lines (pp, qq, rr) are thin grey long-dashed lines.
+Construction lines (pp, qq, rr) are thin grey long-dashed lines. In a walk
+through a construction, what the step being shown adds lies on a pale yellow band.
 """
 
 OKABE_ITO = {
@@ -70,6 +71,14 @@ COMPONENT = {
 }
 
 CONSTRUCTION_LINE = {"color": "#8c8c8c", "linestyle": (0, (8, 4)), "linewidth": 0.9}
+#: the pale band under what the step being shown adds (a walk through a construction)
+HIGHLIGHT = {
+    "color": "#FFD84D",
+    "alpha": 0.55,
+    "linewidth": 9.0,
+    "solid_capstyle": "round",
+    "zorder": 2.5,
+}
 LINK = {"color": "#4d4d4d", "linewidth": 4.0, "solid_capstyle": "round", "zorder": 2}
 COUPLER_FILL = {"facecolor": "#d9d9d9", "edgecolor": "#4d4d4d", "linewidth": 1.2, "zorder": 1}
 PIN = {"s": 38, "facecolor": "white", "edgecolor": "#222222", "linewidths": 1.3, "zorder": 5}
