@@ -21,10 +21,19 @@ folder should be) stops it with a :class:`LayoutError` that says what to do.
 """
 
 import grp
+import importlib.util
 import os
 import pwd
 import stat
 
+#: accelab's templates (formgrader's submission page with ids escaped), and nbgrader's
+TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
+FORMGRADER_TEMPLATES = os.path.join(
+    os.path.dirname(os.path.abspath(importlib.util.find_spec("nbgrader").origin)),
+    "server_extensions",
+    "formgrader",
+    "templates",
+)
 #: modes of the exchange: root, a course's folder, and its subfolders
 ROOT_MODE = 0o1777
 COURSE_MODE = 0o755
@@ -242,10 +251,7 @@ def exchange_problem(root, course_id):
 
 def exchange_of(config):
     """The exchange root a course's nbgrader configuration names."""
-    try:
-        root = config.Exchange.root
-    except AttributeError:
-        root = None
+    root = config.get("Exchange", {}).get("root") if hasattr(config, "get") else None
     return str(root) if isinstance(root, str) and root else "/usr/local/share/nbgrader/exchange"
 
 
@@ -255,7 +261,7 @@ def check(course_dir, config, accounts=(), say=print):
     changed). Raises :class:`LayoutError` for a course folder that is not yours."""
     course_dir = private_course(course_dir, accounts, say)
     root = exchange_of(config)
-    course_id = getattr(getattr(config, "CourseDirectory", None), "course_id", "") or ""
+    course_id = str(config.get("CourseDirectory", {}).get("course_id") or "")
     if os.path.isdir(root) and inside(root, course_dir):
         say(
             f"the exchange {root} is inside the course folder: students who can hand in can "
@@ -266,7 +272,7 @@ def check(course_dir, config, accounts=(), say=print):
         problem = exchange_problem(root, course_id)
         if problem:
             say(problem)
-    collect = getattr(getattr(config, "ExchangeFactory", None), "collect", None)
+    collect = config.get("ExchangeFactory", {}).get("collect")
     if "accelab" not in str(collect):
         say(
             "this course's nbgrader_config.py does not use accelab's collect: submissions "
@@ -274,3 +280,34 @@ def check(course_dir, config, accounts=(), say=print):
             "student can forge; add: from accelab.exercises.grader.collect import "
             "AccelabCollect; c.ExchangeFactory.collect = AccelabCollect"
         )
+
+
+def course_config(course_dir):
+    """The course's nbgrader configuration (a traitlets Config), or None when it has
+    none yet."""
+    from traitlets.config.loader import PyFileConfigLoader
+
+    if not os.path.exists(os.path.join(course_dir, "nbgrader_config.py")):
+        return None
+    return PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
+
+
+def prepare(course_dir, course_id, exchange=None, accounts=(), say=print):
+    """The layout of a course, created or repaired before ``accelab assign`` writes
+    anything: the course folder private (:func:`private_course`), the exchange
+    outside it (:func:`prepare_exchange`). ``exchange`` is the exchange of a new
+    course (default: a folder ``exchange`` beside the course folder); an existing
+    course keeps the one its configuration names. Returns the exchange's path."""
+    course_dir = private_course(course_dir, accounts, say)
+    config = course_config(course_dir)
+    if config is not None:
+        configured = exchange_of(config)
+        if exchange and os.path.realpath(exchange) != os.path.realpath(configured):
+            raise LayoutError(
+                f"the course's nbgrader_config.py names the exchange {configured}, not "
+                f"{exchange}: change c.Exchange.root there (and in the students' configuration) "
+                "to move it"
+            )
+        exchange = configured
+    exchange = exchange or os.path.join(os.path.dirname(course_dir), "exchange")
+    return prepare_exchange(exchange, course_id, course_dir, say)

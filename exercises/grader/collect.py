@@ -184,6 +184,8 @@ class AccelabCollect(ExchangeCollect):
         course_dir, assignment = self._course_dir(), self.coursedir.assignment_id
         roster = roster_ids(course_dir)
         only = self.coursedir.student_id if self.coursedir.student_id not in ("", "*") else None
+        if only is None:  # this run says anew what it refused
+            intake.clear_refused(course_dir, assignment, "collect")
         records = []
         for name in sorted(os.listdir(self.inbound_path)):
             claimed = _split_name(name, assignment)
@@ -232,12 +234,16 @@ class AccelabCollect(ExchangeCollect):
         for rec in records:
             by_student.setdefault(rec["username"], []).append(rec)
         self.src_records = []
-        for recs in by_student.values():
+        for sid, recs in by_student.items():
             recs.sort(key=lambda r: r["timestamp"], reverse=True)
             pick = recs[0]
             if self.before_duedate and self.duedate is not None:
                 on_time = [r for r in recs if r["timestamp"] <= self.duedate]
                 pick = on_time[0] if on_time else recs[0]
+            # every name this account handed in under that is not its own (flagged)
+            pick["claims"] = list(
+                dict.fromkeys(r["claimed"] for r in recs if r["claimed"] not in (sid, r["account"]))
+            )
             self.src_records.append(pick)
 
     def copy_files(self):
@@ -256,9 +262,7 @@ class AccelabCollect(ExchangeCollect):
                 existing = intake.parse_time(text) if text is not None else None
                 new = rec["timestamp"]
                 fresher = existing is None or new > existing
-                if not (self.update and fresher) and not (
-                    self.before_duedate and existing != new
-                ):
+                if not (self.update and fresher) and not (self.before_duedate and existing != new):
                     self.log.info(
                         "Submission already collected (use --update for a newer one): %s %s",
                         sid,
@@ -272,7 +276,11 @@ class AccelabCollect(ExchangeCollect):
                 self._refuse(rec["filename"], f"it could not be collected ({why})")
 
     def _collect(self, rec, dest):
-        course_dir, assignment, sid = self._course_dir(), self.coursedir.assignment_id, rec["username"]
+        course_dir, assignment, sid = (
+            self._course_dir(),
+            self.coursedir.assignment_id,
+            rec["username"],
+        )
         src = os.path.join(self.inbound_path, rec["filename"])
         parent = os.path.dirname(dest)
         os.makedirs(parent, exist_ok=True)
@@ -298,11 +306,18 @@ class AccelabCollect(ExchangeCollect):
             when = max(rec["timestamp"], intake.from_ns(newest))
             when, note = intake.timestamp_note(stamp, problem, when)
             notes = []
-            if rec["claimed"] != sid:
+            if rec["claimed"] not in (sid, rec["account"]):  # nbgrader names it by account
                 notes.append(
                     f"handed in under the name {intake.shown(rec['claimed'])} by the account "
                     f"{intake.shown(rec['account'])}, whose submission it is: graded as "
                     f"{sid}'s own"
+                )
+            others = [c for c in rec.get("claims", []) if c != rec["claimed"]]
+            if others:
+                notes.append(
+                    f"the account {intake.shown(rec['account'])} also handed in under the "
+                    f"name(s) {', '.join(intake.shown(c) for c in others[:5])} (earlier "
+                    "submissions, not graded: only the latest is)"
                 )
             notes += [note] if note else []
             notes += copier.notes

@@ -379,6 +379,18 @@ def note_refused(course_dir, assignment, folder, reason, step="collect"):
     write_atomic(path, json.dumps(items[-500:], indent=1))
 
 
+def clear_refused(course_dir, assignment, step):
+    """Forget the folders refused at ``step`` (a new collect of everyone says anew)."""
+    path = refused_path(course_dir, assignment)
+    try:
+        with open(path, encoding="utf-8") as fh:
+            items = json.load(fh)
+    except (OSError, ValueError):
+        return
+    kept = [i for i in items if isinstance(i, dict) and i.get("step") != step]
+    write_atomic(path, json.dumps(kept, indent=1))
+
+
 def refusals(course_dir, assignment):
     """Sentences for the instructor: every folder refused at collect or grade."""
     try:
@@ -387,7 +399,8 @@ def refusals(course_dir, assignment):
     except (OSError, ValueError):
         return []
     return [
-        f"{i.get('step', 'collect')}: the folder {i.get('folder')} was not graded: {i.get('reason')}"
+        f"{i.get('step', 'collect')}: the folder {i.get('folder')} was not collected: "
+        f"{i.get('reason')}"
         for i in items
         if isinstance(i, dict)
     ]
@@ -428,7 +441,7 @@ def submissions(course_dir, assignment, roster=None):
             continue
         problem = id_problem(name, roster)
         if problem:
-            refused.append((shown(name), f"the name {shown(name)} {problem}"))
+            refused.append((shown(name), f"its name {problem}"))
         else:
             ids.append(name)
     return ids, refused

@@ -43,7 +43,9 @@ def judge(asked, report, expected, tolerance, angle_tolerance, ureg):
 
     ``expected`` is the key: an SI float, or the right word.
     """
-    return judge_reading(asked, read(asked, report, ureg), expected, tolerance, angle_tolerance, ureg)
+    return judge_reading(
+        asked, read(asked, report, ureg), expected, tolerance, angle_tolerance, ureg
+    )
 
 
 def judge_reading(asked, reading, expected, tolerance, angle_tolerance, ureg):
