@@ -418,7 +418,7 @@ class Budget:
     def take_output(self):
         if self.outputs <= 0 or self.cell_outputs <= 0:
             self.leave_out(
-                f"more than {self.limits.outputs_per_cell} outputs in a cell or "
+                f"outputs past {self.limits.outputs_per_cell} a cell or "
                 f"{self.limits.total_outputs} in the notebook"
             )
             return False
@@ -430,12 +430,12 @@ class Budget:
         """Whether the image (base64 text) is kept; the reason is noted when not."""
         if self.images <= 0 or self.cell_images <= 0:
             self.leave_out(
-                f"more than {self.limits.images_per_cell} images in a cell or "
+                f"images past {self.limits.images_per_cell} a cell or "
                 f"{self.limits.total_images} in the notebook"
             )
             return False
         if len(png) > (self.limits.image_bytes * 4) // 3 + 4:
-            self.leave_out(f"images larger than {self.limits.image_bytes >> 10} KiB")
+            self.leave_out(f"images over {self.limits.image_bytes >> 10} KiB")
             return False
         size = png_size(png)
         if size is None:
@@ -445,8 +445,8 @@ class Budget:
         side, pixels = self.limits.image_side, self.limits.image_pixels
         if width > side or height > side or width * height > pixels:
             self.leave_out(
-                f"images larger than {side} x {side} pixels or {pixels / 1e6:g} million pixels "
-                f"(one was {width} x {height})"
+                f"images over {side} x {side} pixels or {pixels / 1e6:g} million pixels "
+                f"(one of {width} x {height})"
             )
             return False
         nbytes = len(png) * 3 // 4
@@ -462,11 +462,11 @@ class Budget:
         """A stream output that says what of this cell was left out, or None."""
         if not self.left_out:
             return None
-        parts = [f"{n} ({why})" for why, n in self.left_out.items()]
+        parts = [f"{why}: {n}" for why, n in self.left_out.items()]
         return {
             "output_type": "stream",
             "name": "stderr",
-            "text": f"[the grader left out outputs of this cell: {'; '.join(parts)}]\n",
+            "text": f"[the grader left out outputs of this cell ({'; '.join(parts)})]\n",
         }
 
 
