@@ -964,11 +964,54 @@ def test_late_work_is_noted_under_every_policy(graded):
     course = graded["course"]
     with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
         fh.write("c.LateSubmissionPlugin.penalty_method = 'none'\n")
-    proc = accelab(
-        "grade", "--course", course, "--assignment", "A", "--student", "late", "--quiet"
-    )
+    proc = accelab("grade", "--course", course, "--assignment", "A", "--student", "late", "--quiet")
     assert "Traceback" not in proc.stderr
     with open(os.path.join(course, "grades_A.csv")) as fh:
         row = next(r for r in csv.DictReader(fh) if r["student"] == "late")
     assert float(row["total"]) == len(graded["names"]), row
     assert "late by" in row["notes"] and "no penalty" in row["notes"], row
+
+
+def test_formgraders_submission_page_escapes_the_student_id(graded):
+    """nbgrader's formgrade page prints the student's id and names as HTML; the
+    course's configuration puts accelab's macros in front, which escape them. The
+    page is rendered here as formgrader renders it (its own configuration, then the
+    course's)."""
+    from html.parser import HTMLParser
+
+    from nbconvert.exporters import HTMLExporter
+    from nbgrader.server_extensions.formgrader.formgrader import FormgradeExtension
+
+    from accelab.exercises.grader.grade import load_config
+
+    config = FormgradeExtension().build_extra_config()
+    config.merge(load_config(graded["course"]))
+    exporter = HTMLExporter(config=config)
+    markup = "<img src=x onerror=window.accelabOwned=1>"
+    resources = {
+        "base_url": "/x",
+        "notebook_id": "A",
+        "assignment_id": "A",
+        "submission_id": "s1",
+        "index": 0,
+        "total": 1,
+        "notebook_path": "p",
+        "student": markup,
+        "first_name": None,
+        "last_name": None,
+    }
+    path = os.path.join(graded["course"], "autograded", "ann", "A", "A.ipynb")
+    page, _ = exporter.from_filename(path, resources=resources)
+    assert "&lt;img src=x onerror=window.accelabOwned=1&gt;" in page
+
+    class Live(HTMLParser):
+        found = []
+
+        def handle_starttag(self, tag, attrs):
+            self.found += [v for k, v in attrs if k.startswith("on") and "accelabOwned" in v]
+
+    Live().feed(page)
+    assert Live.found == []
+    resources.update(student="ann", first_name="<b>Ann</b>", last_name="<i>A</i>")
+    page, _ = exporter.from_filename(path, resources=resources)
+    assert "&lt;i&gt;A&lt;/i&gt;, &lt;b&gt;Ann&lt;/b&gt;" in page

@@ -11,6 +11,7 @@ import nbformat
 from accelab.solver.units import ureg
 
 from ..student.answers import read
+from .intake import shown
 from .judge import Verdict, judge, judge_reading, wrong
 from .plan import answer_cells
 
@@ -129,7 +130,7 @@ def _whose(student, others):
         return "the self-study variant"
     if student in others:
         return f"student {student}"
-    return f"an unknown student id {student!r}"
+    return f"an unknown student id {shown(student)}"  # the kernel's text, shown safely
 
 
 def _matches(asked, reading, other_key, name, variant):
