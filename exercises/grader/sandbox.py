@@ -88,7 +88,7 @@ class SandboxCommand:
 
     def _etc_files(self):
         """A passwd and group that name the sandbox's user (getpass and friends)."""
-        if self._etc is None:
+        if self._etc is None or not os.path.isfile(os.path.join(self._etc, "group")):
             folder = tempfile.mkdtemp(prefix="accelab-etc-")
             with open(os.path.join(folder, "passwd"), "w") as fh:
                 fh.write(
