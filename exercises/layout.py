@@ -3,8 +3,8 @@ neither read nor hijack.
 
 * The **course folder** (source notebooks, gradebook, submissions, outcomes,
   feedback, keys' inputs) is private to the instructor: no access for other
-  users, and for its group only when no student is in that group (a graders'
-  group: ``chgrp graders DIR; chmod 2770 DIR``).
+  users, and for its group only when the group was given full access on purpose
+  and no student is in it (a graders' group: ``chgrp graders DIR; chmod 2770 DIR``).
 * The **exchange** is outside it, where students can reach it, with the
   permissions nbgrader's exchange expects: its root world-writable with the
   sticky bit (no one renames or deletes another's entry), each course's folder
@@ -118,6 +118,8 @@ def private_course(course_dir, accounts=(), say=print):
         )
     mode = stat.S_IMODE(st.st_mode)
     new = mode & ~0o007
+    if new & 0o070 != 0o070:  # only a group set up on purpose (rwx: graders) keeps access
+        new &= ~0o070
     if new & 0o070:
         students = students_in_group(st.st_gid, accounts)
         if students:
