@@ -284,6 +284,21 @@ def check(course_dir, config, accounts=(), say=print):
         )
 
 
+#: what ``accelab assign`` adds to the configuration of a course made before accelab's
+#: collect and formgrader templates existed
+CONFIG_ADDED = """
+# added by accelab assign: the submitter and the time of a submission from what a student
+# cannot forge, only regular files collected (accelab.exercises.grader.collect); formgrader's
+# submission page with the student's id escaped
+from accelab.exercises.grader.collect import AccelabCollect as _AccelabCollect
+from accelab.exercises.layout import FORMGRADER_TEMPLATES as _NBGRADER_TEMPLATES
+from accelab.exercises.layout import TEMPLATES as _ACCELAB_TEMPLATES
+c.ExchangeFactory.collect = _AccelabCollect  # noqa: F821
+c.HTMLExporter.extra_template_basedirs = [_ACCELAB_TEMPLATES, _NBGRADER_TEMPLATES]  # noqa: F821
+c.HTMLExporter.extra_template_paths = [_NBGRADER_TEMPLATES]  # noqa: F821
+"""
+
+
 def course_config(course_dir):
     """The course's nbgrader configuration (a traitlets Config), or None when it has
     none yet."""
@@ -302,6 +317,16 @@ def prepare(course_dir, course_id, exchange=None, accounts=(), say=print):
     course keeps the one its configuration names. Returns the exchange's path."""
     course_dir = private_course(course_dir, accounts, say)
     config = course_config(course_dir)
+    if config is not None and "accelab" not in str(
+        config.get("ExchangeFactory", {}).get("collect")
+    ):
+        path = os.path.join(course_dir, "nbgrader_config.py")
+        with open(path, "a", encoding="utf-8") as fh:
+            fh.write(CONFIG_ADDED)
+        say(
+            f"{path} did not use accelab's collect (who handed in and when, from what a "
+            "student cannot forge) nor escape ids in formgrader's pages: both added at its end"
+        )
     if config is not None:
         configured = exchange_of(config)
         if exchange and os.path.realpath(exchange) != os.path.realpath(configured):

@@ -229,7 +229,7 @@ def read_units(text, name="units"):
     _check_text(text, name, None)
     try:
         return _parse_units(text.strip())
-    except Exception as exc:  # pint raises many unrelated types
+    except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types
         raise InvalidInput(
             f"{name} = {show(text)} could not be read as units "
             f"({_unit_reason(exc)}); write units like 'm/s^2'",

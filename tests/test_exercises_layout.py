@@ -19,6 +19,9 @@ from accelab.exercises.layout import (
     private_course,
 )
 
+#: the tests that make a second account need root (as the tests run in CI)
+as_root = pytest.mark.skipif(os.geteuid() != 0, reason="makes local accounts: run as root")
+
 
 def mode(path):
     return stat.S_IMODE(os.lstat(path).st_mode)
@@ -48,6 +51,7 @@ def test_an_exchange_without_the_sticky_bit_is_repaired_and_said(tmp_path):
     assert any("sticky" in m for m in said) and any("inbound" in m for m in said)
 
 
+@as_root
 def test_a_course_folder_in_the_exchange_that_is_not_yours_is_refused(tmp_path):
     root = tmp_path / "exchange"
     root.mkdir()
@@ -77,6 +81,7 @@ def test_an_exchange_inside_the_course_or_under_a_folder_others_can_write_is_ref
         prepare_exchange(str(open_dir / "exchange"), "c", str(course), print)
 
 
+@as_root
 def test_a_readable_course_folder_is_made_private(tmp_path):
     course = tmp_path / "course"
     course.mkdir()
@@ -144,3 +149,24 @@ def test_a_timestamp_is_read_safely_and_noted(text, problem, ok):
     when, note = intake.timestamp_note(text, problem, record)
     assert when == record  # the exchange's record is the time, whatever the file says
     assert note is not None and "exchange" in note
+
+
+def test_an_older_courses_configuration_gets_accelabs_collect(tmp_path):
+    """A course whose nbgrader_config.py predates accelab's collect gets it added (with
+    a message); its exchange, if inside the course folder, is refused with what to do."""
+    from accelab.exercises.layout import course_config, prepare
+
+    course = tmp_path / "course"
+    course.mkdir(mode=0o700)
+    config = course / "nbgrader_config.py"
+    config.write_text(
+        "c = get_config()\nc.CourseDirectory.course_id = 'old'\n"
+        f"c.Exchange.root = {str(tmp_path / 'exchange')!r}\n"
+    )
+    said = []
+    prepare(str(course), "old", None, (), said.append)
+    assert "AccelabCollect" in str(course_config(str(course)).ExchangeFactory.collect)
+    assert any("both added" in m for m in said)
+    config.write_text(config.read_text() + f"c.Exchange.root = {str(course / 'exchange')!r}\n")
+    with pytest.raises(LayoutError, match="inside the course folder"):
+        prepare(str(course), "old", None, (), said.append)

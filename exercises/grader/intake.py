@@ -196,7 +196,7 @@ def parse_time(text):
         return None
     try:
         when = parse_utc(text)
-    except Exception:  # dateutil raises ValueError, OverflowError, TypeError ...
+    except Exception:  # noqa: BLE001 - dateutil raises ValueError, OverflowError, TypeError ...
         return None
     if not isinstance(when, datetime.datetime) or not 1970 <= when.year <= 9000:
         return None

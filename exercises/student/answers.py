@@ -244,7 +244,7 @@ def _read_quantity(asked, x, units_text, asked_unit, ureg):
     try:
         units = read_units(units_text, name)
         want, got = asked_unit.dimensionality, units.dimensionality
-    except Exception:  # InvalidInput, or pint's own for units it parses but cannot use
+    except Exception:  # noqa: BLE001 - InvalidInput, or pint's own for units it cannot use
         return Reading(
             name,
             problem=f"`{name}` has units {_short(units_text, limit=60)} that this course "
@@ -263,7 +263,7 @@ def _read_quantity(asked, x, units_text, asked_unit, ureg):
         want_rad = _radian_power(ureg.Quantity(1.0, asked_unit))
         got_rad = _radian_power(ureg.Quantity(1.0, units))
         si = ureg.Quantity(x, units).to_base_units().magnitude
-    except Exception:  # an offset unit (degC) or one pint cannot convert
+    except Exception:  # noqa: BLE001 - an offset unit (degC) or one pint cannot convert
         return Reading(
             name,
             problem=f"`{name}` has units {units:~} that cannot be converted plainly; use "
