@@ -33,6 +33,7 @@ import hashlib
 import json
 import os
 import secrets
+import shutil
 import stat
 import unicodedata
 
@@ -454,7 +455,14 @@ def prepare(course_dir, assignment, student, now=None):
     followed; the time is the exchange's record when collect made one for this
     very notebook, else ``timestamp.txt`` if it is sound (a malformed, missing or
     future one is set aside, and the submission graded as on time, with a note).
-    Returns the notes."""
+    Returns the notes (a folder that cannot be checked is said, never raised)."""
+    try:
+        return _prepare(course_dir, assignment, student, now)
+    except OSError as exc:
+        return [f"the submission's folder could not be checked ({exc.strerror or exc})"]
+
+
+def _prepare(course_dir, assignment, student, now):
     folder = os.path.join(course_dir, "submitted", student, assignment)
     aside = os.path.join(course_dir, ".accelab", "set-aside", assignment, student)
     notes = []
@@ -535,8 +543,6 @@ def _move_aside(path, aside, relname):
     except OSError:
         try:
             if os.path.isdir(path) and not os.path.islink(path):
-                import shutil
-
                 shutil.rmtree(path)
             else:
                 os.unlink(path)
@@ -549,31 +555,36 @@ def clean_feedback(course_dir, assignment, students):
     feedback page, and the ``timestamp.txt`` and ``submission_secret.txt`` that
     ``nbgrader release_feedback`` reads, written here (never a student's file,
     nor anything a link in a submission pointed to)."""
-    keep = f"{assignment}.html"
     for student in students:
-        folder = os.path.join(course_dir, "feedback", student, assignment)
-        if not os.path.isdir(folder) or os.path.islink(folder):
-            continue
-        for name in os.listdir(folder):
-            if name == keep and not os.path.islink(os.path.join(folder, name)):
-                continue
-            path = os.path.join(folder, name)
-            try:
-                if os.path.isdir(path) and not os.path.islink(path):
-                    import shutil
+        try:
+            _clean_feedback(course_dir, assignment, student)
+        except OSError:
+            pass  # the page is there or not; release_feedback says which
 
-                    shutil.rmtree(path)
-                else:
-                    os.unlink(path)
-            except OSError:
-                pass
-        if not os.path.exists(os.path.join(folder, keep)):
+
+def _clean_feedback(course_dir, assignment, student):
+    keep = f"{assignment}.html"
+    folder = os.path.join(course_dir, "feedback", student, assignment)
+    if not os.path.isdir(folder) or os.path.islink(folder):
+        return
+    for name in os.listdir(folder):
+        path = os.path.join(folder, name)
+        if name == keep and not os.path.islink(path):
             continue
-        record = read_record(course_dir, assignment, student) or {}
-        when = parse_time(str(record.get("time") or "")) or utcnow()
-        write_atomic(os.path.join(folder, "timestamp.txt"), format_time(when))
-        text, _ = read_small(
-            os.path.join(course_dir, "submitted", student, assignment, "submission_secret.txt")
-        )
-        secret = sane_secret(text) or secrets.token_hex(64)
-        write_atomic(os.path.join(folder, "submission_secret.txt"), secret)
+        try:
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path)
+            else:
+                os.unlink(path)
+        except OSError:
+            pass
+    if not os.path.exists(os.path.join(folder, keep)):
+        return
+    record = read_record(course_dir, assignment, student) or {}
+    when = parse_time(str(record.get("time") or "")) or utcnow()
+    write_atomic(os.path.join(folder, "timestamp.txt"), format_time(when))
+    text, _ = read_small(
+        os.path.join(course_dir, "submitted", student, assignment, "submission_secret.txt")
+    )
+    secret = sane_secret(text) or secrets.token_hex(64)
+    write_atomic(os.path.join(folder, "submission_secret.txt"), secret)
