@@ -135,9 +135,11 @@ class SandboxCommand:
         for name in ("ld.so.cache", "localtime", "nsswitch.conf"):
             if os.path.exists(f"/etc/{name}"):
                 args += ["--ro-bind", f"/etc/{name}", f"/etc/{name}"]
+        args += ["--proc", "/proc"]
+        for name in ("keys", "key-users"):  # no key of the machine's, not even its name
+            if os.path.exists(f"/proc/{name}"):
+                args += ["--ro-bind", "/dev/null", f"/proc/{name}"]
         args += [
-            "--proc",
-            "/proc",
             "--dev",
             "/dev",
             "--perms",
