@@ -42,7 +42,7 @@ from ..nbgrader_course import roster_ids
 #: longest student id [characters]
 MAX_ID = 64
 #: characters an id never holds: markup, quotes, and what a URL or a shell reads
-#: specially (formgrader puts ids into links and pages; nbgrader refuses + and *)
+#: specially (formgrader puts ids into links and pages; nbgrader refuses ``+`` and ``*``)
 NOT_IN_IDS = set("<>&\"'`\\/?#%+*")
 #: how far timestamp.txt may be from the exchange's record before it is noted [s]
 TIME_SLACK = 600.0
@@ -65,9 +65,10 @@ def id_problem(name, roster=None):
     id, as words for a note, or None when it can.
 
     An id is a name: valid UTF-8, 1 to :data:`MAX_ID` characters, no spaces or
-    control characters, nothing of a path (``/``, ``\\``, a leading ``.``, ``-``
-    or ``~``), no markup or quotes (``<>&"'```), nothing nbgrader's exchange or
-    a URL reads specially (``+*?#%``); and, when the course has a roster, on it.
+    control characters, nothing of a path (``/``, a backslash, a leading ``.``,
+    ``-`` or ``~``), no markup, quotes or backquotes (``<``, ``>``, ``&``), nothing
+    nbgrader's exchange or a URL reads specially (``+ * ? # %``); and, when the
+    course has a roster, on it.
     """
     if isinstance(name, bytes):
         try:

@@ -26,7 +26,7 @@ from traitlets import Bool, Float, Integer
 
 from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
-from .intake import notes_of
+from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
@@ -59,8 +59,6 @@ def cached_key(spec, student):
 def other_keys(spec, course_dir, me):
     """Keys of the other students of the course (roster and submitters) and of
     the self-study variant, to tell whose values a wrong answer holds."""
-    from .intake import submissions
-
     roster = roster_ids(course_dir)
     ids = {"self-study", *roster}
     for assignment in (spec.get("assignment"),) if isinstance(spec, dict) else ():
