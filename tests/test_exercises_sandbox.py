@@ -183,8 +183,7 @@ def test_nothing_passes_between_submissions_through_the_key_store(command):
     """A key added to the sandbox user's keyring would outlive the submission and be
     read by the next one graded in the same slot: the key store is refused."""
     add = (
-        SYSCALLS
-        + "print('add', call('add_key', b'user', b'accelab-left', b'left-behind', 11, "
+        SYSCALLS + "print('add', call('add_key', b'user', b'accelab-left', b'left-behind', 11, "
         "ctypes.c_int(-4)))\n"
     )
     read = (
@@ -201,8 +200,7 @@ def test_nothing_passes_between_submissions_through_the_key_store(command):
 
 def test_no_user_namespaces_or_mounts_inside_the_sandbox(command):
     probe = (
-        SYSCALLS
-        + "print('unshare', libc.unshare(0x10000000 | 0x00020000), "
+        SYSCALLS + "print('unshare', libc.unshare(0x10000000 | 0x00020000), "
         "os.strerror(ctypes.get_errno()))\n"
         "print('clone', call('clone', 0x10000000 | 17, 0, 0, 0, 0))\n"
         "print('mount', libc.mount(b'none', b'/tmp', b'tmpfs', 0, None), "
