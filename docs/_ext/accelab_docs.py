@@ -46,9 +46,8 @@ def _download_line(stem):
         f'<p class="nb-download">'
         f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
         f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
-        f'<span class="nb-download-note"> to run it yourself in Jupyter with accelab '
-        f"installed (<code>pip install -e .</code>); <code>accelab course --out DIR</code> "
-        f"writes every notebook of the course.</span></p>"
+        f'<span class="nb-download-note"> and run it in Jupyter with accelab installed '
+        f'(<a href="../install.html">how to install</a>).</span></p>'
     )
 
 
@@ -121,18 +120,34 @@ def number_equations(app, doctree):
 
 
 # ---------------------------------------------------------------- figures
+#: classes of the renditions of one figure (accelab.course.renditions): the page's
+#: stylesheet shows the one that fits the screen
+RENDITIONS = ("accelab-wide", "accelab-narrow")
+
+
+def _in_figure(node):
+    parent = node.parent
+    while parent is not None:
+        if isinstance(parent, nodes.figure):
+            return True
+        parent = parent.parent
+    return False
+
+
 def caption_images(app, doctree):
     """A picture standing alone in its paragraph (``![what it shows](file.png)``
-    in Markdown) becomes a figure whose caption is its alt text."""
+    in Markdown) becomes a figure whose caption is its alt text, unless it is
+    inside a figure already (a notebook output with a caption in its cell)."""
     for para in list(doctree.findall(nodes.paragraph)):
         kids = [k for k in para.children if not (isinstance(k, nodes.Text) and not k.strip())]
         if len(kids) != 1 or not isinstance(kids[0], nodes.image):
             continue
         image = kids[0]
         alt = image.get("alt", "").strip()
-        if not alt or isinstance(para.parent, nodes.figure):
+        if not alt or _in_figure(para):
             continue
         figure = nodes.figure("", image.deepcopy(), nodes.caption(alt, alt))
+        figure["classes"] += [c for c in image.get("classes", []) if c in RENDITIONS]
         para.replace_self(figure)
         doctree.set_id(figure)
 
@@ -174,10 +189,34 @@ def link_images(app, doctree, docname):
             continue
         else:
             refuri = uri
-        ref = nodes.reference("", "", internal=True, refuri=refuri, classes=["image-full-size"])
+        classes = ["image-full-size"] + [c for c in image.get("classes", []) if c in RENDITIONS]
+        ref = nodes.reference("", "", internal=True, refuri=refuri, classes=classes)
         ref["reftitle"] = "Open the image at full size"
         image.replace_self(ref)
         ref.append(image)
+
+
+DATA_URI = re.compile(r"data:image/(png|jpeg|gif);base64,([A-Za-z0-9+/=]+)")
+
+
+def player_frames(app, doctree, docname):
+    """The frames of an animation player (raw HTML with ``data:`` URIs, from
+    :mod:`accelab.course.player`) written out as image files once each, so that
+    the page stays small and a browser loads only the frames it plays."""
+    if app.builder.format != "html":
+        return
+    imgdir = relative_uri(app.builder.get_target_uri(docname), "_images")
+    for raw in list(doctree.findall(nodes.raw)):
+        text = raw.astext()
+        if "accelab-player" not in text or "data:image/" not in text:
+            continue
+
+        def out(m):
+            name = _embedded_to_file(app, m.group(0))
+            return posixpath.join(imgdir, name) if name else m.group(0)
+
+        new = DATA_URI.sub(out, text)
+        raw.replace_self(nodes.raw("", new, format="html"))
 
 
 # ---------------------------------------------------------------- API pages
@@ -636,6 +675,7 @@ def setup(app):
     app.connect("doctree-read", number_equations)
     app.connect("doctree-read", caption_images)
     app.connect("doctree-resolved", link_images)
+    app.connect("doctree-resolved", player_frames)
     app.connect("build-finished", write_notebooks)
     app.connect("build-finished", copy_mathjax)
     app.add_directive("accelab-families", FamiliesTable)
