@@ -184,7 +184,7 @@ def _encode(images, colours=128):
         frame = Image.fromarray(index, mode="P")
         frame.putpalette(flat)
         buf = io.BytesIO()
-        frame.save(buf, "PNG", optimize=True)
+        frame.save(buf, "PNG", compress_level=9)
         out.append(buf.getvalue())
     return out
 
@@ -384,7 +384,7 @@ def animate(
                     )
                     lo = min(np.nanmin(y) for y in data.values())
                     hi = max(np.nanmax(y) for y in data.values())
-                    pad = 0.35 * (hi - lo or 1.0)
+                    pad = 0.5 * (hi - lo or 1.0)
                     ax.set_ylim(lo - 0.08 * pad, hi + pad)
                     if lo < 0 < hi:
                         ax.axhline(0, color="#999999", lw=0.7)
@@ -429,12 +429,20 @@ def animate(
             frame(0)
             fig.canvas.draw()  # lay the figure out once ...
             fig.set_layout_engine("none")  # ... and keep it for every frame
+            # what moves is drawn on a copy of what does not (the curves, their axes)
+            moving = [ax_l] + [mk for mk, _ in markers] + cursors
+            for artist in moving:
+                artist.set_animated(True)
+            fig.canvas.draw()
+            still = fig.canvas.copy_from_bbox(fig.bbox)
             images = []
             from PIL import Image
 
             for k in range(len(picks)):
                 frame(k)
-                fig.canvas.draw()
+                fig.canvas.restore_region(still)
+                for artist in moving:
+                    fig.draw_artist(artist)
                 w, h = fig.canvas.get_width_height(physical=True)
                 images.append(
                     Image.frombuffer(
