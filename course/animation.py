@@ -254,9 +254,12 @@ def animate(
     trace : sequence of str
         Points whose paths over the cycle are drawn (e.g. ``("P",)``: a coupler curve).
     extra : callable, optional
-        ``extra(construction) -> [(start, vector, kind, label), ...]`` (start
-        [m], vector [m/s^2], complex): more arrows to draw on each frame, at
-        the frame's scale (e.g. the triangle of an acceleration difference).
+        ``extra(construction) -> [(start, vector, kind, label), ...]``: more
+        arrows to draw on each frame, at the frame's scale (e.g. the triangle
+        of an acceleration difference); ``vector`` [m/s^2] is complex, and
+        ``start`` a point [m] (complex) or ``(point, offset)``, the point
+        moved by the acceleration ``offset`` [m/s^2] drawn at the frame's
+        scale (the tip of an arrow drawn from that point).
     symbols : dict, optional
         How the curves' names read on the plots (mathtext), beside :data:`SYMBOLS`.
     alt : str, optional
@@ -323,14 +326,21 @@ def animate(
         for con in cons
         for a in con.items("linkage")[0]
         if a.kind in kinds
-    ] + [(s * lf, v * af) for more in extras for s, v, _, _ in more]
-    big = max((abs(v) for _, v in vecs), default=0.0)
+    ]
+    big = max([abs(v) for _, v in vecs] + [abs(v) * af for m in extras for _, v, _, _ in m] or [0])
     pts = [z * lf for con in cons for z in con.linkage.points.values()]
     size_l = max(
         max(z.real for z in pts) - min(z.real for z in pts),
         max(z.imag for z in pts) - min(z.imag for z in pts),
     )
     scale = 0.45 * size_l / big if big > 0 else 1.0
+
+    def origin(start):  # where an extra arrow starts, in drawing units
+        if isinstance(start, tuple):
+            return start[0] * lf + start[1] * af * scale
+        return start * lf
+
+    vecs += [(origin(s), v * af) for more in extras for s, v, _, _ in more]
     paths = {n: np.array([con.linkage.points[n] * lf for con in cons]) for n in trace}
     ends = pts + [s + v * scale for s, v in vecs]
     m = 0.06 * size_l
@@ -416,7 +426,7 @@ def animate(
                     title=rf"{heading}, $\theta_2$ = {fine[i]:.0f}$^\circ$",
                 )
                 for s, v, kind, label in extras[i]:
-                    draw_arrow(ax_l, s * lf, v * af, kind, label, scale)
+                    draw_arrow(ax_l, origin(s), v * af, kind, label, scale)
                 for path in paths.values():
                     ax_l.plot(
                         path.real, path.imag, color="#9a9a9a", lw=1.0, ls=(0, (4, 2)), zorder=0
