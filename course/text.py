@@ -72,6 +72,8 @@ def num(x, sig=4, decimals=None):
 def sci(x, sig=2):
     """``x`` in powers of ten, as inline math: ``4.0e-08`` -> ``$4.0\\times10^{-8}$``."""
     x = float(getattr(x, "magnitude", x))
+    if not math.isfinite(x):
+        return "—"
     if x == 0:
         return "$0$"
     e = math.floor(math.log10(abs(x)))
