@@ -88,7 +88,8 @@ use_style()
 #
 # The chapter names the known terms $A \ldots K$ in eq. 7.35a and $L \ldots U$ in eq. 7.35b
 # (eqs. 7.36a and 7.37a), e.g. $A = a\omega_2^3\sin\theta_2$, $H = c\sin\theta_4$,
-# $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$, and eliminates $\varphi_3$:
+# $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$ (the scan prints
+# $c\cos\theta_A$, a misread subscript), and eliminates $\varphi_3$:
 #
 # $$ K\varphi_3 = A - B - C + D - E - F + G + H\varphi_4 \tag{7.36b} $$
 #
