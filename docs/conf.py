@@ -24,7 +24,7 @@ notebooks.set_kernel_env()
 
 project = "accelab"
 author = "the accelab developers"
-copyright = "accelab developers"
+copyright = "2026, the accelab developers"
 release = version = accelab.__version__  # the one place the version is written
 
 extensions = [
@@ -108,7 +108,9 @@ html_js_files = ["accelab.js"]
 html_last_updated_fmt = None
 html_copy_source = False
 html_show_sourcelink = False
+html_search_scorer = "search_scorer.js"  # prose before API objects (docs/search_scorer.js)
 html_theme_options = {
+    "footer_content_items": ["copyright.html", "licence-footer.html"],
     "home_page_in_toc": True,
     "show_navbar_depth": 1,
     "use_download_button": False,
