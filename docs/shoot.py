@@ -97,8 +97,12 @@ def main(argv=None):
                     if width < 500:  # the phone's emulated viewport, as tall as the page
                         driver.execute_cdp_cmd(
                             "Emulation.setDeviceMetricsOverride",
-                            {"width": width, "height": min(h, 16000), "deviceScaleFactor": 1,
-                             "mobile": True},
+                            {
+                                "width": width,
+                                "height": min(h, 16000),
+                                "deviceScaleFactor": 1,
+                                "mobile": True,
+                            },
                         )
                         driver.execute_async_script(WAIT_MATH)
                     else:
