@@ -72,8 +72,8 @@ use_style()
 # last term is the slider's acceleration $\mathbf{A}_B = \ddot d$, which lies along the slide:
 # a block in pure translation has no normal component. So eq. 7.14 is eq. 7.4 once more,
 #
-# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}, \qquad \mathbf{A}_{BA} = -\mathbf{A}_{AB}
-#    \tag{7.15} $$
+# $$ \begin{aligned} \mathbf{A}_B &= \mathbf{A}_A + \mathbf{A}_{BA}, \\
+#    \mathbf{A}_{BA} &= -\mathbf{A}_{AB} \end{aligned} \tag{7.15} $$
 #
 # (The chapter labels the second bracket $\mathbf{A}_{BA}$ in eq. 7.15b; by eq. 7.4's own
 # definition it is $\mathbf{A}_{AB}$, the same vector reversed. This course follows eq. 7.4.)
@@ -81,8 +81,8 @@ use_style()
 # Split into real and imaginary parts (the chapter's eqs. 7.16b and 7.16c):
 #
 # $$ \begin{aligned} & -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 \\
-#    & + b\alpha_3\sin\theta_3 + b\omega_3^2\cos\theta_3 - \ddot d = 0 \end{aligned}
-#    \tag{7.16b} $$
+#    & + b\alpha_3\sin\theta_3 + b\omega_3^2\cos\theta_3 \\
+#    & - \ddot d = 0 \end{aligned} \tag{7.16b} $$
 #
 # $$ \begin{aligned} & a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 \\
 #    & - b\alpha_3\cos\theta_3 + b\omega_3^2\sin\theta_3 = 0 \end{aligned} \tag{7.16c} $$
@@ -93,8 +93,8 @@ use_style()
 #
 # The imaginary part has one unknown, $\alpha_3$; the real part then gives $\ddot d$:
 #
-# $$ \begin{aligned} \alpha_3 = \frac{1}{b\cos\theta_3} \big( & a\alpha_2\cos\theta_2
-#    - a\omega_2^2\sin\theta_2 \\ & + b\omega_3^2\sin\theta_3 \big) \end{aligned}
+# $$ \begin{aligned} \alpha_3 = \frac{1}{b\cos\theta_3} \big( & a\alpha_2\cos\theta_2 \\
+#    & - a\omega_2^2\sin\theta_2 \\ & + b\omega_3^2\sin\theta_3 \big) \end{aligned}
 #    \tag{7.16d} $$
 #
 # $$ \begin{aligned} \ddot d = {} & -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 \\

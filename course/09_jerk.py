@@ -91,12 +91,14 @@ use_style()
 # $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$ (the scan prints
 # $c\cos\theta_A$, a misread subscript), and eliminates $\varphi_3$:
 #
-# $$ K\varphi_3 = A - B - C + D - E - F + G + H\varphi_4 \tag{7.36b} $$
+# $$ \begin{aligned} K\varphi_3 = {} & A - B - C + D \\
+#    & - E - F + G + H\varphi_4 \end{aligned} \tag{7.36b} $$
 #
-# $$ \begin{aligned} (KU - HR)\,\varphi_4 = {} & K(N - L - M - P \\
-#    & \quad - Q + S + T) \\
-#    & + R(A - B - C + D \\
-#    & \quad - E - F + G) \end{aligned} \tag{7.39} $$
+# $$ \begin{aligned} & (KU - HR)\,\varphi_4 = \\
+#    & \quad K(N - L - M - P \\
+#    & \qquad - Q + S + T) \\
+#    & \quad + R(A - B - C + D \\
+#    & \qquad - E - F + G) \end{aligned} \tag{7.39} $$
 #
 # (The chapter writes the numerator out as fourteen products, $KN - KL - \ldots + KS + KT$;
 # above they are gathered by $K$ and $R$, and the cell below evaluates the chapter's form.)

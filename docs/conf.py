@@ -108,7 +108,7 @@ html_js_files = ["accelab.js"]
 html_last_updated_fmt = None
 html_copy_source = False
 html_show_sourcelink = False
-html_search_scorer = "search_scorer.js"  # prose before API objects (docs/search_scorer.js)
+html_search_scorer = str(HERE / "search_scorer.js")  # prose before API objects
 html_theme_options = {
     "footer_content_items": ["copyright.html", "licence-footer.html"],
     "home_page_in_toc": True,

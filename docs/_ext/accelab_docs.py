@@ -169,6 +169,27 @@ def _embedded_to_file(app, uri):
     return name
 
 
+#: widest figure [CSS px] a phone shows shrunk to its screen: a wider chart (the
+#: benchmark's, 1300 px and more) would be unreadable at 342 px, so there it keeps
+#: its size (1 in of figure = 100 CSS px) and scrolls sideways in its box
+SCROLL_CHART = 800
+
+
+def _chart_width(app, uri):
+    """The width [CSS px] of a local image file at 100 px per inch of its DPI, or None."""
+    path = (Path(app.srcdir) / uri).resolve()
+    if not path.is_file() or path.suffix.lower() != ".png":
+        return None
+    try:
+        from PIL import Image
+
+        with Image.open(path) as im:
+            dpi = (im.info.get("dpi") or (100, 100))[0] or 100
+            return round(im.size[0] * 100 / dpi)
+    except OSError:
+        return None
+
+
 def link_images(app, doctree, docname):
     """Wrap every image that is not already a link in a link to its file."""
     if app.builder.format != "html":
@@ -190,6 +211,10 @@ def link_images(app, doctree, docname):
         else:
             refuri = uri
         classes = ["image-full-size"] + [c for c in image.get("classes", []) if c in RENDITIONS]
+        width = None if "://" in uri or uri.startswith("data:") else _chart_width(app, uri)
+        if width and width > SCROLL_CHART and isinstance(image.parent, nodes.figure):
+            image.parent["classes"].append("scroll-chart")
+            image["width"] = f"{width}px"
         ref = nodes.reference("", "", internal=True, refuri=refuri, classes=classes)
         ref["reftitle"] = "Open the image at full size"
         image.replace_self(ref)
@@ -217,6 +242,33 @@ def player_frames(app, doctree, docname):
 
         new = DATA_URI.sub(out, text)
         raw.replace_self(nodes.raw("", new, format="html"))
+
+
+#: a word with a hyphen inside ("slider-crank", "7-1;")
+HYPHENATED = re.compile(r"\S*\w-\w\S*")
+
+
+def unbreakable_words(app, doctree):
+    """In a table cell a line may break between words but never inside one: a
+    hyphenated word ("slider-crank", "problem 7-1") is kept on one line (a table
+    wider than a phone scrolls in its box instead)."""
+    for entry in doctree.findall(nodes.entry):
+        for text in list(entry.findall(nodes.Text)):
+            parent = text.parent
+            if isinstance(parent, (nodes.literal, nodes.math, nodes.raw, nodes.inline)):
+                continue
+            value = str(text)
+            if not HYPHENATED.search(value):
+                continue
+            pieces, pos = [], 0
+            for m in HYPHENATED.finditer(value):
+                if m.start() > pos:
+                    pieces.append(nodes.Text(value[pos : m.start()]))
+                pieces.append(nodes.inline(m.group(0), m.group(0), classes=["nobreak"]))
+                pos = m.end()
+            if pos < len(value):
+                pieces.append(nodes.Text(value[pos:]))
+            parent.replace(text, pieces)
 
 
 # ---------------------------------------------------------------- API pages
@@ -674,6 +726,7 @@ def setup(app):
     app.connect("source-read", source_read)
     app.connect("doctree-read", number_equations)
     app.connect("doctree-read", caption_images)
+    app.connect("doctree-read", unbreakable_words)
     app.connect("doctree-resolved", link_images)
     app.connect("doctree-resolved", player_frames)
     app.connect("build-finished", write_notebooks)
