@@ -253,7 +253,8 @@ def test_notebook_executes(source):
 
 #: raw values as Python prints them: np.float64(...), a tuple of them, 15.70999495871365, 6.01e-06
 RAW = re.compile(
-    r"np\.float64\(|^\([-\d.e]+, [-\d.e]+.*\)$|\d\.\d{12,}|\d\.\d+e-0\d|Quantity\(", re.M
+    r"np\.float64\(|^\([-\d.e]+, [-\d.e]+.*\)$|\d\.\d{12,}|^\s*-?\d\.\d+e-0\d\s*$|Quantity\(",
+    re.M,
 )
 #: the widest figure shown in one rendition [px] (10 pt text stays near 9 CSS px on a phone)
 SINGLE = 600
