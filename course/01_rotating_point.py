@@ -94,6 +94,7 @@ point = RotatingPoint(p="4 in")
 r = point.solve(theta2="30 deg", omega2="-20 rad/s", alpha2="150 rad/s^2")
 assert np.isclose(by_hand, r.A.to("m/s^2").magnitude, rtol=1e-12)
 
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "cartesian", "polar"],
     [
@@ -214,6 +215,8 @@ stated(omega_A - omega_B, "5", "rad/s")
 pt = RotatingPoint(p="6.5 in")
 at_A = pt.solve(theta2=theta_A, omega2=omega_A, alpha2=alpha_7_1)
 at_B = pt.solve(theta2=theta_B, omega2=omega_B, alpha2=alpha_7_1)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "position $A$", "position $B$"],
     [
@@ -248,6 +251,8 @@ stated(in_g(at_A.A), "170", sig=2)
 
 # %%
 A_BA = at_B.A - at_A.A
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"$\mathbf{{A}}_{{BA}}$ = {xy(A_BA, 'in/s^2')} = {vec(A_BA, 'in/s^2')}, "
     rf"that is {vec(A_BA, 'm/s^2')}."
@@ -357,6 +362,8 @@ def angle_to_line(a_vec, from_p_to_a):
 
 
 n1 = link.A_n
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "vector", "angle to the line $P \\to A$"],
     [

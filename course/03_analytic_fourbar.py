@@ -163,6 +163,8 @@ alpha3 = (C * D - A * F) / (A * E - B * D)  # eq. 7.12a
 alpha4 = (C * E - B * F) / (A * E - B * D)  # eq. 7.12b
 assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
 assert math.isclose(alpha4, r.alpha4.to("rad/s^2").magnitude, rel_tol=1e-12)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"By eq. 7.12: $\alpha_3$ = {num(alpha3, 6)} rad/s² and $\alpha_4$ = {num(alpha4, 6)} "
     "rad/s², what the solver gives to the last digit."
@@ -179,7 +181,7 @@ assert math.isclose(A * E - B * D, b * c * math.sin(t4 - t3), rel_tol=1e-12)  # 
 # chapter's Example 7-1 prints no numbers; **these are the course's own numbers**). The
 # solver returns Quantities; the vectors are complex, as in the chapter's notation.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -302,7 +304,7 @@ show(
     "360 degrees, open and crossed circuits.",
 )
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = []
 for circuit, res in cycle.items():
     a4 = res.alpha4.to("rad/s^2").magnitude
@@ -345,6 +347,8 @@ flip = fb.solve(theta2=-theta2, omega2="10 rad/s", circuit="open", order=2)
 mirror = fb.solve(theta2=theta2, omega2="10 rad/s", circuit="crossed", order=2)
 assert np.allclose(mirror.alpha4.magnitude, -flip.alpha4.magnitude, atol=1e-9)
 assert np.allclose(mirror.alpha3.magnitude, -flip.alpha3.magnitude, atol=1e-9)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     r"With $\alpha_2 = 0$, $\alpha_3$ and $\alpha_4$ of the crossed circuit at $\theta_2$ are "
     r"those of the open circuit at $-\theta_2$ with their signs turned, at all "

@@ -129,6 +129,7 @@ bracket = (b * alpha3 * 1j - b * w3**2) * np.exp(1j * t3)
 assert np.isclose(bracket, -r.A_BA.to("m/s^2").magnitude)
 assert np.isclose(r.A_B.to("m/s^2").magnitude, (r.A_A + r.A_BA).to("m/s^2").magnitude)
 
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -155,6 +156,8 @@ table(
 # %%
 con = construct_case(SLIDER_CRANK)
 assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-9)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"The construction gives $\alpha_3$ = {num(con.values['alpha3'], 7)} rad/s² and "
     rf"$\mathbf{{A}}_B$ = {num(con.values['A_B'].real, 7)} m/s² along $x$: the equations' "
@@ -185,7 +188,7 @@ show(construction, alt="Slider-crank linkage beside its acceleration polygon.")
 # The same slider acceleration in US units, as a drawing in inches ($a = 1.575$ in,
 # $b = 4.724$ in) would carry it; pint converts:
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"$\ddot d$ = {num(r.d_ddot.m_as('in/s^2'))} in/s² = {num(r.d_ddot.m_as('ft/s^2'))} "
     f"ft/s² = {num(in_g(r.d_ddot), 3)} g"
@@ -220,6 +223,8 @@ peaks = {}
 for name, n in speeds.items():
     piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
     peaks[name] = np.max(np.abs(piston))
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"Displacement {num(displacement.m_as('L'), 3)} L, crank radius $a$ = "
     f"{num((stroke / 2).m_as('mm'))} mm, rod to crank ratio $b/a$ = "
@@ -265,6 +270,8 @@ top = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
 w = Q_(6000, "rpm").to("rad/s")
 by_hand = -(stroke / 2) * w**2 * (1 + (stroke / 2) / rod)
 assert math.isclose(top.d_ddot.to("m/s^2").magnitude, by_hand.to("m/s^2").magnitude, rel_tol=1e-12)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"At TDC and 6000 rpm, $\ddot d$ = {num(top.d_ddot.m_as('m/s^2'), 6)} m/s² "
     rf"$= -a\omega_2^2(1 + a/b)$, with $a\omega_2^2$ = "
@@ -322,7 +329,7 @@ show(
 # **How sure is "about 2000 g"?** The answer depends on the stroke and rod we assumed. A
 # sweep over plausible 1.5 L geometries, the piston's largest acceleration (at TDC):
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = []
 for stroke_mm in (72, 80, 88):
     bore_mm = math.sqrt(1.5e6 / 4 / (math.pi / 4) / stroke_mm)  # keep 1.5 L

@@ -165,6 +165,8 @@ parts = r.A_t + r.A_n + r.A_coriolis + r.A_slip
 assert np.isclose(parts.to("m/s^2").magnitude, r.A.to("m/s^2").magnitude, rtol=1e-12)
 # direction: V_slip turned 90 deg in the sense of omega (clockwise here)
 turned = np.angle(r.A_coriolis.magnitude / r.V_slip.magnitude, deg=True)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"The Coriolis part is $\mathbf{{V}}_{{slip}}$ turned by {num(turned, decimals=0)}°: "
     r"clockwise, the sense of $\omega_2 < 0$."
@@ -228,6 +230,8 @@ walk = slot.solve(
     p_ddot=0,
 )
 m_child = Q_(30, "kg")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The walk lasts {num(t[-1].m_as('s'), 2)} s while the floor turns "
     f"{num((omega_ride * t[-1]).m_as('turn'), 2)} of a turn. The Coriolis part is "
@@ -409,6 +413,8 @@ assert np.ptp(in_g(walk.A_coriolis)) < 1e-12  # the same all the way
 # %%
 isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg")
 r = isc.solve(theta2="60 deg", omega2="-10 rad/s", alpha2="25 rad/s^2")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -453,6 +459,8 @@ def b_ddot(sign):  # sign = -1: eq. 7.26b as corrected; +1: as printed
 solver_bdd = r.b_ddot.to("in/s^2").magnitude
 assert np.isclose(alpha4, r.alpha4.magnitude, rtol=1e-12)
 assert np.isclose(b_ddot(-1), solver_bdd, rtol=1e-12)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"Eq. 7.26a gives $\alpha_4$ = {num(alpha4, 7)} rad/s²; eq. 7.26b gives $\ddot b$ = "
     f"{num(b_ddot(-1), 7)} in/s², as the solver does ({num(solver_bdd, 7)}). The misprinted "
@@ -532,6 +540,8 @@ def forgetful(con):
 
 
 wrong_alpha4, wrong_bdd, X = forgetful(con)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "right", "Coriolis forgotten"],
     [
@@ -610,6 +620,8 @@ right_a4 = cycle.alpha4.magnitude
 err = forgot[:, 0] - right_a4
 deg = np.degrees(theta_cycle)
 worst = np.argmax(np.abs(err))
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"The largest error in $\alpha_4$ is {num(err[worst], 3)} rad/s² at "
     rf"$\theta_2$ = {num(deg[worst], decimals=0)}°, "

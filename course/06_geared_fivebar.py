@@ -130,6 +130,8 @@ use_style()
 geometry = dict(a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in")
 fivebar = GearedFiveBar(**geometry, lam=-2, phi="30 deg")
 r = fivebar.solve(theta2="60 deg", omega2="20 rad/s", alpha2="-50 rad/s^2")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -180,6 +182,8 @@ alpha4 = (
 assert np.isclose(alpha3, r.alpha3.magnitude, rtol=1e-12)
 assert np.isclose(alpha4, r.alpha4.magnitude, rtol=1e-12)
 assert np.isclose((r.A_A + r.A_BA - r.A_B).to("in/s^2").magnitude, 0, atol=1e-9)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"Eq. 7.29a gives $\alpha_3$ = {num(alpha3, 7)} rad/s² and eq. 7.29b $\alpha_4$ = "
     f"{num(alpha4, 7)} rad/s²: both what the solver gives."
@@ -247,6 +251,8 @@ assert np.allclose(g.alpha3.magnitude[both], f4.alpha3.magnitude[both], rtol=1e-
 assert np.allclose(
     g.A_B.to("in/s^2").magnitude[both], f4.A_B.to("in/s^2").magnitude[both], rtol=1e-9
 )
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"With $\lambda = 0$, $\alpha_3$ and $\mathbf{{A}}_B$ agree with the fourbar's at all "
     f"{both.sum()} positions both can reach."
@@ -378,6 +384,8 @@ stated(spread[-2], "1.7")
 deg, s = sweep(-1.5, 30)
 B = s.R_B.to("in").magnitude
 half = len(deg) // 2
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"$\lambda = -1.5 = {Fraction(-1.5)}$: one cycle is {cycle_turns(-1.5)} turns of the "
     "input."

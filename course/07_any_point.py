@@ -94,6 +94,8 @@ use_style()
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
 motion = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
 r = fourbar.solve(**motion, p="3 in", delta3="30 deg")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -130,6 +132,8 @@ cg = {
     "U = G4": (4, "4.5 in", "0 deg"),
 }
 points = {name: r.point(*spec) for name, spec in cg.items()}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"$G_3$ is {num(abs(g3), 5)} in from $A$, at {num(np.degrees(np.angle(g3)), 5)}° from "
     "$AB$. The accelerations of the three centres of gravity:"
@@ -288,6 +292,8 @@ fast = fourbar.solve(theta2=theta, omega2="300 rpm", alpha2=0)
 assert fast.valid.all()
 force = {name: masses[name] * fast.point(*spec).A for name, spec in cg.items()}  # m A_G
 size = {name: np.abs(f.m_as("lbf")) for name, f in force.items()}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = []
 for name, s in size.items():
     k = np.argmax(s)

@@ -119,6 +119,8 @@ table_7_1 = {  # |A| [g]; the last two from the felt loads 3.5 g and 9 g at the 
     "F-16 fighter jet (felt 9 g)": 8.0,
 }
 engine = {"piston at idle": 40, "piston at 6000 rpm": 2000}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", r"$\lvert\mathbf{A}\rvert$ [g]", "[m/s²]", "[in/s²]"],
     [
@@ -166,6 +168,8 @@ def ride_cycle(rpm):
 
 t, r, A, felt, head, fore = ride_cycle(12)
 heavy = np.abs(felt) > 1.5
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["at 12 rpm", "over a cycle"],
     [
@@ -295,6 +299,8 @@ assert head.mean() > np.abs(fore).mean()  # mostly along the spine
 
 # %%
 speeds = np.arange(6, 25, 2)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = []
 for rpm in speeds:
     t_, _, A_, felt_, head_, _ = ride_cycle(rpm)
@@ -384,6 +390,8 @@ stated(floating, "16", sig=2)
 swing = FourBar(a="30 mm", b="200 mm", c="100 mm", d="200 mm")
 s = swing.solve(theta2=theta, omega2="30 rpm", alpha2=0)
 seat = s.point(4, "600 mm", "165 deg")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The seat swings through {num(np.degrees(np.ptp(s.theta4.magnitude)), 2)}° and "
     f"accelerates at up to {num(in_g(seat.A).max(), 2)} g (its tangential part up to "

@@ -142,6 +142,8 @@ r = fourbar.solve(
     p="3 in",
     delta3="30 deg",
 )
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "value"],
     [
@@ -197,6 +199,8 @@ J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4  # eq. 7
 assert np.isclose(J_B, r.J_B.to("in/s^3").magnitude, rtol=1e-12)
 J_PA = r.point(3, "3 in", "30 deg").J - r.J_A  # eq. 7.41
 assert np.isclose((r.J_A + J_PA - r.J_P).to("in/s^3").magnitude, 0, atol=1e-9)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"Eqs. 7.36b and 7.39 give $\varphi_3$ = {num(phi3, 6)} and $\varphi_4$ = "
     f"{num(phi4, 6)} rad/s³, as the solver does."
@@ -223,6 +227,8 @@ deg = np.degrees(grid)
 coarse = cyc.alpha3.magnitude[::2]  # the same check at step 2h
 numeric2 = 10.0 * (np.roll(coarse, -1) - np.roll(coarse, 1)) / (4 * h)
 numeric2[[0, -1]] = 10.0 * (coarse[1] - coarse[-2]) / (4 * h)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The largest difference is {sci(error.max() / np.abs(jerk3).max())} of the largest jerk "
     f"(a step of {num(np.degrees(h))}°); doubling the step multiplies it by "
@@ -294,6 +300,8 @@ fd = (later.alpha3 - earlier.alpha3).magnitude / (2 * dt)
 fdJ = (later.A_B - earlier.A_B).to("in/s^2").magnitude / (2 * dt)
 J_B = r.J_B.to("in/s^3").magnitude
 assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_B)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["", "central difference, $\\Delta t = 10^{-4}$ s", "solver", "relative difference"],
     [
@@ -333,6 +341,8 @@ fivebar = GearedFiveBar(
     a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in", lam=-2, phi="30 deg"
 ).solve(theta2=theta, omega2="20 rad/s", alpha2=0)
 twice = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The piston's largest jerk is {num(np.abs(engine.d_dddot.m_as('m/s^3')).max(), 3)} m/s³ "
     f"at 3000 rpm, and {num(np.abs(twice.d_dddot.m_as('m/s^3')).max(), 3)} m/s³ at 6000 rpm: "
@@ -431,6 +441,8 @@ taus = np.linspace(0, 3, 61)
 simulated = np.array([leftover(tau)[1] for tau in taus])
 formula = np.abs(np.sinc(taus))  # sin(pi tau)/(pi tau), T_n = 1 s
 assert np.allclose(simulated, formula, atol=5e-3)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The simulation and the formula agree to {num(np.abs(simulated - formula).max(), 1)} "
     r"$A_0/\omega_n^2$ at every ramp time."

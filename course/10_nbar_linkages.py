@@ -126,6 +126,8 @@ closed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", 
 assert np.allclose(
     np.exp(1j * q), np.exp(1j * np.array([closed.theta3.magnitude, closed.theta4.magnitude]))
 )
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["step", r"$\lvert\mathbf{F}\rvert$ [in]"],
     [[str(i), sci(res)] for i, res in enumerate(history)],
@@ -150,6 +152,8 @@ omega2 = 10.0
 rhs = -1j * a * omega2 * np.exp(1j * theta2)
 omega34 = np.linalg.solve(jacobian(q), [rhs.real, rhs.imag])
 assert np.allclose(omega34, [closed.omega3.magnitude, closed.omega4.magnitude], rtol=1e-12)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     rf"$\omega_3$ = {num(omega34[0], 7)} rad/s and $\omega_4$ = {num(omega34[1], 7)} rad/s, as "
     "the closed form gives."
@@ -182,6 +186,8 @@ ended = np.full(g3.shape, 2)  # 2: did not converge
 for k, sol in enumerate((closed, crossed)):
     near = np.abs(np.exp(1j * t3) - np.exp(1j * sol.theta3.magnitude)) < 1e-6
     ended[(res < 1e-9) & near] = k
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"Of the {g3.size} guesses, {num(100 * np.mean(ended == 0), 2)} % end on the open circuit, "
     f"{num(100 * np.mean(ended == 1), 2)} % on the crossed one, and "
@@ -232,6 +238,8 @@ stated(np.mean(ended == 2), "0.3", sig=1)
 
 # %%
 q = np.radians([-73.4, -14.9])
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = []
 for i in range(4):
     step = np.linalg.solve(jacobian(q), -loop(q))
@@ -289,6 +297,8 @@ except AccelabError as err:
 
 # %%
 slider_six = sixbar_slider()
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["vector", "description"],
     [
@@ -416,6 +426,8 @@ cycle = linkage.solve(theta2=theta, omega2="12 rad/s", alpha2=0)
 assert cycle.valid.all()
 S = cycle.vectors["S"]
 its = np.asarray(cycle.iterations)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"{its.sum()} iterations for {its.size} positions (mean {num(its.mean(), 3)}, at most "
     f"{its.max()}); $S$ runs from {num(S.length.m_as('in').min(), 4)} to "
@@ -560,6 +572,8 @@ C_y = linkage.solve(theta2=fine, omega2="12 rad/s").points["C"].R.to("in").magni
 can = np.abs(1.0 - C_y) <= 4.0  # the geometric check
 limits = fdeg[np.flatnonzero(np.diff(can.astype(int)))]
 missed = int(np.sum(can & ~ok))
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"Geometry: the rod reaches the slide except between {num(limits[0], decimals=1)}° and "
     f"{num(limits[1], decimals=1)}°. The sweep is valid at {ok.sum()} of {ok.size} positions "

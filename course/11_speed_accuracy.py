@@ -131,6 +131,7 @@ def row(name, v):
     return [name, num(v["alpha3"], 10), num(v["alpha4"], 10), sci(worst)]
 
 
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 table(
     ["method", r"$\alpha_3$ [rad/s²]", r"$\alpha_4$ [rad/s²]", "difference"],
     [row(*i) for i in methods.items()],
@@ -159,6 +160,8 @@ for h in steps:
     for n in true:
         errors[n].append(abs(k[n] / true[n] - 1))
 best = {n: int(np.argmin(errors[n])) for n in true}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     "The best errors here, for the first, second and third derivative: "
     + ", ".join(f"{sci(errors[n][best[n]])} at $h$ = {sci(steps[best[n]], 1)} rad" for n in true)
@@ -215,6 +218,8 @@ delta = np.array([1e-9, 1e-7, 2e-3, 1e-2])  # distance from the toggle [rad]
 near = closed_form.solve(**p, theta2=toggle + delta, omega2=10.0, alpha2=-5.0)
 with np.errstate(invalid="ignore"):
     fd_error = np.abs(by_differences(1e-3, toggle + delta, geometry=p)["alpha4"] / near.alpha4 - 1)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 rows = [
     [sci(d, 1), ("answered", "", "refused")[s], sci(r, 1), sci(a4) if s == 0 else "NaN", sci(e)]
     for d, s, r, a4, e in zip(delta, near.status, near.roundoff, near.alpha4, fd_error)
