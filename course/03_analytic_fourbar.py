@@ -110,7 +110,7 @@ use_style()
 # unknowns. Keep the unknowns on the left and move every known term to the right. With the
 # chapter's names for the coefficients,
 #
-# $$ A\alpha_4 - B\alpha_3 = C, \qquad D\alpha_4 - E\alpha_3 = F $$
+# $$ \begin{aligned} A\alpha_4 - B\alpha_3 &= C, \\ D\alpha_4 - E\alpha_3 &= F \end{aligned} $$
 #
 # where
 #

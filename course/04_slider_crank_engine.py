@@ -235,7 +235,7 @@ table(
     ["speed", r"largest $\lvert\ddot d\rvert$", "", ""],
     [
         [
-            f"{name}, {num(speeds[name].m_as('rpm'))} rpm",
+            f"{name}, {num(speeds[name].m_as('rpm'), decimals=0)} rpm",
             f"{num(peak.m_as('m/s^2'), 4)} m/s²",
             f"{num(peak.m_as('ft/s^2'), 4)} ft/s²",
             f"{num(in_g(peak), 3)} g",

@@ -239,7 +239,7 @@ say(
     f"({num(in_g(walk.A_coriolis[0]), 2)} g) all the way, whatever $p$ is; the centripetal "
     f"part is {num(abs(walk.A_n[0]).m_as('m/s^2'), 3)} m/s² ({num(in_g(walk.A_n[0]), 2)} g) "
     "at the rim and falls to zero at the centre. The floor must push a "
-    f"{num(m_child.m_as('kg'))} kg child sideways with "
+    f"{num(m_child.m_as('kg'), decimals=0)} kg child sideways with "
     f"{num((m_child * abs(walk.A_coriolis[0])).m_as('N'), 2)} N."
 )
 
@@ -292,12 +292,12 @@ def roundabout(narrow):
     ax1.set_title("Top view (1 m of arrow = 3.3 m/s²)")
     fig.legend(
         handles=[
-            plt.Line2D([], [], color="black", label="her path over the ground"),
-            plt.Line2D([], [], color="#bbbbbb", ls=":", label="her painted line, then"),
+            plt.Line2D([], [], color="black", label="her path (ground)"),
+            plt.Line2D([], [], color="#bbbbbb", ls=":", label="her line, then"),
             plt.Line2D(
                 [], [], color=COLORS["coriolis"], ls=LINESTYLES["coriolis"], label="Coriolis"
             ),
-            plt.Line2D([], [], color=COLORS["normal"], label="normal (centripetal)"),
+            plt.Line2D([], [], color=COLORS["normal"], label="normal"),
         ],
         loc="outside lower center",
         ncol=2,
@@ -344,7 +344,8 @@ assert np.ptp(in_g(walk.A_coriolis)) < 1e-12  # the same all the way
 # Link 4 turns about $O_4$ and carries a slide; the block 3, pinned to the crank at A, slides
 # on it. The length $b$ from B to A varies, so the vector loop
 #
-# $$ a e^{j\theta_2} - b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_1} = 0 $$
+# $$ \begin{aligned} & a e^{j\theta_2} - b e^{j\theta_3} \\
+#    & - c e^{j\theta_4} - d e^{j\theta_1} = 0 \end{aligned} $$
 #
 # differentiated twice with $a, c, d$ constant and $b$ varying, gives
 #
@@ -578,12 +579,26 @@ step.lines += [
 wrong.steps.append(step)
 
 
-# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The acceleration polygon with the Coriolis vector (right) and without it (wrong): the wrong polygon still closes."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The acceleration polygon with the Coriolis vector (right) and without it (wrong), at one scale: the wrong polygon still closes."}}
 def both_polygons(narrow):
     fig, axes = panels(2, narrow, wide=(7.8, 4.0), tall=(4.4, 8.4), layout="constrained")
-    draw_polygon(con, "acceleration", ax=axes[0], units="US", legend=False)
+    # one frame, so one scale, for both polygons [in/s^2]
+    ends = [0j] + [
+        z / 0.0254
+        for c in (con, wrong)
+        for a in c.items("acceleration")[0]
+        for z in (a.start, a.start + a.vector)
+    ]
+    pad = 0.08 * max(np.ptp([z.real for z in ends]), np.ptp([z.imag for z in ends]))
+    box = (
+        min(z.real for z in ends) - pad,
+        max(z.real for z in ends) + pad,
+        min(z.imag for z in ends) - pad,
+        max(z.imag for z in ends) + pad,
+    )
+    draw_polygon(con, "acceleration", ax=axes[0], units="US", legend=False, box=box)
     axes[0].set_title("Right: with the Coriolis vector")
-    draw_polygon(wrong, "acceleration", ax=axes[1], units="US", legend=False)
+    draw_polygon(wrong, "acceleration", ax=axes[1], units="US", legend=False, box=box)
     axes[1].set_title("Wrong: Coriolis forgotten\n(the polygon still closes)")
     legend(
         fig,

@@ -267,7 +267,13 @@ def coupler_curves(narrow):
         ax.set_aspect("equal")
         ax.set_xlabel("x [in]")
         ax.set_ylabel("y [in]")
-    fig.colorbar(lc, ax=axes, label=r"$|\mathbf{A}|$ [in/s$^2$]", shrink=0.8)
+    fig.colorbar(
+        lc,
+        ax=axes,
+        label=r"$|\mathbf{A}|$ [in/s$^2$]",
+        shrink=0.8,
+        orientation="horizontal" if narrow else "vertical",
+    )
     return fig
 
 
@@ -306,7 +312,7 @@ for name, s in size.items():
     rows.append(
         [
             label,
-            f"{num(masses[name].m_as('lb'))} lb",
+            f"{num(masses[name].m_as('lb'), decimals=1)} lb",
             f"{num(s[k], 3)} lbf",
             f"{num(Q_(s[k], 'lbf').m_as('N'), 3)} N",
             at,

@@ -183,7 +183,10 @@ table(
             f"{num(head.min(), 2)} g to {num(head.max(), 2)} g",
         ],
         ["felt, chest to back", f"{num(fore.min(), 2)} g to {num(fore.max(), 2)} g"],
-        ["felt above 1.5 g", f"{num(heavy.mean() * t[-1], 2)} s of each {num(t[-1])} s cycle"],
+        [
+            "felt above 1.5 g",
+            f"{num(heavy.mean() * t[-1], 2)} s of each {num(t[-1], decimals=0)} s cycle",
+        ],
     ],
 )
 
@@ -262,7 +265,7 @@ def the_ride(narrow):
     ax3.plot(t, fore, color=COLORS["tangential"], lw=2, ls="--", label="chest to back")
     ax3.axhline(1, color="#999999", lw=0.8, ls=":")
     ax3.set_ylabel("felt load [g]")
-    ax3.set_ylim(-0.6, 2.2)
+    ax3.set_ylim(-1.0, 2.2)
     ax3.set_title("What the rider feels (roller coaster: 3.5 g)")
     ax3.legend(loc="upper right", ncol=2, fontsize=10)
     for ax in (ax2, ax3):

@@ -231,7 +231,7 @@ numeric2[[0, -1]] = 10.0 * (coarse[1] - coarse[-2]) / (4 * h)
 # %% tags=["hide-input"] jupyter={"source_hidden": true}
 say(
     f"The largest difference is {sci(error.max() / np.abs(jerk3).max())} of the largest jerk "
-    f"(a step of {num(np.degrees(h))}°); doubling the step multiplies it by "
+    f"(a step of {num(np.degrees(h), decimals=1)}°); doubling the step multiplies it by "
     f"{num(np.abs(numeric2 - jerk3[::2]).max() / error.max(), 2)}, as an error of order $h^2$ "
     "should."
 )

@@ -302,7 +302,15 @@ slider_six = sixbar_slider()
 table(
     ["vector", "description"],
     [
-        [f"`{name}`", ", ".join(f"{k}: {v}" for k, v in spec.items())]
+        [
+            f"`{name}`",
+            ", ".join(
+                f"{k}: follows {v['follow']}, offset {v['offset']}"
+                if isinstance(v, dict)
+                else f"{k}: {v}"
+                for k, v in spec.items()
+            ),
+        ]
         for name, spec in slider_six["vectors"].items()
     ],
 )

@@ -179,7 +179,9 @@ def v_curves(narrow):
         ax.plot(steps[best[n]], e[best[n]], "o", ms=11, mfc="none", mec=colours[n], mew=2)
         ax.axvline(EPS ** (1 / (n + 2)), color=colours[n], ls=":", lw=1.2)
     ax.set(ylim=(1e-13, 1e10), xlabel="step $h$ [rad]", ylabel="relative error")
-    ax.legend(loc="upper center", title="derivative", ncol=3 if not narrow else 1)
+    ax.legend(
+        loc="lower left" if narrow else "upper center", title="derivative", ncol=1 if narrow else 3
+    )
     return fig
 
 

@@ -41,7 +41,7 @@ G0 = Q_(1, "standard_gravity")
 STATIC_FRAMES = 4
 _STATIC_DPI = 100
 #: widest static figure [px]: two panels side by side on a page about 760 px wide
-STATIC_WIDTH = 900
+STATIC_WIDTH = 960
 #: widest static figure on a phone [px]: its panels one above the other
 NARROW_WIDTH = 470
 

@@ -17,6 +17,7 @@ components, each with its unit.
 """
 
 import math
+import re
 import textwrap
 
 import numpy as np
@@ -131,10 +132,20 @@ def _display(obj):
         display(obj)
 
 
+#: a number and the unit after it stay on one line ("367.1 m/s²", "37 g", "800 rpm")
+_UNIT_AFTER = re.compile(
+    r"(\d) (?=(?:m/s|in/s|ft/s|rad/s|rad\b|rpm|g\b|mm\b|in\b|m\b|s\b|µs|lbf|lb\b|N\b|kN|L\b|%))"
+)
+
+
+def _keep_units(text):
+    return _UNIT_AFTER.sub("\\1" + NBSP, text)
+
+
 def _cell(x):
     if isinstance(x, (float, np.floating)):
         return num(x)
-    return str(x).replace("|", "\\|").replace("\n", " ")
+    return _keep_units(str(x).replace("|", "\\|").replace("\n", " "))
 
 
 def table(header, rows, align=None, show=True):
@@ -167,7 +178,7 @@ def table(header, rows, align=None, show=True):
 def say(markdown, show=True):
     """A sentence (Markdown, math allowed) shown as rendered text (or, with
     ``show=False``, returned as :class:`Text`)."""
-    out = Text(textwrap.dedent(str(markdown)).strip() + "\n")
+    out = Text(_keep_units(textwrap.dedent(str(markdown)).strip()) + "\n")
     if not show:
         return out
     _display(out)
