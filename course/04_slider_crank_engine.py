@@ -304,7 +304,7 @@ def piston_curves(narrow):
         lw=1.5,
         label="crank pin's $x$ acceleration,\n$-a\\omega_2^2\\cos\\theta_2$",
     )
-    ax2.legend(loc="upper center")
+    ax2.legend(loc="lower center")
     ax2.set_title("the same curve at every speed")
     ax1.set_title("bore 77, stroke 80, rod 130 mm")
     for ax in (ax1, ax2):
