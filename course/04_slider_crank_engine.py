@@ -302,9 +302,10 @@ def piston_curves(narrow):
         color="#888888",
         ls=":",
         lw=1.5,
-        label="crank pin's $x$ acceleration,\n$-a\\omega_2^2\\cos\\theta_2$",
+        label="crank pin: $-\\cos\\theta_2$",
     )
-    ax2.legend(loc="lower center")
+    ax2.set_ylim(-1.45, 1.45)
+    ax2.legend(loc="upper right", borderaxespad=0.2)
     ax2.set_title("the same curve at every speed")
     ax1.set_title("bore 77, stroke 80, rod 130 mm")
     for ax in (ax1, ax2):
