@@ -14,8 +14,8 @@
 # %% [markdown]
 # # 1. The acceleration of a rotating point
 #
-# Every linkage analysis in this course starts from one small fact: how a point on a link
-# that turns about a fixed pivot accelerates. This notebook builds that fact, then uses it to
+# Every linkage analysis in this course starts from one small fact: how a point on a link that
+# turns about a fixed pivot accelerates. This notebook builds that fact, then uses it to
 # separate the two situations in which we subtract one acceleration from another. It follows
 # section 7.1 of the chapter this course is built on: Robert L. Norton, *Design of Machinery*,
 # chapter 7, "Acceleration Analysis" (eqs. 7.1 to 7.6, Figures 7-1 to 7-3, problem 7-1).
@@ -30,23 +30,15 @@
 #   acceleration* (two points of different bodies), and know what each lets you assume;
 # - work problem 7-1 by hand, in inches and in metres, and check it with `accelab.solver`.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.animation import animate
-from accelab.course.kit import (
-    COLORS,
-    cartesian,
-    explore,
-    in_g,
-    point_label,
-    polar,
-    stated,
-    use_style,
-    vector,
-)
+from accelab.course.kit import explore, in_g, point_label, stated, use_style, vector
+from accelab.course.renditions import legend, panels, show
+from accelab.course.text import num, say, table, vec, xy
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, RotatingPoint
 from accelab.solver.graphical import construct_case
@@ -67,8 +59,8 @@ use_style()
 # the radius. Differentiate once more. Both $\omega$ and $\theta$ change with time, so the
 # product rule gives two terms:
 #
-# $$ \mathbf{A}_P = p\,\alpha\, j e^{j\theta} - p\,\omega^2 e^{j\theta}
-#    = \mathbf{A}^t_P + \mathbf{A}^n_P \tag{7.2} $$
+# $$ \begin{aligned} \mathbf{A}_P &= p\,\alpha\, je^{j\theta} - p\,\omega^2 e^{j\theta} \\
+#    &= \mathbf{A}^t_P + \mathbf{A}^n_P \end{aligned} \tag{7.2} $$
 #
 # * The **tangential** component $p\alpha\,je^{j\theta}$ is perpendicular to the radius. The $j$
 #   turns it $90^\circ$ counter-clockwise from $\mathbf{R}_P$ when $\alpha > 0$; a negative
@@ -80,8 +72,8 @@ use_style()
 # With Euler's identity $e^{j\theta} = \cos\theta + j\sin\theta$ the same vector in cartesian
 # form (real part $x$, imaginary part $y$) is
 #
-# $$ \mathbf{A}_P = p\alpha\,(-\sin\theta + j\cos\theta) - p\omega^2(\cos\theta + j\sin\theta)
-#    \tag{7.3} $$
+# $$ \begin{aligned} \mathbf{A}_P = {} & p\alpha\,(-\sin\theta + j\cos\theta) \\
+#    & - p\omega^2(\cos\theta + j\sin\theta) \end{aligned} \tag{7.3} $$
 #
 # and the sizes of the two parts, which is all a graphical construction needs, are
 #
@@ -102,20 +94,28 @@ point = RotatingPoint(p="4 in")
 r = point.solve(theta2="30 deg", omega2="-20 rad/s", alpha2="150 rad/s^2")
 assert np.isclose(by_hand, r.A.to("m/s^2").magnitude, rtol=1e-12)
 
-print("A_t =", cartesian(r.A_t, "in/s^2"), "=", polar(r.A_t, "in/s^2"))
-print("A_n =", cartesian(r.A_n, "in/s^2"), "=", polar(r.A_n, "in/s^2"))
-print("A   =", cartesian(r.A, "in/s^2"), "=", polar(r.A, "in/s^2"))
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "cartesian", "polar"],
+    [
+        [rf"${s}$", xy(getattr(r, k), "in/s^2"), vec(getattr(r, k), "in/s^2")]
+        for k, s in (("A_t", r"\mathbf{A}^t"), ("A_n", r"\mathbf{A}^n"), ("A", r"\mathbf{A}"))
+    ],
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 angle = {k: float(np.angle(getattr(r, k).to("in/s^2").magnitude, deg=True)) for k in ("A_t", "A_n")}
-stated(angle["A_n"], "-150"), stated(angle["A_t"], "120")
+stated(angle["A_n"], "-150")
+stated(angle["A_t"], "120")
 
 # %% [markdown]
-# The normal part points at $-150^\circ$ (that is, $210^\circ$), exactly opposite the radius at $30^\circ$; the
-# tangential part at $120^\circ$, a quarter turn counter-clockwise from the radius because
-# $\alpha > 0$, even though the link turns clockwise. The picture, with the acceleration
-# vectors drawn at the point they belong to (the chapter's Figure 7-1):
+# The normal part points at $-150^\circ$ (that is, $210^\circ$), exactly opposite the radius
+# at $30^\circ$; the tangential part at $120^\circ$, a quarter turn counter-clockwise from the
+# radius because $\alpha > 0$, even though the link turns clockwise. The picture, with the
+# acceleration vectors drawn at the point they belong to (the chapter's Figure 7-1):
 
 
-# %% mystnb={"figure": {"caption": "A point 4 in from its pivot (the chapter's Figure 7-1): tangential, normal and total acceleration drawn at the point, with scale bars in inches and in/s^2."}, "image": {"alt": "A link from O to P with three acceleration arrows at P: tangential, normal (beside the link) and the total."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "A point 4 in from its pivot (the chapter's Figure 7-1): the tangential part $\\mathbf{A}^t$, the normal part $\\mathbf{A}^n$ and the total $\\mathbf{A}_P$ drawn at the point, with scale bars in inches and in/s²."}}
 def rotating(p, theta2, omega2, alpha2):
     """The graphical construction of a point on a link turning about a fixed pivot
     (section 7.1), as the solver's drawings take it: inputs as quantity strings."""
@@ -124,20 +124,31 @@ def rotating(p, theta2, omega2, alpha2):
     )
 
 
-fig, ax = plt.subplots(figsize=(6.4, 4.6))
-draw_linkage(
-    rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"),
-    ax=ax,
-    names={"O2": "O"},
-    title="4 in link, $\\omega$ = -20 rad/s, $\\alpha$ = 150 rad/s$^2$",
+def figure_7_1(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 4.9) if narrow else (6.4, 4.6))
+    draw_linkage(
+        rotating("4 in", "30 deg", "-20 rad/s", "150 rad/s^2"),
+        ax=ax,
+        names={"O2": "O"},
+        legend=not narrow,
+        title=r"4 in link, $\omega = -20$ rad/s, $\alpha = 150$ rad/s$^2$",
+    )
+    if narrow:
+        legend(fig, ("normal", "tangential", "resultant"), loc="outside lower center")
+    return fig
+
+
+show(
+    figure_7_1,
+    alt="A link from O to P with three acceleration arrows at P: tangential, normal "
+    "(beside the link) and the total.",
 )
-plt.show()
 
 # %% [markdown]
-# The drawing is the solver's (`accelab.solver.graphical`), as every linkage drawing of the course:
-# the link to scale, the acceleration components at the point they belong to, and a scale bar
-# for each (inches for the link, in/s$^2$ for the arrows). The normal part lies along the link,
-# so it is drawn just beside it.
+# The drawing is the solver's (`accelab.solver.graphical`), as every linkage drawing of the
+# course: the link to scale, the acceleration components at the point they belong to, and a
+# scale bar for each (inches for the link, in/s$^2$ for the arrows). The normal part lies along
+# the link, so it is drawn just beside it.
 
 # %% [markdown]
 # ### Two cases of one equation
@@ -156,8 +167,8 @@ plt.show()
 # | | Case 1: acceleration difference | Case 2: relative acceleration |
 # |---|---|---|
 # | the points | two points of **one** rigid body | points of **two** bodies |
-# | $\mathbf{A}_{PA}$ | $p\alpha\,je^{j\theta} - p\omega^2e^{j\theta}$ with the body's own $\omega$, $\alpha$ | whatever $\mathbf{A}_P - \mathbf{A}_A$ comes to |
-# | its normal part | along the line $PA$, toward $A$, of size $p\,\omega^2$ | no such rule |
+# | $\mathbf{A}_{PA}$ | $p\alpha\,je^{j\theta} - p\omega^2e^{j\theta}$, the body's own $\omega$, $\alpha$ | whatever $\mathbf{A}_P - \mathbf{A}_A$ comes to |
+# | its normal part | along $PA$, toward $A$, of size $p\,\omega^2$ | no such rule |
 # | its tangential part | perpendicular to $PA$, of size $p\,\alpha$ | no such rule |
 #
 # Case 1 is what makes graphical and analytic linkage analysis possible: for two pins of one
@@ -180,43 +191,58 @@ t = Q_(0.01, "s")
 theta_A, omega_A, alpha_7_1 = Q_(45, "deg"), Q_(100, "rad/s"), Q_(-500, "rad/s^2")
 omega_B = omega_A + alpha_7_1 * t
 theta_B = (theta_A + omega_A * t + 0.5 * alpha_7_1 * t**2).to("deg")
-print(f"omega_B = {omega_B:.4g~P},  theta_B = {theta_B:.5g~P}")
+say(rf"At $B$: $\omega_B$ = {num(omega_B)} rad/s and $\theta_B$ = {num(theta_B, 5)}°.")
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 turned = theta_B - theta_A
-stated(turned.to("rad"), "0.975", "rad"), stated(turned, "55.86", "deg")
+stated(turned.to("rad"), "0.975", "rad")
+stated(turned, "55.86", "deg")
 stated(omega_A - omega_B, "5", "rad/s")
+
 # %% [markdown]
 # The point turned $0.975$ rad ($55.86^\circ$) in those 10 ms and slowed by 5 rad/s.
 #
 # **Step 2: the acceleration at A and at B.** In polar form eq. 7.2 is already written:
 # $\mathbf{A} = p\alpha\,je^{j\theta} - p\omega^2e^{j\theta}$ with the numbers put in.
-# At $A$: $p\alpha = 6.5 \times (-500) = -3250$ in/s$^2$ and $p\omega^2 = 6.5\times 100^2 =
-# 65\,000$ in/s$^2$, so
+# At $A$: $p\alpha = 6.5 \times (-500) = -3250$ in/s$^2$ and
+# $p\omega^2 = 6.5\times 100^2 = 65\,000$ in/s$^2$, so
 #
 # $$ \mathbf{A}_A = -3250\,j e^{j45^\circ} - 65\,000\, e^{j45^\circ}\ \text{in/s}^2 $$
 #
 # The solver gives both points and the cartesian form:
 
 # %%
-stated(6.5 * -500, "-3250"), stated(6.5 * 100**2, "65000")
 pt = RotatingPoint(p="6.5 in")
 at_A = pt.solve(theta2=theta_A, omega2=omega_A, alpha2=alpha_7_1)
 at_B = pt.solve(theta2=theta_B, omega2=omega_B, alpha2=alpha_7_1)
 
-for name, res in (("A", at_A), ("B", at_B)):
-    print(f"position {name}:")
-    print(f"   A_t = {polar(res.A_t, 'in/s^2')}   (|p alpha|)")
-    print(f"   A_n = {polar(res.A_n, 'in/s^2')}   (p omega^2, toward the centre)")
-    print(f"   A   = {cartesian(res.A, 'in/s^2')} = {polar(res.A, 'in/s^2')}")
-    print(f"       = {cartesian(res.A, 'm/s^2')} = {polar(res.A, 'm/s^2')}  ({in_g(res.A):.0f} g)")
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "position $A$", "position $B$"],
+    [
+        [r"$\mathbf{A}^t$, size $\lvert p\alpha \rvert$"]
+        + [vec(res.A_t, "in/s^2") for res in (at_A, at_B)],
+        [r"$\mathbf{A}^n$, size $p\omega^2$"] + [vec(res.A_n, "in/s^2") for res in (at_A, at_B)],
+        [r"$\mathbf{A}$, polar"] + [vec(res.A, "in/s^2") for res in (at_A, at_B)],
+        [r"$\mathbf{A}$, cartesian"] + [xy(res.A, "in/s^2") for res in (at_A, at_B)],
+        [r"$\mathbf{A}$ in SI"] + [vec(res.A, "m/s^2") for res in (at_A, at_B)],
+        [r"$\lvert\mathbf{A}\rvert$ in $g$"] + [f"{num(in_g(res.A), 3)} g" for res in (at_A, at_B)],
+    ],
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(6.5 * -500, "-3250")
+stated(6.5 * 100**2, "65000")
 stated(np.angle(at_A.A_t.magnitude, deg=True), "-45")
-stated(abs(at_A.A_n), "65000", "in/s^2"), stated(abs(at_B.A_n), "58660", "in/s^2", sig=4)
-stated(abs(at_A.A), "1650", "m/s^2", sig=2), stated(in_g(at_A.A), "170", sig=2)
+stated(abs(at_A.A_n), "65000", "in/s^2")
+stated(abs(at_B.A_n), "58660", "in/s^2", sig=4)
+stated(abs(at_A.A), "1650", "m/s^2", sig=2)
+stated(in_g(at_A.A), "170", sig=2)
+
 # %% [markdown]
-# Each tangential part points $90^\circ$ *clockwise* from its radius ($45^\circ - 90^\circ =
-# -45^\circ$ at $A$) because $\alpha < 0$, while the point itself still turns
-# counter-clockwise: the body is slowing down. The normal parts, $65\,000$ and
+# Each tangential part points $90^\circ$ *clockwise* from its radius
+# ($45^\circ - 90^\circ = -45^\circ$ at $A$) because $\alpha < 0$, while the point itself still
+# turns counter-clockwise: the body is slowing down. The normal parts, $65\,000$ and
 # $58\,660$ in/s$^2$, dwarf the tangential ones; in SI that is about $1650$ m/s$^2$, some
 # 170 g.
 #
@@ -225,8 +251,14 @@ stated(abs(at_A.A), "1650", "m/s^2", sig=2), stated(in_g(at_A.A), "170", sig=2)
 
 # %%
 A_BA = at_B.A - at_A.A
-print("A_BA =", cartesian(A_BA, "in/s^2"), "=", polar(A_BA, "in/s^2"))
-print("     =", cartesian(A_BA, "m/s^2"), "=", polar(A_BA, "m/s^2"))
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"$\mathbf{{A}}_{{BA}}$ = {xy(A_BA, 'in/s^2')} = {vec(A_BA, 'in/s^2')}, "
+    rf"that is {vec(A_BA, 'm/s^2')}."
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 # the same difference, component by component (eq. 7.4 with both sides split)
 parts = (at_B.A_t - at_A.A_t) + (at_B.A_n - at_A.A_n)
 assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
@@ -235,67 +267,54 @@ assert np.isclose(parts.to("in/s^2").magnitude, A_BA.to("in/s^2").magnitude)
 # Drawn to scale, as the problem asks: the two positions on their circle with their
 # accelerations, and the vector triangle $\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$.
 
-# %% mystnb={"figure": {"caption": "Problem 7-1: the accelerations at positions A and B (left) and the vector triangle A_B = A_A + A_BA of eq. 7.4 (right)."}, "image": {"alt": "Two panels: the rotating link at two positions with acceleration arrows, and the triangle adding A_A and A_BA to give A_B."}}
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.2))
-ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
-ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
-scale = 6.5 / 80_000  # in of drawing per in/s^2
-for res, label in ((at_A, "A"), (at_B, "B")):
-    z = complex(res.R.to("in").magnitude)
-    ax1.plot([0, z.real], [0, z.imag], color="#4d4d4d", lw=3, solid_capstyle="round")
-    ax1.scatter([z.real], [z.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
-    ax1.annotate(
-        label,
-        (z.real, z.imag),
-        xytext=(10, 4),
-        textcoords="offset points",
-        fontsize=13,
-        fontweight="bold",
-    )
-    vector(ax1, z, complex(res.A_t.to("in/s^2").magnitude), "tangential", None, scale)
-    vector(
-        ax1,
-        z,
-        complex(res.A.to("in/s^2").magnitude),
-        "resultant",
-        rf"$\mathbf{{A}}_{label}$",
-        scale,
-    )
-arc = 6.5 * np.exp(1j * np.linspace(np.radians(45), theta_B.to("rad").magnitude, 40))
-ax1.plot(1.12 * arc.real, 1.12 * arc.imag, color="#888888", lw=1)
-ax1.annotate(
-    "0.01 s", (1.15 * arc[20].real, 1.15 * arc[20].imag), fontsize=10, color="#555555", ha="left"
-)
-ax1.scatter([0], [0], s=40, facecolor="white", edgecolor="k", zorder=5)
-ax1.annotate("O", (0, 0), xytext=(-14, -12), textcoords="offset points")
-handles = [
-    plt.Line2D([], [], color=COLORS[k], lw=2, ls=ls, label=t)
-    for k, ls, t in (
-        ("tangential", "--", "tangential (small)"),
-        ("resultant", "-", "total acceleration"),
-    )
-]
-ax1.legend(handles=handles, loc="lower left", fontsize=9)
-ax1.set_aspect("equal")
-ax1.set_xlabel("x [in]")
-ax1.set_ylabel("y [in]")
-ax1.set_title(f"Problem 7-1: arrows 1 in = {1 / scale:,.0f} in/s$^2$".replace(",", " "))
-ax1.set_xlim(-8, 8)
-ax1.set_ylim(-4, 8.5)
 
-zA = complex(at_A.A.to("in/s^2").magnitude) / 1000
-zB = complex(at_B.A.to("in/s^2").magnitude) / 1000
-vector(ax2, 0j, zA, "resultant", r"$\mathbf{A}_A$")
-vector(ax2, 0j, zB, "known", r"$\mathbf{A}_B$")
-vector(ax2, zA, zB - zA, "tangential", r"$\mathbf{A}_{BA}$")
-ax2.scatter([0], [0], color="k", s=15)
-ax2.set_aspect("equal")
-ax2.set_xlabel("$A_x$ [1000 in/s$^2$]")
-ax2.set_ylabel("$A_y$ [1000 in/s$^2$]")
-ax2.set_title(r"$\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$ (eq. 7.4)")
-ax2.set_xlim(-50, 25)
-ax2.set_ylim(-62, 8)
-plt.show()
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Problem 7-1: the accelerations at positions $A$ and $B$ on their circle, and the vector triangle $\\mathbf{A}_B = \\mathbf{A}_A + \\mathbf{A}_{BA}$ of eq. 7.4."}}
+def problem_7_1(narrow):
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.6, 4.0), tall=(4.4, 8.2), layout="constrained")
+    ring = 6.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 200))
+    ax1.plot(ring.real, ring.imag, color="#bbbbbb", lw=1)
+    scale = 6.5 / 80_000  # in of drawing per in/s^2
+    for res, label in ((at_A, "A"), (at_B, "B")):
+        z = complex(res.R.to("in").magnitude)
+        ax1.plot([0, z.real], [0, z.imag], color="#4d4d4d", lw=3, solid_capstyle="round")
+        ax1.scatter([z.real], [z.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
+        point_label(ax1, label, z, fontweight="bold")
+        vector(ax1, z, complex(res.A_t.to("in/s^2").magnitude), "tangential", None, scale)
+        A = complex(res.A.to("in/s^2").magnitude)
+        vector(ax1, z, A, "resultant", rf"$\mathbf{{A}}_{label}$", scale)
+    arc = 6.5 * np.exp(1j * np.linspace(np.radians(45), theta_B.to("rad").magnitude, 40))
+    ax1.plot(1.12 * arc.real, 1.12 * arc.imag, color="#888888", lw=1)
+    point_label(ax1, "0.01 s", 1.15 * arc[20], color="#555555", fontsize=10)
+    ax1.scatter([0], [0], s=40, facecolor="white", edgecolor="k", zorder=5)
+    point_label(ax1, "O", 0j)
+    legend(ax1, ("tangential", "resultant"), loc="lower left")
+    ax1.set_aspect("equal")
+    ax1.set_xlabel("x [in]")
+    ax1.set_ylabel("y [in]")
+    ax1.set_title(f"arrows: 1 in = {num(1 / scale)} in/s$^2$")
+    ax1.set_xlim(-8, 8)
+    ax1.set_ylim(-4, 8.5)
+
+    zA = complex(at_A.A.to("in/s^2").magnitude) / 1000
+    zB = complex(at_B.A.to("in/s^2").magnitude) / 1000
+    vector(ax2, 0j, zA, "resultant", r"$\mathbf{A}_A$")
+    vector(ax2, 0j, zB, "known", r"$\mathbf{A}_B$")
+    vector(ax2, zA, zB - zA, "tangential", r"$\mathbf{A}_{BA}$")
+    ax2.scatter([0], [0], color="k", s=15)
+    ax2.set_aspect("equal")
+    ax2.set_xlabel("$A_x$ [1000 in/s$^2$]")
+    ax2.set_ylabel("$A_y$ [1000 in/s$^2$]")
+    ax2.set_title(r"$\mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}$")
+    ax2.set_xlim(-50, 25)
+    ax2.set_ylim(-62, 8)
+    return fig
+
+
+show(
+    problem_7_1,
+    alt="The rotating link at two positions with acceleration arrows, and the triangle "
+    "adding A_A and A_BA to give A_B.",
+)
 
 # %% [markdown]
 # A caution on what we just computed. $A$ and $B$ here are *one particle at two instants*,
@@ -343,65 +362,85 @@ def angle_to_line(a_vec, from_p_to_a):
 
 
 n1 = link.A_n
-print("Case 1: A_PA   =", polar(A_PA1, "m/s^2"))
-print(
-    "        A_PA^n =",
-    polar(n1, "m/s^2"),
-    f" -> {abs(angle_to_line(n1, -R_PA1)):.3f} deg from the line P->A: exactly along it",
-)
-print("        A_P    =", polar(A_P1, "m/s^2"))
-print("Case 2: A_P    =", polar(A_P2, "m/s^2"), "  A_A =", polar(A_A2, "m/s^2"))
-print(
-    "        A_PA   =",
-    polar(A_PA2, "m/s^2"),
-    f" -> {angle_to_line(A_PA2, R_A2 - R_P2):.3g} deg from the line P->A: nothing special",
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "vector", "angle to the line $P \\to A$"],
+    [
+        [r"Case 1: $\mathbf{A}_{PA}$", vec(A_PA1, "m/s^2"), ""],
+        [
+            r"Case 1: $\mathbf{A}^n_{PA}$",
+            vec(n1, "m/s^2"),
+            f"{num(abs(angle_to_line(n1, -R_PA1)), decimals=1)}°: along it",
+        ],
+        [r"Case 1: $\mathbf{A}_P$", vec(A_P1, "m/s^2"), ""],
+        [r"Case 2: $\mathbf{A}_P$", vec(A_P2, "m/s^2"), ""],
+        [r"Case 2: $\mathbf{A}_A$", vec(A_A2, "m/s^2"), ""],
+        [
+            r"Case 2: $\mathbf{A}_{PA}$",
+            vec(A_PA2, "m/s^2"),
+            f"{num(angle_to_line(A_PA2, R_A2 - R_P2), 3)}°: nothing special",
+        ],
+    ],
 )
 
-# %% mystnb={"figure": {"caption": "Acceleration difference on one body (its normal part lies along PA) against relative acceleration of two bodies (no such rule)."}, "image": {"alt": "Two panels comparing a point pair on one rotating body with a point on each of two bodies, with their acceleration vectors."}}
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
-# case 1: carriage, link, vectors at P (drawing scale 0.3 m per 40 m/s^2)
-s1 = 0.3 / 40
-P1 = R_PA1
-ax1.add_patch(plt.Rectangle((-0.25, -0.08), 0.5, 0.08, fc="#dddddd", ec="#4d4d4d"))
-ax1.plot([0, P1.real], [0, P1.imag], color="#4d4d4d", lw=4, solid_capstyle="round")
-ax1.scatter([0, P1.real], [0, P1.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
-point_label(ax1, "A", 0j)
-point_label(ax1, "P", P1)
-vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
-vector(ax1, P1, complex(link.A_t.to("m/s^2").magnitude), "tangential", r"$\mathbf{A}^t_{PA}$", s1)
-vector(
-    ax1, P1, complex(n1.to("m/s^2").magnitude), "normal", r"$\mathbf{A}^n_{PA}$", s1, beside=5
-)  # along the link: drawn beside it
-vector(ax1, P1, complex(A_P1.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s1)
-ax1.plot([P1.real, 0], [P1.imag, 0], ls=":", color="#888888")
-ax1.set_aspect("equal")
-ax1.set_xlim(-0.3, 0.45)
-ax1.set_ylim(-0.15, 0.45)
-ax1.set_xlabel("x [m]")
-ax1.set_ylabel("y [m]")
-ax1.set_title("Case 1: one body. $\\mathbf{A}^n_{PA}$ lies along PA")
-# case 2: two cars on the road, vectors at the cars (drawing scale 2.5 m per m/s^2)
-s2 = 2.5
-road = 50 * np.exp(1j * np.radians(np.linspace(55, 105, 60)))
-ax2.plot(road.real, road.imag, color="#bbbbbb", lw=6, solid_capstyle="butt")
-ax2.plot([R_A2.real - 15, R_A2.real + 15], [R_A2.imag] * 2, color="#bbbbbb", lw=6)
-for z, name in ((R_P2, "P"), (R_A2, "A")):
-    ax2.scatter([z.real], [z.imag], marker="s", s=60, color="#4d4d4d", zorder=5)
-    point_label(ax2, f"car {name}", z)
-ax2.plot([R_P2.real, R_A2.real], [R_P2.imag, R_A2.imag], ls=":", color="#888888")
-vector(ax2, R_P2, complex(A_P2.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s2)
-vector(ax2, R_A2, complex(A_A2.magnitude), "known", r"$\mathbf{A}_A$", s2)
-vector(ax2, R_P2, complex(A_PA2.to("m/s^2").magnitude), "tangential", r"$\mathbf{A}_{PA}$", s2)
-ax2.set_aspect("equal")
-ax2.set_xlabel("x [m]")
-ax2.set_ylabel("y [m]")
-ax2.set_xlim(-20, 32)
-ax2.set_ylim(24, 54)
-ax2.set_title("Case 2: two bodies. $\\mathbf{A}_{PA}$ has no such rule")
-plt.show()
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0")
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Acceleration difference on one body (its normal part lies along $PA$) against relative acceleration of two bodies (no such rule)."}}
+def two_cases(narrow):
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.6, 3.6), tall=(4.4, 7.0), layout="constrained")
+    # case 1: carriage, link, vectors at P (drawing scale 0.3 m per 40 m/s^2)
+    s1 = 0.3 / 40
+    P1 = R_PA1
+    ax1.add_patch(plt.Rectangle((-0.25, -0.08), 0.5, 0.08, fc="#dddddd", ec="#4d4d4d"))
+    ax1.plot([0, P1.real], [0, P1.imag], color="#4d4d4d", lw=4, solid_capstyle="round")
+    ax1.scatter([0, P1.real], [0, P1.imag], s=40, facecolor="white", edgecolor="k", zorder=5)
+    point_label(ax1, "A", 0j)
+    point_label(ax1, "P", P1)
+    vector(ax1, 0j, complex(A_A1.magnitude), "known", r"$\mathbf{A}_A$", s1)
+    At = complex(link.A_t.to("m/s^2").magnitude)
+    vector(ax1, P1, At, "tangential", r"$\mathbf{A}^t_{PA}$", s1)
+    An = complex(n1.to("m/s^2").magnitude)
+    vector(ax1, P1, An, "normal", r"$\mathbf{A}^n_{PA}$", s1, beside=5)  # drawn beside the link
+    vector(ax1, P1, complex(A_P1.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s1)
+    ax1.plot([P1.real, 0], [P1.imag, 0], ls=":", color="#888888")
+    ax1.set_aspect("equal")
+    ax1.set_xlim(-0.3, 0.45)
+    ax1.set_ylim(-0.15, 0.45)
+    ax1.set_xlabel("x [m]")
+    ax1.set_ylabel("y [m]")
+    ax1.set_title("Case 1: one body.\n$\\mathbf{A}^n_{PA}$ lies along $PA$")
+    # case 2: two cars on the road, vectors at the cars (drawing scale 2.5 m per m/s^2)
+    s2 = 2.5
+    road = 50 * np.exp(1j * np.radians(np.linspace(55, 105, 60)))
+    ax2.plot(road.real, road.imag, color="#bbbbbb", lw=6, solid_capstyle="butt")
+    ax2.plot([R_A2.real - 15, R_A2.real + 15], [R_A2.imag] * 2, color="#bbbbbb", lw=6)
+    for z, name in ((R_P2, "P"), (R_A2, "A")):
+        ax2.scatter([z.real], [z.imag], marker="s", s=60, color="#4d4d4d", zorder=5)
+        point_label(ax2, f"car {name}", z)
+    ax2.plot([R_P2.real, R_A2.real], [R_P2.imag, R_A2.imag], ls=":", color="#888888")
+    vector(ax2, R_P2, complex(A_P2.to("m/s^2").magnitude), "resultant", r"$\mathbf{A}_P$", s2)
+    vector(ax2, R_A2, complex(A_A2.magnitude), "known", r"$\mathbf{A}_A$", s2)
+    A_PA = complex(A_PA2.to("m/s^2").magnitude)
+    vector(ax2, R_P2, A_PA, "tangential", r"$\mathbf{A}_{PA}$", s2)
+    ax2.set_aspect("equal")
+    ax2.set_xlabel("x [m]")
+    ax2.set_ylabel("y [m]")
+    ax2.set_xlim(-20, 32)
+    ax2.set_ylim(24, 54)
+    ax2.set_title("Case 2: two bodies.\n$\\mathbf{A}_{PA}$ has no such rule")
+    return fig
+
+
+show(
+    two_cases,
+    alt="Two panels comparing a point pair on one rotating body with a point on each of "
+    "two bodies, with their acceleration vectors.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(abs(n1), "19.2", "m/s^2")
+stated(abs(angle_to_line(n1, -R_PA1)), "0")
+
 # %% [markdown]
 # In Case 1 the normal part of $\mathbf{A}_{PA}$ lies exactly on the line from $P$ to $A$
 # ($0^\circ$) and has the size $|PA|\,\omega^2 = 0.3 \times 8^2 = 19.2$ m/s$^2$: we could
@@ -417,7 +456,7 @@ stated(abs(n1), "19.2", "m/s^2"), stated(abs(angle_to_line(n1, -R_PA1)), "0")
 # \alpha/\omega^2$. The tangential part swaps sides when $\alpha$ changes sign; flipping the
 # sign of $\omega$ changes nothing at all.
 
-# %% mystnb={"figure": {"caption": "The rotating point at four values of alpha (omega = 20 rad/s), all in one frame at one arrow scale: only the tangential part changes."}, "image": {"alt": "Four drawings of the same link with its acceleration components for alpha from -1500 to 1500 rad/s^2."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The rotating point at four values of $\\alpha$ ($\\omega = 20$ rad/s), all in one frame at one arrow scale: only the tangential part changes."}}
 BOX = (-3.0, 10.5, -3.5, 10.5)  # one frame [in] ...
 SCALE = 6.5 / 12_000  # ... and one arrow scale [in per in/s^2] for every panel
 
@@ -445,7 +484,7 @@ def draw(alpha2, omega2):
 
 explore(draw, alpha2=(-1500, 1500, 50, -500, "rad/s^2"), omega2=(-40, 40, 1, 20, "rad/s"))
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 stated(6.5 * 20**2, "2600")
 stated((100 / 20) ** 2, "25")
 assert abs(np.degrees(np.arctan2(500, 100**2))) < 3  # "only a few degrees"
@@ -464,9 +503,11 @@ assert abs(np.degrees(np.arctan2(500, 100**2))) < 3  # "only a few degrees"
 # tangential part keeps its size, $p\alpha$; the normal part grows with $\omega^2$ and soon
 # dominates, and the total acceleration swings round toward the pivot. The arrows are drawn at
 # one scale; the marker runs along the curves of $\omega$ and of the sizes of the three vectors.
+# Pause the player where the two parts are equal ($\omega^2 = \alpha$, early in the turn) and
+# step on from there.
 
 
-# %% mystnb={"figure": {"caption": "Animation: a point 6.5 in from its pivot speeding up from 2 rad/s at 10 rad/s^2 through one turn, with omega and the sizes of its acceleration components."}, "image": {"alt": "Animated drawing of a turning link with growing acceleration arrows, beside plots of omega and of the acceleration sizes with a moving marker."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Animation: a point 6.5 in from its pivot speeding up from 2 rad/s at 10 rad/s² through one turn, with $\\omega$ and the sizes of its acceleration components. Play, pause, step or drag the slider."}}
 def speeding_up(theta2_deg, omega0=2.0, alpha=10.0):
     """omega at the angle theta2 [deg] for a start at omega0 [rad/s], constant alpha."""
     return {"omega2": f"{np.sqrt(omega0**2 + 2 * alpha * np.radians(theta2_deg)):.6f} rad/s"}
@@ -484,6 +525,8 @@ animate(
     kinds=("tangential", "normal", "resultant"),
     title="6.5 in link speeding up",
     names={"O2": "O"},
+    alt="A turning link whose acceleration arrows grow as it speeds up, beside plots of "
+    "omega and of the acceleration sizes with a moving marker.",
 )
 
 # %% [markdown]
@@ -504,9 +547,9 @@ animate(
 #
 # <details><summary>Answer</summary>
 #
-# The normal part is unchanged, $-5j$ m/s$^2$. The tangential part is $p\alpha\,je^{j90^\circ}
-# = 0.2(-30)(j\cdot j) = +6$ m/s$^2$, i.e. along $+x$ (clockwise from straight up). So
-# $\mathbf{A} = 6 - 5j$ m/s$^2$, $7.81$ m/s$^2$ at $-39.8^\circ$.
+# The normal part is unchanged, $-5j$ m/s$^2$. The tangential part is
+# $p\alpha\,je^{j90^\circ} = 0.2(-30)(j\cdot j) = +6$ m/s$^2$, i.e. along $+x$ (clockwise from
+# straight up). So $\mathbf{A} = 6 - 5j$ m/s$^2$, $7.81$ m/s$^2$ at $-39.8^\circ$.
 #
 # </details>
 #
@@ -532,17 +575,20 @@ animate(
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 # the answers above, checked against the solver
 q = RotatingPoint(p="0.2 m")
 a1 = q.solve(theta2="90 deg", omega2="5 rad/s", alpha2="0 rad/s^2").A.to("m/s^2").magnitude
 assert np.isclose(a1, -5j)
 a2 = q.solve(theta2="90 deg", omega2="-5 rad/s", alpha2="-30 rad/s^2").A.to("m/s^2").magnitude
 assert np.isclose(a2, 6 - 5j)
-stated(abs(a2), "7.81"), stated(np.angle(a2, deg=True), "-39.8")
+stated(abs(a2), "7.81")
+stated(np.angle(a2, deg=True), "-39.8")
 stated(0.1 * 10**2, "10")
 stated(100 * (1 - (abs(at_B.A_n) / abs(at_A.A_n)).magnitude), "10", sig=1)
-stated(abs(at_A.A_t), "3250", "in/s^2"), stated(abs(at_B.A_t), "3250", "in/s^2")
+stated(abs(at_A.A_t), "3250", "in/s^2")
+stated(abs(at_B.A_t), "3250", "in/s^2")
+
 # %% [markdown]
 # ## Further problems
 #
@@ -585,24 +631,36 @@ stated(abs(at_A.A_t), "3250", "in/s^2"), stated(abs(at_B.A_t), "3250", "in/s^2")
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 # the folded answers, computed
 f = RotatingPoint(p="150 mm").solve(theta2="210 deg", omega2="-30 rad/s", alpha2="400 rad/s^2")
 At, An, A = (complex(getattr(f, k).to("m/s^2").magnitude) for k in ("A_t", "A_n", "A"))
-stated(abs(At), "60"), stated(np.angle(At, deg=True) % 360, "300")
-stated(At.real, "30"), stated(At.imag, "-51.96")
-stated(abs(An), "135"), stated(np.angle(An, deg=True), "30")
-stated(An.real, "116.91"), stated(An.imag, "67.5")
-stated(A.real, "146.91"), stated(A.imag, "15.54"), stated(abs(A), "147.7")
+stated(abs(At), "60")
+stated(np.angle(At, deg=True) % 360, "300")
+stated(At.real, "30")
+stated(At.imag, "-51.96")
+stated(abs(An), "135")
+stated(np.angle(An, deg=True), "30")
+stated(An.real, "116.91")
+stated(An.imag, "67.5")
+stated(A.real, "146.91")
+stated(A.imag, "15.54")
+stated(abs(A), "147.7")
 stated(np.angle(A, deg=True), "6.04")
-stated(np.degrees(np.arctan2(400, 900)), "23.96"), stated(np.sqrt(400), "20")
+stated(np.degrees(np.arctan2(400, 900)), "23.96")
+stated(np.sqrt(400), "20")
 BA = RotatingPoint(p="120 mm").solve(theta2="60 deg", omega2="6 rad/s", alpha2="-25 rad/s^2")
 A_BA = complex(BA.A.to("m/s^2").magnitude)
-stated(abs(BA.A_t), "3", "m/s^2"), stated(np.angle(BA.A_t.magnitude, deg=True), "-30")
-stated(abs(BA.A_n), "4.32", "m/s^2"), stated(np.angle(BA.A_n.magnitude, deg=True) % 360, "240")
-stated(A_BA.real, "0.438"), stated(A_BA.imag, "-5.241")
+stated(abs(BA.A_t), "3", "m/s^2")
+stated(np.angle(BA.A_t.magnitude, deg=True), "-30")
+stated(abs(BA.A_n), "4.32", "m/s^2")
+stated(np.angle(BA.A_n.magnitude, deg=True) % 360, "240")
+stated(A_BA.real, "0.438")
+stated(A_BA.imag, "-5.241")
 A_B = 2 - 4j + A_BA
-stated(A_B.real, "2.438"), stated(A_B.imag, "-9.241"), stated(abs(A_B), "9.557")
+stated(A_B.real, "2.438")
+stated(A_B.imag, "-9.241")
+stated(abs(A_B), "9.557")
 stated(np.angle(A_B, deg=True), "-75.22")
 # %% [markdown]
 # ## Practice

@@ -30,7 +30,7 @@
 #   the open and crossed circuits;
 # - recognise toggle and non-assemblable positions and read the solver's `valid` mask.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import math
 
@@ -38,7 +38,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.animation import animate
-from accelab.course.kit import CIRCUIT_COLORS, cartesian, explore, polar, stated, use_style
+from accelab.course.kit import CIRCUIT_COLORS, explore, stated, use_style
+from accelab.course.renditions import panels, show
+from accelab.course.text import num, say, sci, table, vec, xy
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct_case
@@ -57,15 +59,16 @@ use_style()
 # Differentiating once gives the velocity equation (each $e^{j\theta}$ brings down
 # $j\omega$):
 #
-# $$ ja\omega_2 e^{j\theta_2} + jb\omega_3 e^{j\theta_3} - jc\omega_4 e^{j\theta_4} = 0
-#    \tag{6.14} $$
+# $$ \begin{aligned} & ja\omega_2 e^{j\theta_2} + jb\omega_3 e^{j\theta_3} \\
+#    & - jc\omega_4 e^{j\theta_4} = 0 \end{aligned} \tag{6.14} $$
 #
 # Differentiating again, every term has two functions of time, $\omega$ and $\theta$, and so
 # yields two terms:
 #
-# $$ \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
-#  + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right)
-#  - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right) = 0 \tag{7.7} $$
+# $$ \begin{aligned} & \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right) \\
+#  & + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) \\
+#  & - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right) = 0
+#    \end{aligned} \tag{7.7} $$
 #
 # Each bracket is a rotating point's acceleration (eq. 7.2): the first is $\mathbf{A}_A$, the
 # second $\mathbf{A}_{BA}$ (B about A on the coupler), the third $\mathbf{A}_B$ (B about $O_4$).
@@ -73,19 +76,64 @@ use_style()
 #
 # $$ \mathbf{A}_A + \mathbf{A}_{BA} - \mathbf{A}_B = 0 \tag{7.8} $$
 #
-# Its real and imaginary parts are two linear equations in the two unknowns $\alpha_3$,
-# $\alpha_4$. Solving them (Cramer's rule) gives
+# **From one vector equation to two scalar ones.** Put Euler's identity
+# $e^{j\theta} = \cos\theta + j\sin\theta$ into every term of eq. 7.7 and multiply out the
+# $j$ of each tangential term ($j \cdot j = -1$):
 #
-# $$ \alpha_3 = \frac{CD - AF}{AE - BD}, \qquad \alpha_4 = \frac{CE - BF}{AE - BD} \tag{7.12} $$
+# $$ \begin{aligned}
+#    & a\alpha_2(-\sin\theta_2 + j\cos\theta_2) \\
+#    & - a\omega_2^2(\cos\theta_2 + j\sin\theta_2) \\
+#    & + b\alpha_3(-\sin\theta_3 + j\cos\theta_3) \\
+#    & - b\omega_3^2(\cos\theta_3 + j\sin\theta_3) \\
+#    & - c\alpha_4(-\sin\theta_4 + j\cos\theta_4) \\
+#    & + c\omega_4^2(\cos\theta_4 + j\sin\theta_4) = 0
+#    \end{aligned} \tag{7.10b} $$
 #
-# with $A = c\sin\theta_4$, $B = b\sin\theta_3$, $D = c\cos\theta_4$, $E = b\cos\theta_3$,
-# $C = a\alpha_2\sin\theta_2 + a\omega_2^2\cos\theta_2 + b\omega_3^2\cos\theta_3 -
-# c\omega_4^2\cos\theta_4$ and $F = a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 -
-# b\omega_3^2\sin\theta_3 + c\omega_4^2\sin\theta_4$.
+# A complex number is zero only if its real and its imaginary parts both are. Collecting the
+# real terms (the $x$ components) and the imaginary ones (the $y$ components, where the $j$'s
+# cancel) gives two equations:
+#
+# $$ \begin{aligned}
+#    & -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 \\
+#    & - b\alpha_3\sin\theta_3 - b\omega_3^2\cos\theta_3 \\
+#    & + c\alpha_4\sin\theta_4 + c\omega_4^2\cos\theta_4 = 0
+#    \end{aligned} \tag{7.11a} $$
+#
+# $$ \begin{aligned}
+#    & a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 \\
+#    & + b\alpha_3\cos\theta_3 - b\omega_3^2\sin\theta_3 \\
+#    & - c\alpha_4\cos\theta_4 + c\omega_4^2\sin\theta_4 = 0
+#    \end{aligned} \tag{7.11b} $$
+#
+# Everything in them is known from the position and velocity analyses except $\alpha_3$ and
+# $\alpha_4$, and both appear to the first power only: two *linear* equations in two
+# unknowns. Keep the unknowns on the left and move every known term to the right. With the
+# chapter's names for the coefficients,
+#
+# $$ \begin{aligned} A\alpha_4 - B\alpha_3 &= C, \\ D\alpha_4 - E\alpha_3 &= F \end{aligned} $$
+#
+# where
+#
+# $$ \begin{aligned}
+#    A &= c\sin\theta_4, \qquad B = b\sin\theta_3, \\
+#    D &= c\cos\theta_4, \qquad E = b\cos\theta_3, \\
+#    C &= a\alpha_2\sin\theta_2 + a\omega_2^2\cos\theta_2 \\
+#      &\quad + b\omega_3^2\cos\theta_3 - c\omega_4^2\cos\theta_4, \\
+#    F &= a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 \\
+#      &\quad - b\omega_3^2\sin\theta_3 + c\omega_4^2\sin\theta_4
+#    \end{aligned} \tag{7.12c} $$
+#
+# (eq. 7.11a gives the first, eq. 7.11b the second). Solving the pair (by Cramer's rule, or
+# by eliminating one unknown):
+#
+# $$ \alpha_3 = \frac{CD - AF}{AE - BD} \tag{7.12a} $$
+#
+# $$ \alpha_4 = \frac{CE - BF}{AE - BD} \tag{7.12b} $$
 #
 # The denominator is $AE - BD = bc\sin(\theta_4 - \theta_3)$: it vanishes when links 3 and 4
 # are in line, the same toggle that made the construction lines parallel in notebook 2. The
-# linear accelerations then follow from eq. 7.8's three brackets (eqs. 7.13).
+# linear accelerations then follow from eq. 7.8's three brackets with Euler's identity put in
+# (eqs. 7.13a to 7.13c).
 #
 # The solver does not use the letters $A$ to $F$ (it projects eq. 7.7 on the directions of
 # links 3 and 4, which is the same algebra). Written out for learning, checked against it:
@@ -111,11 +159,19 @@ F = (
     - b * w3**2 * math.sin(t3)
     + c * w4**2 * math.sin(t4)
 )
-alpha3 = (C * D - A * F) / (A * E - B * D)  # eq. 7.12
-alpha4 = (C * E - B * F) / (A * E - B * D)
+alpha3 = (C * D - A * F) / (A * E - B * D)  # eq. 7.12a
+alpha4 = (C * E - B * F) / (A * E - B * D)  # eq. 7.12b
 assert math.isclose(alpha3, r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-12)
 assert math.isclose(alpha4, r.alpha4.to("rad/s^2").magnitude, rel_tol=1e-12)
-print(f"alpha3 = {alpha3:.6f} rad/s^2, alpha4 = {alpha4:.6f} rad/s^2 (eq. 7.12 = solver)")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"By eq. 7.12: $\alpha_3$ = {num(alpha3, 6)} rad/s² and $\alpha_4$ = {num(alpha4, 6)} "
+    "rad/s², what the solver gives to the last digit."
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+assert math.isclose(A * E - B * D, b * c * math.sin(t4 - t3), rel_tol=1e-12)  # the denominator
 
 # %% [markdown]
 # ## Worked example 1: Example 7-1 by the equations
@@ -125,35 +181,53 @@ print(f"alpha3 = {alpha3:.6f} rad/s^2, alpha4 = {alpha4:.6f} rad/s^2 (eq. 7.12 =
 # chapter's Example 7-1 prints no numbers; **these are the course's own numbers**). The
 # solver returns Quantities; the vectors are complex, as in the chapter's notation.
 
-# %%
-print(f"theta3 = {r.theta3.to('deg'):.4f~P}, theta4 = {r.theta4.to('deg'):.4f~P}")
-print(f"omega3 = {r.omega3:.4f~P}, omega4 = {r.omega4:.4f~P}")
-print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
-for name in ("A_A", "A_BA_t", "A_BA_n", "A_BA", "A_B"):
-    q = getattr(r, name)
-    print(
-        f"{name:7s}= {cartesian(q, 'in/s^2'):>24s} = {polar(q, 'in/s^2'):>26s}"
-        f"  = {polar(q, 'm/s^2')}"
-    )
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "value"],
+    [
+        [r"$\theta_3$, $\theta_4$", f"{num(r.theta3.m_as('deg'))}°, {num(r.theta4.m_as('deg'))}°"],
+        [r"$\omega_3$, $\omega_4$", f"{num(r.omega3)}, {num(r.omega4)} rad/s"],
+        [r"$\alpha_3$, $\alpha_4$", f"{num(r.alpha3)}, {num(r.alpha4)} rad/s²"],
+    ],
+)
+table(
+    ["", "cartesian [in/s²]", "polar", "in SI"],
+    [
+        [
+            f"${s}$",
+            xy(getattr(r, k), "in/s^2"),
+            vec(getattr(r, k), "in/s^2"),
+            vec(getattr(r, k), "m/s^2"),
+        ]
+        for k, s in (
+            ("A_A", r"\mathbf{A}_A"),
+            ("A_BA_t", r"\mathbf{A}^t_{BA}"),
+            ("A_BA_n", r"\mathbf{A}^n_{BA}"),
+            ("A_BA", r"\mathbf{A}_{BA}"),
+            ("A_B", r"\mathbf{A}_B"),
+        )
+    ],
+)
 
 # %% [markdown]
 # Check them against the graphical construction, which never calls the analytic solver:
 
 # %%
 graphical = construct_case(EXAMPLE_7_1).values
-print(f"{'':8s}{'analytic':>16s}{'graphical':>16s}{'relative difference':>22s}")
-for name, unit in (
-    ("alpha3", "rad/s^2"),
-    ("alpha4", "rad/s^2"),
-    ("A_A", "m/s^2"),
-    ("A_B", "m/s^2"),
-    ("A_BA", "m/s^2"),
+rows = []
+for name, symbol, unit in (
+    ("alpha3", r"$\alpha_3$", "rad/s²"),
+    ("alpha4", r"$\alpha_4$", "rad/s²"),
+    ("A_A", r"$\lvert\mathbf{A}_A\rvert$", "m/s²"),
+    ("A_B", r"$\lvert\mathbf{A}_B\rvert$", "m/s²"),
+    ("A_BA", r"$\lvert\mathbf{A}_{BA}\rvert$", "m/s²"),
 ):
-    exact = complex(getattr(r, name).to(unit).magnitude)
+    exact = complex(getattr(r, name).to(unit.replace("²", "^2")).magnitude)
     drawn = complex(graphical[name])
     rel = abs(exact - drawn) / abs(exact)
-    print(f"{name:8s}{abs(exact):16.10f}{abs(drawn):16.10f}{rel:22.1e}")
     assert rel < 1e-9
+    rows.append([f"{symbol} [{unit}]", num(abs(exact), 10), num(abs(drawn), 10), sci(rel)])
+table(["", "analytic", "graphical", "relative difference"], rows)
 
 # %% [markdown]
 # Exact agreement: both methods solve the same vector equation, one with geometry and one
@@ -166,15 +240,24 @@ for name, unit in (
 # The same linkage has two assemblies for every crank angle: **open** and **crossed**
 # (coupler and rocker reflected about the line $AO_4$).
 
-# %% mystnb={"figure": {"caption": "The open and the crossed circuit of the Example 7-1 fourbar at theta2 = 30 deg: the same crank, the coupler and rocker reflected about the line A-O4."}, "image": {"alt": "Two drawings of the same fourbar assembled two ways, coupler and rocker reflected about the line A O4."}}
-fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
-for ax, circuit in zip(axes, ("open", "crossed")):
-    g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
-    draw_linkage(g, ax=ax, vectors=False)
-    ax.set_title(f"{circuit} circuit at $\\theta_2$ = 30$^\\circ$")
-plt.show()
 
-# %% mystnb={"figure": {"caption": "The Example 7-1 linkage over a whole crank cycle: angular accelerations of links 3 and 4 for both circuits."}, "image": {"alt": "Line plots of alpha3 and alpha4 against crank angle from 0 to 360 degrees, open and crossed circuits."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The open and the crossed circuit of the Example 7-1 fourbar at $\\theta_2 = 30^\\circ$: the same crank, the coupler and rocker reflected about the line $AO_4$."}}
+def circuits(narrow):
+    fig, axes = panels(2, narrow, wide=(7.6, 3.6), tall=(4.4, 7.0), layout="constrained")
+    for ax, circuit in zip(axes, ("open", "crossed")):
+        g = construct_case(dict(EXAMPLE_7_1, circuit=circuit))
+        draw_linkage(g, ax=ax, vectors=False)
+        ax.set_title(f"{circuit} circuit at $\\theta_2 = 30^\\circ$")
+    return fig
+
+
+show(
+    circuits,
+    alt="Two drawings of the same fourbar assembled two ways, coupler and rocker "
+    "reflected about the line A O4.",
+)
+
+# %%
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
 cycle = {
     circuit: fb.solve(
@@ -184,38 +267,62 @@ cycle = {
 }
 deg = theta2.magnitude
 
-fig, axes = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
-for circuit, res in cycle.items():
-    col = CIRCUIT_COLORS[circuit]
-    axes[0].plot(deg, res.alpha3.to("rad/s^2").magnitude, color=col, label=circuit)
-    axes[1].plot(deg, res.alpha4.to("rad/s^2").magnitude, color=col, label=circuit)
-    axes[2].plot(deg, abs(res.A_B).to("in/s^2").magnitude, color=col, label=circuit)
-axes[2].plot(
-    deg,
-    abs(cycle["open"].A_A).to("in/s^2").magnitude,
-    color="#777777",
-    ls="--",
-    label="$|\\mathbf{A}_A|$ (both)",
-)
-axes[0].set_ylabel("$\\alpha_3$ [rad/s$^2$]")
-axes[1].set_ylabel("$\\alpha_4$ [rad/s$^2$]")
-axes[2].set_ylabel("$|\\mathbf{A}_B|$ [in/s$^2$]")
-axes[2].set_xlabel("crank angle $\\theta_2$ [deg]")
-axes[2].set_xticks(range(0, 361, 45))
-for ax in axes:
-    ax.axvline(30, color="#aaaaaa", lw=0.8)
-fig.legend(*axes[2].get_legend_handles_labels(), loc="outside lower center", ncol=3)
-fig.suptitle("Example 7-1 linkage over a cycle, $\\omega_2$ = 10 rad/s, $\\alpha_2$ = -5 rad/s$^2$")
-plt.show()
 
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The Example 7-1 linkage over a whole crank cycle, $\\omega_2 = 10$ rad/s, $\\alpha_2 = -5$ rad/s²: the angular accelerations of links 3 and 4 and the size of $\\mathbf{A}_B$ on both circuits ($\\mathbf{A}_A$ dashed)."}}
+def over_a_cycle(narrow):
+    fig, axes = plt.subplots(
+        3, 1, figsize=(4.4, 7.4) if narrow else (7.6, 6.6), sharex=True, layout="constrained"
+    )
+    for circuit, res in cycle.items():
+        col = CIRCUIT_COLORS[circuit]
+        axes[0].plot(deg, res.alpha3.to("rad/s^2").magnitude, color=col, label=circuit)
+        axes[1].plot(deg, res.alpha4.to("rad/s^2").magnitude, color=col, label=circuit)
+        axes[2].plot(deg, abs(res.A_B).to("in/s^2").magnitude, color=col, label=circuit)
+    axes[2].plot(
+        deg,
+        abs(cycle["open"].A_A).to("in/s^2").magnitude,
+        color="#777777",
+        ls="--",
+        label="$|\\mathbf{A}_A|$ (both)",
+    )
+    axes[0].set_ylabel("$\\alpha_3$ [rad/s$^2$]")
+    axes[1].set_ylabel("$\\alpha_4$ [rad/s$^2$]")
+    axes[2].set_ylabel("$|\\mathbf{A}_B|$ [in/s$^2$]")
+    axes[2].set_xlabel("crank angle $\\theta_2$ [deg]")
+    axes[2].set_xticks(range(0, 361, 90 if narrow else 45))
+    for ax in axes:
+        ax.axvline(30, color="#aaaaaa", lw=0.8)
+    fig.legend(
+        *axes[2].get_legend_handles_labels(), loc="outside lower center", ncol=3, frameon=False
+    )
+    return fig
+
+
+show(
+    over_a_cycle,
+    alt="Line plots of alpha3, alpha4 and the size of A_B against crank angle from 0 to "
+    "360 degrees, open and crossed circuits.",
+)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+rows = []
 for circuit, res in cycle.items():
     a4 = res.alpha4.to("rad/s^2").magnitude
     ab = abs(res.A_B).to("in/s^2").magnitude
-    print(
-        f"{circuit:8s} alpha4 from {a4.min():7.2f} to {a4.max():6.2f} rad/s^2;"
-        f" |A_B| peaks at {ab.max():5.1f} in/s^2 ({ab.max() * 0.0254:.2f} m/s^2)"
-        f" at theta2 = {deg[ab.argmax()]:.1f} deg"
+    rows.append(
+        [
+            circuit,
+            f"{num(a4.min(), 3)} to {num(a4.max(), 3)}",
+            f"{num(ab.max(), 4)} in/s² ({num(ab.max() * 0.0254, 3)} m/s²)",
+            f"{num(deg[ab.argmax()], decimals=1)}°",
+        ]
     )
+table(
+    ["circuit", r"$\alpha_4$ [rad/s²]", r"largest $\lvert\mathbf{A}_B\rvert$", r"at $\theta_2$"],
+    rows,
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 A_A = abs(cycle["open"].A_A).to("in/s^2").magnitude
 assert np.ptp(A_A) < 1e-9 * A_A[0]  # constant size
 stated(A_A[0], "200", sig=2)
@@ -225,9 +332,10 @@ assert ab.max() > 2 * A_A[0] and ab.min() < 0.3 * A_A[0]  # "more than doubles .
 # %% [markdown]
 # What to notice:
 #
-# - $\mathbf{A}_A$ is the same for both circuits (it depends on the crank only) and of constant
-#   size, $a\sqrt{\omega_2^4 + \alpha_2^2} \approx a\omega_2^2 = 200$ in/s$^2$; the rest of the linkage turns it into an
-#   acceleration of $B$ that more than doubles and falls to a fraction of it within a turn.
+# - $\mathbf{A}_A$ is the same for both circuits (it depends on the crank only) and of
+#   constant size, $a\sqrt{\omega_2^4 + \alpha_2^2} \approx a\omega_2^2 = 200$ in/s$^2$; the
+#   rest of the linkage turns it into an acceleration of $B$ that more than doubles and falls
+#   to a fraction of it within a turn.
 # - The two circuits are mirror images of each other about the ground line, so their curves
 #   are mirror images too, run backwards: the crossed circuit at $\theta_2$ does what the open
 #   one does at $-\theta_2$, with the signs of the angular accelerations reversed. The small
@@ -239,29 +347,46 @@ flip = fb.solve(theta2=-theta2, omega2="10 rad/s", circuit="open", order=2)
 mirror = fb.solve(theta2=theta2, omega2="10 rad/s", circuit="crossed", order=2)
 assert np.allclose(mirror.alpha4.magnitude, -flip.alpha4.magnitude, atol=1e-9)
 assert np.allclose(mirror.alpha3.magnitude, -flip.alpha3.magnitude, atol=1e-9)
-print("crossed(theta2) = -open(-theta2) for alpha3 and alpha4 when alpha2 = 0")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    r"With $\alpha_2 = 0$, $\alpha_3$ and $\alpha_4$ of the crossed circuit at $\theta_2$ are "
+    r"those of the open circuit at $-\theta_2$ with their signs turned, at all "
+    f"{deg.size} angles."
+)
 
 # %% [markdown]
 # **The cycle in motion.** The open circuit through one crank turn: the linkage with the
-# accelerations of A, B and the coupler point P (one arrow scale for the whole turn), and a
-# marker running along the curves of $\alpha_3$, $\alpha_4$ and of $|\mathbf{A}_A|$,
-# $|\mathbf{A}_B|$, $|\mathbf{A}_P|$. Watch $\mathbf{A}_B$ swell where the curves peak.
+# accelerations of its pins $A$ and $B$ (one arrow scale for the whole turn), and a marker
+# running along the curves of $\alpha_3$, $\alpha_4$ and of $|\mathbf{A}_A|$,
+# $|\mathbf{A}_B|$. Stop it where $|\mathbf{A}_B|$ peaks and step through the peak: the
+# rocker is swinging back, and $\alpha_4$ is near its extreme. (Notebook 7 animates a point
+# of the coupler instead.)
 
-# %% mystnb={"figure": {"caption": "Animation: the Example 7-1 fourbar through one crank turn with the accelerations of A, B and P, and a marker on the curves of alpha3, alpha4 and their sizes."}, "image": {"alt": "Animated fourbar with acceleration arrows at A, B and P, beside plots with a moving marker."}}
-animate(EXAMPLE_7_1, title="Example 7-1 linkage")
 
-# %% [markdown]
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Animation: the Example 7-1 fourbar (open circuit) through one crank turn with the accelerations of $A$ and $B$, and a marker on the curves of $\\alpha_3$, $\\alpha_4$, $|\\mathbf{A}_A|$ and $|\\mathbf{A}_B|$. Play, pause, step or drag the slider."}}
+pins_only = {k: v for k, v in EXAMPLE_7_1.items() if k not in ("p", "delta3")}
+animate(
+    pins_only,
+    magnitudes=("A_A", "A_B"),
+    title="Example 7-1 linkage",
+    alt="The fourbar turning through its cycle with acceleration arrows at A and B, beside "
+    "plots of alpha3, alpha4 and the sizes of A_A and A_B with a moving marker.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 at30 = {
     c: fb.solve(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2", circuit=c)
     for c in ("open", "crossed")
 }
-stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "70.3", "rad/s^2")
+stated(at30["open"].alpha3, "8.77", "rad/s^2")
+stated(at30["crossed"].alpha3, "70.3", "rad/s^2")
+
 # %% [markdown]
 # So for a *given crank angle* the two assemblies can have very different accelerations
-# (at $30^\circ$: $\alpha_3 = 8.77$ versus $70.3$ rad/s$^2$), and a design must say which circuit
-# it means. A linkage cannot switch circuits without being taken apart (or passing through a
-# toggle), so the solver follows one circuit through the whole sweep.
+# (at $30^\circ$: $\alpha_3 = 8.77$ versus $70.3$ rad/s$^2$), and a design must say which
+# circuit it means. A linkage cannot switch circuits without being taken apart (or passing
+# through a toggle), so the solver follows one circuit through the whole sweep.
 
 # %% [markdown]
 # ### Where the solution fails: toggles and gaps
@@ -276,37 +401,47 @@ stated(at30["open"].alpha3, "8.77", "rad/s^2"), stated(at30["crossed"].alpha3, "
 rocker = FourBar(a="5 in", b="5 in", c="5 in", d="7 in")
 swing = Q_(np.linspace(-180, 180, 721), "deg")
 sweep = rocker.solve(theta2=swing, omega2="10 rad/s", order=2)
-print(
-    f"valid at {sweep.valid.sum()} of {sweep.valid.size} angles; the others are",
-    " or ".join(sorted(set(sweep.status[~sweep.valid]))),
+why = " or ".join(f"`{s}`" for s in sorted(set(sweep.status[~sweep.valid])))
+say(
+    f"The sweep is valid at {sweep.valid.sum()} of {sweep.valid.size} angles; the others are {why}."
 )
 limit = math.degrees(math.acos((5**2 + 7**2 - (5 + 5) ** 2) / (2 * 5 * 7)))
 for angle in (limit, 150.0):
     try:
         rocker.solve(theta2=Q_(angle, "deg"), omega2="10 rad/s")
     except (Singular, NotAssemblable) as exc:
-        print(f"\ntheta2 = {angle:.4f} deg -> {type(exc).__name__}:\n  {exc}")
+        say(rf"At $\theta_2$ = {num(angle, 6)}° the solver raises `{type(exc).__name__}`: {exc}")
 
-# %% mystnb={"figure": {"caption": "A non-Grashof fourbar (5, 5, 5, 7 in): alpha4 runs away near the toggles, and beyond them the linkage cannot be assembled."}, "image": {"alt": "Plot of alpha4 against crank angle on a symmetric log scale, with the unreachable angles shaded and the toggles marked."}}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 mu = rocker.solve(theta2="0 deg", omega2="10 rad/s")
 mu = math.degrees(abs(math.remainder(mu.theta4.m_as("rad") - mu.theta3.m_as("rad"), math.pi)))
 stated(mu, "23")  # the transmission angle at theta2 = 0, quoted below
-fig, ax = plt.subplots(figsize=(9, 3.8))
-a4 = sweep.alpha4.to("rad/s^2").magnitude
-ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
-for lo, hi in ((-180, -limit), (limit, 180)):
-    ax.axvspan(lo, hi, color="#eeeeee", label="cannot be assembled" if lo < 0 else None)
-for x in (-limit, limit):
-    ax.axvline(x, color="#d55e00", ls=":", lw=1.2)
-    ax.text(x, 2e4, " toggle ", color="#d55e00", ha="left" if x < 0 else "right")
-ax.set_yscale("symlog", linthresh=100)
-ax.set_xlabel("crank angle $\\theta_2$ [deg]")
-ax.set_ylabel("$\\alpha_4$ [rad/s$^2$] (symlog)")
-ax.set_xticks(range(-180, 181, 45))
-ax.set_xlim(-180, 180)
-ax.set_title("Non-Grashof fourbar (5, 5, 5, 7 in), open circuit, $\\omega_2$ = 10 rad/s")
-ax.legend(loc="lower center")
-plt.show()
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "A non-Grashof fourbar (5, 5, 5, 7 in), open circuit, $\\omega_2 = 10$ rad/s: $\\alpha_4$ runs away near the toggles, and beyond them the linkage cannot be assembled."}}
+def toggles(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 3.8) if narrow else (7.6, 3.6), layout="constrained")
+    a4 = sweep.alpha4.to("rad/s^2").magnitude
+    ax.plot(swing.magnitude, a4, color=CIRCUIT_COLORS["open"])
+    for lo, hi in ((-180, -limit), (limit, 180)):
+        ax.axvspan(lo, hi, color="#eeeeee", label="cannot be assembled" if lo < 0 else None)
+    for x in (-limit, limit):
+        ax.axvline(x, color="#d55e00", ls=":", lw=1.2)
+        ax.text(x, 2e4, " toggle ", color="#d55e00", ha="left" if x < 0 else "right")
+    ax.set_yscale("symlog", linthresh=100)
+    ax.set_xlabel("crank angle $\\theta_2$ [deg]")
+    ax.set_ylabel("$\\alpha_4$ [rad/s$^2$] (symlog)")
+    ax.set_xticks(range(-180, 181, 90 if narrow else 45))
+    ax.set_xlim(-180, 180)
+    ax.legend(loc="lower center")
+    return fig
+
+
+show(
+    toggles,
+    alt="Plot of alpha4 against crank angle on a symmetric log scale, with the unreachable "
+    "angles shaded and the toggles marked.",
+)
 
 # %% [markdown]
 # $\alpha_4$ runs away as the crank nears a toggle (the plot's vertical scale is logarithmic
@@ -326,29 +461,29 @@ plt.show()
 # and beyond that the crank can no longer turn round.
 
 
-# %% mystnb={"figure": {"caption": "The fourbar for several rocker lengths c: Grashof or not, and how far the crank can turn."}, "image": {"alt": "Small multiples of fourbar linkages with different rocker lengths, labelled Grashof or non-Grashof."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "$\\alpha_4$ over a cycle for several rocker lengths $c$: Grashof or not, and how far the crank can turn."}}
 def draw(c, omega2):
     link = FourBar(a="2 in", b="6 in", c=Q_(c, "in"), d="7 in")
     res = link.solve(theta2=theta2, omega2=Q_(omega2, "rad/s"), order=2)
-    fig, ax = plt.subplots(figsize=(5.2, 3.6))
+    fig, ax = plt.subplots(figsize=(4.5, 3.4))
     ax.plot(deg, res.alpha4.to("rad/s^2").magnitude, color=CIRCUIT_COLORS["open"])
     bad = ~res.valid
     if bad.any():
         ax.fill_between(deg, -400, 400, where=bad, color="#eeeeee", label="not assemblable")
-        ax.legend(loc="lower right", fontsize=9)
+        ax.legend(loc="lower right", fontsize=10)
     ax.set_ylim(-400, 400)
     ax.set_xticks(range(0, 361, 90))
     ax.set_xlabel("$\\theta_2$ [deg]")
     ax.set_ylabel("$\\alpha_4$ [rad/s$^2$]")
     grashof = "Grashof" if 2 + max(c, 7) <= 6 + min(c, 7) else "non-Grashof"
-    ax.set_title(f"c = {c:g} in ({grashof})", fontsize=10)
+    ax.set_title(f"c = {c:g} in ({grashof})", fontsize=11)
     return fig
 
 
 explore(draw, c=(4.5, 12, 0.1, 9, "in"), omega2=(2, 20, 1, 10, "rad/s"), values=[5, 9, 10.8, 11.5])
 
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 def rocker_cycle(c):
     res = FourBar(a="2 in", b="6 in", c=f"{c} in", d="7 in").solve(
         theta2=theta2, omega2="10 rad/s", order=2
@@ -360,17 +495,13 @@ def rocker_cycle(c):
 
 
 swing, peak = zip(*(rocker_cycle(c) for c in (5, 9, 10.8, 10.95)))
-stated(swing[0], "48"), stated(swing[1], "33"), stated(peak[0], "66"), stated(peak[1], "49")
-stated(peak[2], "140"), stated(peak[3], "289")
+stated(swing[0], "48")
+stated(swing[1], "33")
+stated(peak[0], "66")
+stated(peak[1], "49")
+stated(peak[2], "140")
+stated(peak[3], "289")
 assert 2 + 11 == 6 + 7  # the change point at c = 11 in
-
-# %% [markdown]
-# A shorter rocker swings through a larger angle ($48^\circ$ for $c = 5$ in against $33^\circ$
-# for 9 in) and needs larger angular accelerations (peaks of 66 against 49 rad/s$^2$).
-# Approaching $c = 11$ in the peak grows quickly (140 rad/s$^2$ at 10.8 in, 289 at 10.95), as
-# the linkage nears the flat position it passes through at the change point. At
-# $c = 11.5$ in the crank can only rock: the gaps are the crank angles where the loop cannot
-# close, and next to them $\alpha_4$ runs off the chart.
 
 # %% [markdown]
 # ## Check yourself
@@ -418,11 +549,12 @@ assert 2 + 11 == 6 + 7  # the change point at c = 11 in
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 slow, fast = (
     fb.solve(theta2="30 deg", omega2=w, alpha2="0 rad/s^2") for w in ("10 rad/s", "20 rad/s")
 )
-stated(fast.alpha4 / slow.alpha4, "4"), stated(fast.alpha3 / slow.alpha3, "4")
+stated(fast.alpha4 / slow.alpha4, "4")
+stated(fast.alpha3 / slow.alpha3, "4")
 stated(abs(fast.A_B) / abs(slow.A_B), "4")
 # %% [markdown]
 # ## Further problems
@@ -451,7 +583,7 @@ stated(abs(fast.A_B) / abs(slow.A_B), "4")
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 link = FourBar(a="3 in", b="8 in", c="7 in", d="9 in")
 for circuit, (a3, a4, ab, ang) in (
     ("open", ("111.0", "271.3", "1899", "-175.3")),

@@ -31,7 +31,7 @@
 #   ft/s$^2$ and g, and say how it scales with speed and rod length;
 # - recognise slider-cranks that cannot be assembled.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import math
 
@@ -39,7 +39,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.animation import animate
-from accelab.course.kit import COLORS, cartesian, explore, in_g, polar, stated, use_style
+from accelab.course.kit import COLORS, explore, in_g, stated, use_style
+from accelab.course.renditions import legend, panels, show
+from accelab.course.text import num, say, table, vec, xy
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, NotAssemblable, Singular, SliderCrank
 from accelab.solver.graphical import construct_case
@@ -54,34 +56,36 @@ use_style()
 # With the slide along the $x$ axis ($\theta_1 = 0$), a crank $a$, a connecting rod $b$ and a
 # slider offset $c$ (perpendicular to the slide, $\theta_4 = 90^\circ$) close the loop
 #
-# $$ a e^{j\theta_2} - b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_1} = 0 \tag{4.14} $$
+# $$ \begin{aligned} & a e^{j\theta_2} - b e^{j\theta_3} \\
+#    & - c e^{j\theta_4} - d e^{j\theta_1} = 0 \end{aligned} \tag{4.14} $$
 #
 # Here $b e^{j\theta_3}$ points from the slider pin $B$ back to the crank pin $A$, and the
 # slider's position $d$ is the one length that changes. Differentiating twice ($a$, $b$, $c$,
 # $\theta_1$, $\theta_4$ constant):
 #
-# $$ \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
-#  - \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) - \ddot d = 0
-#    \tag{7.14} $$
+# $$ \begin{aligned} & \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right) \\
+#  & - \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) - \ddot d = 0
+#    \end{aligned} \tag{7.14} $$
 #
 # The first bracket is $\mathbf{A}_A$. The second is the acceleration of $A$ turning about $B$
 # with the rod, $\mathbf{A}_{AB}$ (the vector $b e^{j\theta_3}$ points from $B$ to $A$), and the
 # last term is the slider's acceleration $\mathbf{A}_B = \ddot d$, which lies along the slide:
 # a block in pure translation has no normal component. So eq. 7.14 is eq. 7.4 once more,
 #
-# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}, \qquad \mathbf{A}_{BA} = -\mathbf{A}_{AB}
-#    \tag{7.15} $$
+# $$ \begin{aligned} \mathbf{A}_B &= \mathbf{A}_A + \mathbf{A}_{BA}, \\
+#    \mathbf{A}_{BA} &= -\mathbf{A}_{AB} \end{aligned} \tag{7.15} $$
 #
 # (The chapter labels the second bracket $\mathbf{A}_{BA}$ in eq. 7.15b; by eq. 7.4's own
 # definition it is $\mathbf{A}_{AB}$, the same vector reversed. This course follows eq. 7.4.)
 #
 # Split into real and imaginary parts (the chapter's eqs. 7.16b and 7.16c):
 #
-# $$ -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 + b\alpha_3\sin\theta_3
-#    + b\omega_3^2\cos\theta_3 - \ddot d = 0 \tag{7.16b} $$
+# $$ \begin{aligned} & -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 \\
+#    & + b\alpha_3\sin\theta_3 + b\omega_3^2\cos\theta_3 \\
+#    & - \ddot d = 0 \end{aligned} \tag{7.16b} $$
 #
-# $$ a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 - b\alpha_3\cos\theta_3
-#    + b\omega_3^2\sin\theta_3 = 0 \tag{7.16c} $$
+# $$ \begin{aligned} & a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 \\
+#    & - b\alpha_3\cos\theta_3 + b\omega_3^2\sin\theta_3 = 0 \end{aligned} \tag{7.16c} $$
 #
 # (The scanned chapter's eq. 7.16b ends in "$- d = 0$": its two dots are lost in the scan. The
 # term is the slider's acceleration $\ddot d$, as eq. 7.14 says; a plain $d$, a position, would
@@ -89,15 +93,17 @@ use_style()
 #
 # The imaginary part has one unknown, $\alpha_3$; the real part then gives $\ddot d$:
 #
-# $$ \alpha_3 = \frac{a\alpha_2\cos\theta_2 - a\omega_2^2\sin\theta_2 + b\omega_3^2\sin\theta_3}
-#    {b\cos\theta_3} \tag{7.16d} $$
+# $$ \begin{aligned} \alpha_3 = \frac{1}{b\cos\theta_3} \big( & a\alpha_2\cos\theta_2 \\
+#    & - a\omega_2^2\sin\theta_2 \\ & + b\omega_3^2\sin\theta_3 \big) \end{aligned}
+#    \tag{7.16d} $$
 #
-# $$ \ddot d = -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 + b\alpha_3\sin\theta_3
-#    + b\omega_3^2\cos\theta_3 \tag{7.16e} $$
+# $$ \begin{aligned} \ddot d = {} & -a\alpha_2\sin\theta_2 - a\omega_2^2\cos\theta_2 \\
+#    & + b\alpha_3\sin\theta_3 + b\omega_3^2\cos\theta_3 \end{aligned} \tag{7.16e} $$
 #
 # The denominator $b\cos\theta_3$ vanishes when the rod stands perpendicular to the slide,
 # which only a rod no longer than crank plus offset can reach. Checked against the solver,
-# at the slider-crank `accelab.solver.graphical` also draws (40 mm crank, 120 mm rod, 10 mm offset):
+# at the slider-crank `accelab.solver.graphical` also draws (40 mm crank, 120 mm rod, 10 mm
+# offset):
 
 # %%
 sc = SliderCrank(a="40 mm", b="120 mm", c="10 mm")
@@ -123,42 +129,74 @@ bracket = (b * alpha3 * 1j - b * w3**2) * np.exp(1j * t3)
 assert np.isclose(bracket, -r.A_BA.to("m/s^2").magnitude)
 assert np.isclose(r.A_B.to("m/s^2").magnitude, (r.A_A + r.A_BA).to("m/s^2").magnitude)
 
-print(f"theta3 = {r.theta3.to('deg'):.4f~P}, omega3 = {r.omega3:.4f~P}, alpha3 = {r.alpha3:.4f~P}")
-print(f"d = {r.d.to('mm'):.3f~P}, d_dot = {r.d_dot:.4f~P}, d_ddot = {r.d_ddot:.4f~P}")
-print("A_A  =", cartesian(r.A_A, "m/s^2"), "=", polar(r.A_A, "m/s^2"))
-print("A_BA =", cartesian(r.A_BA, "m/s^2"), "=", polar(r.A_BA, "m/s^2"))
-print("A_B  =", cartesian(r.A_B, "m/s^2"), " (along the slide only)")
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "value"],
+    [
+        [r"$\theta_3$", f"{num(r.theta3.m_as('deg'))}°"],
+        [r"$\omega_3$", f"{num(r.omega3)} rad/s"],
+        [r"$\alpha_3$ (eq. 7.16d)", f"{num(alpha3)} rad/s²"],
+        [r"$d$, $\dot d$", f"{num(r.d.m_as('mm'))} mm, {num(r.d_dot.m_as('m/s'))} m/s"],
+        [r"$\ddot d$ (eq. 7.16e)", f"{num(d_ddot)} m/s²"],
+        [r"$\mathbf{A}_A$", f"{xy(r.A_A, 'm/s^2')} = {vec(r.A_A, 'm/s^2')}"],
+        [r"$\mathbf{A}_{BA}$", f"{xy(r.A_BA, 'm/s^2')} = {vec(r.A_BA, 'm/s^2')}"],
+        [r"$\mathbf{A}_B$", f"{xy(r.A_B, 'm/s^2')}: along the slide only"],
+    ],
+)
 
 # %% [markdown]
 # ## Worked example 1: one position, drawn and computed
 #
-# The graphical construction of the same position solves eq. 7.15 with a polygon: $\mathbf{A}_A$
-# is known, $\mathbf{A}^n_{BA} = b\omega_3^2$ is known, $\mathbf{A}^t_{BA}$ has a known direction
-# (perpendicular to the rod) and $\mathbf{A}_B$ a known direction (along the slide). Two lines,
-# one crossing: the same recipe as the fourbar, with the slide in the place of the rocker.
+# The graphical construction of the same position solves eq. 7.15 with a polygon:
+# $\mathbf{A}_A$ is known, $\mathbf{A}^n_{BA} = b\omega_3^2$ is known, $\mathbf{A}^t_{BA}$ has
+# a known direction (perpendicular to the rod) and $\mathbf{A}_B$ a known direction (along the
+# slide). Two lines, one crossing: the same recipe as the fourbar, with the slide in the place
+# of the rocker.
 
-# %% mystnb={"figure": {"caption": "The slider-crank's graphical solution: linkage and acceleration polygon, with the slide taking the rocker's place."}, "image": {"alt": "Slider-crank linkage beside its velocity and acceleration polygons."}}
+# %%
 con = construct_case(SLIDER_CRANK)
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), width_ratios=[1.2, 1])
-draw_linkage(con, ax=ax1)
-draw_polygon(con, "acceleration", ax=ax2)
-plt.show()
-print(
-    f"graphical: alpha3 = {con.values['alpha3']:.6f} rad/s^2, A_B = "
-    f"{con.values['A_B'].real:.6f} m/s^2 along x"
-)
 assert math.isclose(con.values["alpha3"], r.alpha3.to("rad/s^2").magnitude, rel_tol=1e-9)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"The construction gives $\alpha_3$ = {num(con.values['alpha3'], 7)} rad/s² and "
+    rf"$\mathbf{{A}}_B$ = {num(con.values['A_B'].real, 7)} m/s² along $x$: the equations' "
+    "answer, to the last digit shown."
+)
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The slider-crank's graphical solution: the linkage with its accelerations, and the acceleration polygon, in which the slide takes the rocker's place."}}
+def construction(narrow):
+    fig, (ax1, ax2) = panels(
+        2, narrow, wide=(7.8, 4.0), tall=(4.4, 8.6), width_ratios=[1.2, 1], layout="constrained"
+    )
+    draw_linkage(con, ax=ax1, legend=False)
+    draw_polygon(con, "acceleration", ax=ax2, legend=False)
+    legend(
+        fig,
+        ("normal", "tangential", "resultant"),
+        lines=True,
+        ncol=2 if narrow else 4,
+        loc="outside lower center",
+    )
+    return fig
+
+
+show(construction, alt="Slider-crank linkage beside its acceleration polygon.")
 
 # %% [markdown]
 # The same slider acceleration in US units, as a drawing in inches ($a = 1.575$ in,
 # $b = 4.724$ in) would carry it; pint converts:
 
-# %%
-stated(Q_(40, "mm"), "1.575", "in"), stated(Q_(120, "mm"), "4.724", "in")
-print(
-    f"d_ddot = {r.d_ddot.to('in/s^2'):.2f~P} = {r.d_ddot.to('ft/s^2'):.3f~P}"
-    f" = {in_g(r.d_ddot):.3f} g"
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"$\ddot d$ = {num(r.d_ddot.m_as('in/s^2'))} in/s² = {num(r.d_ddot.m_as('ft/s^2'))} "
+    f"ft/s² = {num(in_g(r.d_ddot), 3)} g"
 )
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(Q_(40, "mm"), "1.575", "in")
+stated(Q_(120, "mm"), "4.724", "in")
 
 # %% [markdown]
 # ## Worked example 2: how hard does a piston accelerate?
@@ -178,33 +216,45 @@ print(
 bore, stroke, rod = Q_(77, "mm"), Q_(80, "mm"), Q_(130, "mm")
 displacement = (4 * math.pi / 4 * bore**2 * stroke).to("L")
 engine = SliderCrank(a=stroke / 2, b=rod)
-print(
-    f"displacement {displacement.magnitude:.3f} L, crank radius a = {stroke / 2:~P}, "
-    f"rod/crank ratio b/a = {(rod / (stroke / 2)).to(''):.2f~P}"
-)
-stated(displacement, "1.49", "L")
 
 theta2 = Q_(np.linspace(0, 360, 721), "deg")
 speeds = {"idle": Q_(800, "rpm"), "highway": Q_(3500, "rpm"), "top speed": Q_(6000, "rpm")}
 peaks = {}
 for name, n in speeds.items():
     piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
-    peak = np.max(np.abs(piston))
-    peaks[name] = peak
-    print(
-        f"{name:10s} {n:5.0f~P}: peak |d_ddot| = {peak.to('m/s^2'):8.0f~P}"
-        f" = {peak.to('ft/s^2'):7.0f~P} = {in_g(peak):5.0f} g"
-    )
+    peaks[name] = np.max(np.abs(piston))
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(in_g(peaks["idle"]), "37"), stated(in_g(peaks["highway"]), "720", sig=2)
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"Displacement {num(displacement.m_as('L'), 3)} L, crank radius $a$ = "
+    f"{num((stroke / 2).m_as('mm'))} mm, rod to crank ratio $b/a$ = "
+    f"{num((rod / (stroke / 2)).m_as(''), 3)}. The largest piston acceleration over a "
+    "revolution:"
+)
+table(
+    ["speed", r"largest $\lvert\ddot d\rvert$", "", ""],
+    [
+        [
+            f"{name}, {num(speeds[name].m_as('rpm'), decimals=0)} rpm",
+            f"{num(peak.m_as('m/s^2'), 4)} m/s²",
+            f"{num(peak.m_as('ft/s^2'), 4)} ft/s²",
+            f"{num(in_g(peak), 3)} g",
+        ]
+        for name, peak in peaks.items()
+    ],
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(displacement, "1.49", "L")
+stated(in_g(peaks["idle"]), "37")
+stated(in_g(peaks["highway"]), "720", sig=2)
 stated(in_g(peaks["top speed"]), "2100", sig=2)
 w_top = speeds["top speed"].to("rad/s")
-stated(speeds["top speed"].to("turn/s"), "100"), stated(w_top, "628", "rad/s")
-(
-    stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3),
-    stated(in_g((stroke / 2) * w_top**2), "1600", sig=2),
-)
+stated(speeds["top speed"].to("turn/s"), "100")
+stated(w_top, "628", "rad/s")
+stated((stroke / 2) * w_top**2, "15800", "m/s^2", sig=3)
+stated(in_g((stroke / 2) * w_top**2), "1600", sig=2)
+
 # %% [markdown]
 # About 37 g at 800 rpm, 720 g at 3500 rpm, 2100 g at 6000 rpm: the chapter's figures,
 # from nothing but the geometry. Why so large? At 6000 rpm the crank turns 100 times a
@@ -220,49 +270,56 @@ top = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
 w = Q_(6000, "rpm").to("rad/s")
 by_hand = -(stroke / 2) * w**2 * (1 + (stroke / 2) / rod)
 assert math.isclose(top.d_ddot.to("m/s^2").magnitude, by_hand.to("m/s^2").magnitude, rel_tol=1e-12)
-print(
-    f"at TDC, 6000 rpm: d_ddot = {top.d_ddot.to('m/s^2'):.1f~P} "
-    f"= a w^2 (1 + a/b) with a w^2 = {((stroke / 2) * w**2).to('m/s^2'):.1f~P}"
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"At TDC and 6000 rpm, $\ddot d$ = {num(top.d_ddot.m_as('m/s^2'), 6)} m/s² "
+    rf"$= -a\omega_2^2(1 + a/b)$, with $a\omega_2^2$ = "
+    f"{num(((stroke / 2) * w**2).m_as('m/s^2'), 6)} m/s²."
 )
 
 # %% [markdown]
 # Over a revolution, in g at the three speeds. Every curve is the same shape scaled by
-# $\omega_2^2$; the right-hand plot divides it out, and sets beside it the x acceleration of
+# $\omega_2^2$; the second plot divides it out, and sets beside it the $x$ acceleration of
 # the crank pin itself, $-a\omega_2^2\cos\theta_2$, the piston's motion if the rod were
 # infinitely long.
 
-# %% mystnb={"figure": {"caption": "Piston acceleration of a 1.49 L engine over a crank revolution at idle, highway speed and 6000 rpm (left), and the same curves divided by omega squared (right)."}, "image": {"alt": "Two line plots of piston acceleration against crank angle, in g, for three engine speeds; on the right the three curves coincide."}}
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.3))
-colours = ["#56B4E9", "#E69F00", "#D55E00"]
-for (name, n), col in zip(speeds.items(), colours):
-    piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
-    g_level = in_g(piston)
-    ax1.plot(theta2.magnitude, g_level, color=col, label=f"{name}, {n:.0f~P}")
-    w = n.to("rad/s").magnitude
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Piston acceleration $\\ddot d$ of a 1.49 L engine over a crank revolution at idle, highway speed and 6000 rpm, and the same curves divided by $a\\omega_2^2$: one shape at every speed."}}
+def piston_curves(narrow):
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.8, 3.6), tall=(4.4, 7.2), layout="constrained")
+    colours = ["#56B4E9", "#E69F00", "#D55E00"]
+    for (name, n), col, lw in zip(speeds.items(), colours, (4, 2.8, 1.6)):
+        piston = engine.solve(theta2=theta2, omega2=n, order=2).d_ddot
+        ax1.plot(theta2.magnitude, in_g(piston), color=col, label=f"{name}, {n:.0f~P}")
+        w = n.to("rad/s").magnitude
+        ax2.plot(theta2.magnitude, piston.to("m/s^2").magnitude / (0.040 * w**2), color=col, lw=lw)
+    ax1.set_ylabel("piston $\\ddot d$ [g]")
+    ax2.set_ylabel("$\\ddot d \\,/\\, a\\omega_2^2$")
     ax2.plot(
         theta2.magnitude,
-        piston.to("m/s^2").magnitude / (0.040 * w**2),
-        color=col,
-        lw=4 - 1.2 * colours.index(col),
+        -np.cos(theta2.to("rad").magnitude),
+        color="#888888",
+        ls=":",
+        lw=1.5,
+        label="crank pin: $-\\cos\\theta_2$",
     )
-ax1.set_ylabel("piston acceleration $\\ddot d$ [g]")
-ax2.set_ylabel("$\\ddot d \\,/\\, a\\omega_2^2$")
-ax2.plot(
-    theta2.magnitude,
-    -np.cos(theta2.to("rad").magnitude),
-    color="#888888",
-    ls=":",
-    lw=1.5,
-    label="crank pin's x acceleration,\n$-a\\omega_2^2\\cos\\theta_2$",
+    ax2.set_ylim(-1.45, 1.45)
+    ax2.legend(loc="upper right", borderaxespad=0.2)
+    ax2.set_title("the same curve at every speed")
+    ax1.set_title("bore 77, stroke 80, rod 130 mm")
+    for ax in (ax1, ax2):
+        ax.set_xlabel("crank angle $\\theta_2$ [deg] (0: TDC)")
+        ax.set_xticks(range(0, 361, 90))
+    ax1.legend(loc="lower center")
+    return fig
+
+
+show(
+    piston_curves,
+    alt="Two line plots of piston acceleration against crank angle, in g, for three engine "
+    "speeds; in the second the three curves coincide.",
 )
-ax2.legend(loc="upper center", fontsize=9)
-ax2.set_title("the same curve at every speed")
-ax1.set_title("1.49 L engine: bore 77, stroke 80, rod 130 mm")
-for ax in (ax1, ax2):
-    ax.set_xlabel("crank angle $\\theta_2$ [deg] (0 = top dead centre)")
-    ax.set_xticks(range(0, 361, 90))
-ax1.legend(loc="lower center", fontsize=9)
-plt.show()
 
 # %% [markdown]
 # The acceleration is most negative at TDC (the piston is being pulled back toward the crank
@@ -271,10 +328,10 @@ plt.show()
 # of the crank pin, $\ddot d = -a\omega_2^2\cos\theta_2$, symmetric about BDC.
 #
 # **How sure is "about 2000 g"?** The answer depends on the stroke and rod we assumed. A
-# sweep over plausible 1.5 L geometries:
+# sweep over plausible 1.5 L geometries, the piston's largest acceleration (at TDC):
 
-# %%
-print(f"{'stroke':>8s}{'bore':>8s}{'rod':>8s}{'b/a':>6s}{'idle 800':>10s}{'6000 rpm':>10s}")
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+rows = []
 for stroke_mm in (72, 80, 88):
     bore_mm = math.sqrt(1.5e6 / 4 / (math.pi / 4) / stroke_mm)  # keep 1.5 L
     for ratio in (3.0, 3.5):
@@ -282,12 +339,19 @@ for stroke_mm in (72, 80, 88):
         eng = SliderCrank(a=Q_(stroke_mm / 2, "mm"), b=Q_(rod_mm, "mm"))
         g_idle = in_g(eng.solve(theta2="0 deg", omega2="800 rpm", order=2).d_ddot)
         g_top = in_g(eng.solve(theta2="0 deg", omega2="6000 rpm", order=2).d_ddot)
-        print(
-            f"{stroke_mm:6.0f}mm{bore_mm:6.1f}mm{rod_mm:6.0f}mm{ratio:6.1f}"
-            f"{abs(g_idle):8.0f} g{abs(g_top):8.0f} g"
+        rows.append(
+            [
+                f"{stroke_mm} mm",
+                f"{num(bore_mm, 3)} mm",
+                f"{num(rod_mm, 3)} mm",
+                num(ratio, 2),
+                f"{num(abs(g_idle), 2)} g",
+                f"{num(abs(g_top), 3)} g",
+            ]
         )
+table(["stroke", "bore", "rod", "$b/a$", "800 rpm", "6000 rpm"], rows)
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 sweep_g = {
     (s_, k): [
         abs(
@@ -307,21 +371,28 @@ lo, hi = (
     (max(v[i] for v in sweep_g.values()) for i in (0, 1)),
 )
 (idle_lo, top_lo), (idle_hi, top_hi) = lo, hi
-stated(top_lo, "1860", sig=3), stated(top_hi, "2360", sig=3)
-stated(idle_lo, "33"), stated(idle_hi, "42")
+stated(top_lo, "1860", sig=3)
+stated(top_hi, "2360", sig=3)
+stated(idle_lo, "33")
+stated(idle_hi, "42")
 stated(peaks["top speed"], "20650", "m/s^2", sig=4)
 stated(Q_(0.3, "kg") * peaks["top speed"], "6", "kN")
+
 # %% [markdown]
 # From about 1860 to 2360 g at 6000 rpm, and 33 to 42 g at 800 rpm: the claim holds for any
 # reasonable small engine. Newton's law then says what it costs: a 0.3 kg piston at 2100 g
 # needs $F = m\,\ddot d \approx 0.3 \times 20\,650 \approx 6$ kN from its rod, reversing 100
 # times a second. That is why pistons are made of aluminium alloys and rods are forged.
 #
-# **The engine in motion**, at 6000 rpm: the crank pin's acceleration turns with the crank at a
-# constant size while the piston's swings between its two peaks along the cylinder (one arrow
-# scale for the whole turn; millimetres and m/s$^2$).
+# **The engine in motion**, at 6000 rpm: the crank pin's acceleration turns with the crank at
+# a constant size while the piston's acceleration $\ddot d$ swings along the cylinder, with
+# its sign: toward the crank (negative) through top dead centre, away from it around bottom
+# dead centre. One arrow scale for the whole turn; millimetres and m/s$^2$. Step through
+# $\theta_2 = 0$ and $180^\circ$ to see the two peaks of different size, and stop where
+# $\ddot d$ crosses zero (near $74^\circ$): the piston is at its fastest there.
 
-# %% mystnb={"figure": {"caption": "Animation: the 1.5 L engine's slider-crank at 6000 rpm through one turn, with the accelerations of the crank pin and the piston and a marker on alpha3 and their sizes."}, "image": {"alt": "Animated slider-crank with acceleration arrows at the crank pin and the piston, beside plots with a moving marker."}}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Animation: the 1.5 L engine's slider-crank at 6000 rpm through one turn, with the accelerations of the crank pin and the piston, and a marker on $\\alpha_3$, $|\\mathbf{A}_A|$ and the piston's $\\ddot d$ with its sign. Play, pause, step or drag the slider."}}
 animate(
     {
         "mechanism": "slidercrank",
@@ -332,7 +403,12 @@ animate(
         "omega2": "6000 rpm",
         "alpha2": "0 rad/s^2",
     },
+    magnitudes=("A_A", "A_B.x"),
+    symbols={"A_B.x": r"piston $\ddot d$"},
     title="1.5 L engine, 6000 rpm",
+    alt="The engine's slider-crank turning, with acceleration arrows at the crank pin and the "
+    "piston, beside plots of alpha3, the crank pin's acceleration and the piston's signed "
+    "acceleration with a moving marker.",
 )
 
 # %% [markdown]
@@ -346,11 +422,13 @@ animate(
 # %%
 short = SliderCrank(a="50 mm", b="40 mm")
 sweep = short.solve(theta2=theta2, omega2="10 rad/s", order=2)
-print(f"assembles at {sweep.valid.sum()} of {sweep.valid.size} crank angles")
+say(
+    f"The 50 mm crank with a 40 mm rod assembles at {sweep.valid.sum()} of {sweep.valid.size} crank angles."
+)
 try:
     short.solve(theta2="90 deg", omega2="10 rad/s")
 except (NotAssemblable, Singular) as exc:
-    print(f"{type(exc).__name__}: {exc}")
+    say(rf"At $\theta_2 = 90^\circ$ the solver raises `{type(exc).__name__}`: {exc}")
 
 # %% [markdown]
 # ## Explore: the rod length
@@ -361,12 +439,12 @@ except (NotAssemblable, Singular) as exc:
 # crank pin (dotted).
 
 
-# %% mystnb={"figure": {"caption": "Piston acceleration for several connecting-rod lengths: a shorter rod gives a higher peak."}, "image": {"alt": "Small multiples of piston acceleration against crank angle, one per rod-to-crank ratio."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Piston acceleration over a revolution for several connecting-rod lengths $b$ (crank 40 mm, 6000 rpm): a shorter rod gives a higher peak at TDC."}}
 def draw(rod_mm, rpm):
     eng = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm"))
     res = eng.solve(theta2=theta2, omega2=Q_(rpm, "rpm"), order=2)
     w = Q_(rpm, "rpm").to("rad/s").magnitude
-    fig, ax = plt.subplots(figsize=(5.0, 3.6))
+    fig, ax = plt.subplots(figsize=(4.5, 3.5))
     ax.plot(theta2.magnitude, in_g(res.d_ddot), color=COLORS["resultant"], lw=2)
     ax.plot(
         theta2.magnitude,
@@ -380,8 +458,8 @@ def draw(rod_mm, rpm):
     ax.set_xlabel("$\\theta_2$ [deg]")
     ax.set_ylabel("piston [g]")
     peak = abs(in_g(res.d_ddot)).max()
-    ax.set_title(f"b/a = {rod_mm / 40:.2f}: peak {peak:.0f} g at {rpm:g} rpm", fontsize=10)
-    ax.legend(loc="lower center", fontsize=9)
+    ax.set_title(f"$b/a$ = {rod_mm / 40:.2f}: peak {peak:.0f} g at {rpm:g} rpm", fontsize=11)
+    ax.legend(loc="lower center", fontsize=10)
     return fig
 
 
@@ -392,7 +470,7 @@ explore(
     values=[80, 130, 200, 400],
 )
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 for rod_mm, above in ((80, "50"), (400, "10")):
     res = SliderCrank(a="40 mm", b=Q_(rod_mm, "mm")).solve(
         theta2=theta2, omega2="6000 rpm", order=2
@@ -448,15 +526,14 @@ for rod_mm, above in ((80, "50"), (400, "10")):
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 half = np.max(np.abs(engine.solve(theta2=theta2, omega2="3000 rpm", order=2).d_ddot))
-stated(in_g(half), "530", sig=2), stated(half / peaks["top speed"], "0.25")
+stated(in_g(half), "530", sig=2)
+stated(half / peaks["top speed"], "0.25")
 stated(Q_(2100, "standard_gravity"), "67600", "ft/s^2", sig=3)
 stated(Q_(2100, "standard_gravity"), "811000", "in/s^2", sig=3)
-(
-    stated(Q_(1, "standard_gravity"), "32.17", "ft/s^2"),
-    stated(Q_(1, "standard_gravity"), "386.1", "in/s^2"),
-)
+stated(Q_(1, "standard_gravity"), "32.17", "ft/s^2")
+stated(Q_(1, "standard_gravity"), "386.1", "in/s^2")
 tdc = engine.solve(theta2="0 deg", omega2="6000 rpm", order=2)
 assert abs(tdc.alpha3.m_as("rad/s^2")) < 1e-9 and tdc.d_ddot.magnitude < 0
 
@@ -488,20 +565,20 @@ assert abs(tdc.alpha3.m_as("rad/s^2")) < 1e-9 and tdc.d_ddot.magnitude < 0
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 res = SliderCrank(a="1.5 in", b="5 in", c="0.5 in").solve(
     theta2="120 deg", omega2="50 rad/s", alpha2="-400 rad/s^2"
 )
-stated(res.theta3, "170.8", "deg"), stated(res.alpha3, "587.8", "rad/s^2")
-(
-    stated(res.d_ddot, "2579", "in/s^2"),
-    stated(res.d_ddot, "215.0", "ft/s^2"),
-    stated(in_g(res.d_ddot), "6.68"),
-)
+stated(res.theta3, "170.8", "deg")
+stated(res.alpha3, "587.8", "rad/s^2")
+stated(res.d_ddot, "2579", "in/s^2")
+stated(res.d_ddot, "215.0", "ft/s^2")
+stated(in_g(res.d_ddot), "6.68")
 fine = Q_(np.linspace(0, 360, 7201), "deg")
 e_fine = engine.solve(theta2=fine, omega2="6000 rpm", order=2)
 zero = fine.magnitude[np.flatnonzero(np.diff(np.sign(e_fine.d_ddot.magnitude)))]
-stated(zero[0], "74"), stated(zero[1], "286")
+stated(zero[0], "74")
+stated(zero[1], "286")
 speed = np.abs(e_fine.d_dot.magnitude)
 assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
 

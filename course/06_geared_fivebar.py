@@ -14,9 +14,9 @@
 # %% [markdown]
 # # 6. The geared fivebar
 #
-# Five links in one loop have two degrees of freedom. Gear the second crank to the first and one
-# input drives them both: the **geared fivebar**. Its gear ratio and the phase at which the gears
-# are meshed are two design knobs a fourbar does not have, and they change the coupler's
+# Five links in one loop have two degrees of freedom. Gear the second crank to the first and
+# one input drives them both: the **geared fivebar**. Its gear ratio and the phase at which the
+# gears are meshed are two design knobs a fourbar does not have, and they change the coupler's
 # accelerations a great deal. This notebook follows section 7.4 of the chapter (Robert L.
 # Norton, *Design of Machinery*, chapter 7, eqs. 7.28 and 7.29).
 #
@@ -24,12 +24,13 @@
 #
 # - write the acceleration equation of the geared fivebar (eqs. 7.28-7.29) and say where the
 #   gear ratio $\lambda$ and the phase $\phi$ enter;
-# - solve it at one position with `GearedFiveBar` and check the closed form against the solver;
+# - solve it at one position with `GearedFiveBar` and check the closed form against the
+#   solver;
 # - tell how many crank turns one cycle of the linkage takes, for any gear ratio;
 # - judge, from curves over a cycle, how $\lambda$ and $\phi$ change the coupler's angular
 #   accelerations and the acceleration of the coupler pin B.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 from fractions import Fraction
 
@@ -39,7 +40,9 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
 from accelab.course.animation import animate
-from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style
+from accelab.course.kit import COLORS, explore, in_g, stated, use_style
+from accelab.course.renditions import legend, panels, show
+from accelab.course.text import num, say, table, vec
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar
 from accelab.solver.graphical import fivebar as fivebar_construction
@@ -50,88 +53,109 @@ use_style()
 # %% [markdown]
 # ## The idea and its equations
 #
-# Crank 2 (length $a$) turns about $O_2$, crank 5 (length $d$) about $O_5$, a distance $f$ away
-# along the ground. Two couplers join them: link 3 ($b$, from A to B) and link 4 ($c$, from C to
-# B). The vector loop is
+# Crank 2 (length $a$) turns about $O_2$, crank 5 (length $d$) about $O_5$, a distance $f$
+# away along the ground. Two couplers join them: link 3 ($b$, from A to B) and link 4 ($c$,
+# from C to B). The vector loop is
 #
-# $$ a e^{j\theta_2} + b e^{j\theta_3} - c e^{j\theta_4} - d e^{j\theta_5} - f e^{j\theta_1} = 0 $$
+# $$ \begin{aligned} & a e^{j\theta_2} + b e^{j\theta_3} - c e^{j\theta_4} \\
+#    & - d e^{j\theta_5} - f e^{j\theta_1} = 0 \end{aligned} $$
 #
-# Without gears, $\theta_2$ and $\theta_5$ would both be inputs. Gears of ratio $\lambda$, meshed
-# at the phase $\phi$, tie them together:
+# Without gears, $\theta_2$ and $\theta_5$ would both be inputs. Gears of ratio $\lambda$,
+# meshed at the phase $\phi$, tie them together:
 #
-# $$ \theta_5 = \lambda\theta_2 + \phi, \qquad \omega_5 = \lambda\omega_2, \qquad
-#    \alpha_5 = \lambda\alpha_2 \tag{7.28c} $$
+# $$ \begin{aligned} \theta_5 &= \lambda\theta_2 + \phi, \\ \omega_5 &= \lambda\omega_2,
+#    \qquad \alpha_5 = \lambda\alpha_2 \end{aligned} \tag{7.28c} $$
 #
-# A pair of external gears turns the two cranks in opposite senses, so $\lambda < 0$ (for example
-# $\lambda = -2$: gear 5 has half the teeth of gear 2); an idler gear makes $\lambda > 0$.
-# Differentiating the loop twice, with $\omega_5$ and $\alpha_5$ known from eq. 7.28c:
+# A pair of external gears turns the two cranks in opposite senses, so $\lambda < 0$ (for
+# example $\lambda = -2$: gear 5 has half the teeth of gear 2); an idler gear makes
+# $\lambda > 0$. Differentiating the loop twice, with $\omega_5$ and $\alpha_5$ known from
+# eq. 7.28c:
 #
-# $$ \begin{split}
-#    & \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right)
-#      + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) \\
-#    & \quad - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right)
-#      - \left(d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5}\right) = 0
-#    \end{split} \tag{7.28a} $$
+# $$ \begin{aligned}
+#    & \left(a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}\right) \\
+#    & + \left(b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3}\right) \\
+#    & - \left(c\alpha_4 je^{j\theta_4} - c\omega_4^2 e^{j\theta_4}\right) \\
+#    & - \left(d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5}\right) = 0
+#    \end{aligned} \tag{7.28a} $$
 #
-# Only $\alpha_3$ and $\alpha_4$ are unknown: the geared fivebar is a fourbar whose "ground pivot"
-# C moves along a known path. The real and imaginary parts solve to
+# Only $\alpha_3$ and $\alpha_4$ are unknown: the geared fivebar is a fourbar whose "ground
+# pivot" C moves along a known path. The real and imaginary parts solve to
 #
-# $$ \begin{split}
-#    \alpha_3 = \frac{1}{b\sin(\theta_3-\theta_4)}
-#    & \Big[ -a\alpha_2\sin(\theta_2-\theta_4) - a\omega_2^2\cos(\theta_2-\theta_4) \\
-#    & \quad - b\omega_3^2\cos(\theta_3-\theta_4) + d\omega_5^2\cos(\theta_5-\theta_4) \\
-#    & \quad + d\alpha_5\sin(\theta_5-\theta_4) + c\omega_4^2 \Big]
-#    \end{split} \tag{7.29a} $$
+# $$ \begin{aligned} & b\sin(\theta_3-\theta_4)\,\alpha_3 = \\
+#    & \quad -a\alpha_2\sin(\theta_2-\theta_4) \\
+#    & \quad - a\omega_2^2\cos(\theta_2-\theta_4) \\
+#    & \quad - b\omega_3^2\cos(\theta_3-\theta_4) \\
+#    & \quad + d\omega_5^2\cos(\theta_5-\theta_4) \\
+#    & \quad + d\alpha_5\sin(\theta_5-\theta_4) + c\omega_4^2
+#    \end{aligned} \tag{7.29a} $$
 #
-# $$ \begin{split}
-#    \alpha_4 = \frac{1}{c\sin(\theta_4-\theta_3)}
-#    & \Big[ a\alpha_2\sin(\theta_2-\theta_3) + a\omega_2^2\cos(\theta_2-\theta_3) \\
-#    & \quad - c\omega_4^2\cos(\theta_3-\theta_4) - d\omega_5^2\cos(\theta_3-\theta_5) \\
-#    & \quad + d\alpha_5\sin(\theta_3-\theta_5) + b\omega_3^2 \Big]
-#    \end{split} \tag{7.29b} $$
+# $$ \begin{aligned} & c\sin(\theta_4-\theta_3)\,\alpha_4 = \\
+#    & \quad a\alpha_2\sin(\theta_2-\theta_3) \\
+#    & \quad + a\omega_2^2\cos(\theta_2-\theta_3) \\
+#    & \quad - c\omega_4^2\cos(\theta_3-\theta_4) \\
+#    & \quad - d\omega_5^2\cos(\theta_3-\theta_5) \\
+#    & \quad + d\alpha_5\sin(\theta_3-\theta_5) + b\omega_3^2
+#    \end{aligned} \tag{7.29b} $$
 #
 # and the pins accelerate as
 #
-# $$ \mathbf{A}_A = a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2}, \qquad
-#    \mathbf{A}_{BA} = b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3} \tag{7.29c} $$
+# $$ \mathbf{A}_A = a\alpha_2 je^{j\theta_2} - a\omega_2^2 e^{j\theta_2} \tag{7.29c} $$
 #
-# $$ \mathbf{A}_C = d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5}, \qquad
-#    \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA} \tag{7.29e} $$
+# $$ \mathbf{A}_{BA} = b\alpha_3 je^{j\theta_3} - b\omega_3^2 e^{j\theta_3} \tag{7.29d} $$
 #
-# (The scanned chapter writes $\mathbf{A}_C$ with $c$; C is the pin of crank 5, whose length is
-# $d$.) Both denominators vanish where $\sin(\theta_3 - \theta_4) = 0$: the two couplers in line,
-# the fivebar's toggle.
+# $$ \mathbf{A}_C = d\alpha_5 je^{j\theta_5} - d\omega_5^2 e^{j\theta_5} \tag{7.29e} $$
 #
-# **How long is a cycle?** The linkage is back where it started when *both* cranks are: crank 2
-# after a whole number of turns $q$, crank 5 after a whole number $p$, with
-# $p/q = |\lambda|$. Write $\lambda$ as a fraction in lowest terms, $\lambda = \pm p/q$: one cycle
-# takes $q$ turns of the input. $\lambda = -2$ repeats every turn, $\lambda = -1.5 = -3/2$ every two,
-# and an irrational ratio never repeats exactly.
+# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA} \tag{7.29f} $$
+#
+# (The scanned chapter writes $\mathbf{A}_C$ with $c$; C is the pin of crank 5, whose length
+# is $d$.) Both denominators vanish where $\sin(\theta_3 - \theta_4) = 0$: the two couplers in
+# line, the fivebar's toggle.
+#
+# **How long is a cycle?** The linkage is back where it started when *both* cranks are: crank
+# 2 after a whole number of turns $q$, crank 5 after a whole number $p$, with
+# $p/q = |\lambda|$. Write $\lambda$ as a fraction in lowest terms, $\lambda = \pm p/q$: one
+# cycle takes $q$ turns of the input. $\lambda = -2$ repeats every turn, $\lambda = -1.5 =
+# -3/2$ every two, and an irrational ratio never repeats exactly.
 
 # %% [markdown]
 # ## Worked examples
 #
 # ### 1. One position
 #
-# Cranks $a = d = 1.5$ in, couplers $b = c = 4$ in, pivots $f = 4$ in apart, external gears with
-# $\lambda = -2$ meshed so that $\phi = 30°$. At $\theta_2 = 60°$ the input turns at 20 rad/s
-# counter-clockwise and slows at 50 rad/s².
+# Cranks $a = d = 1.5$ in, couplers $b = c = 4$ in, pivots $f = 4$ in apart, external gears
+# with $\lambda = -2$ meshed so that $\phi = 30°$. At $\theta_2 = 60°$ the input turns at 20
+# rad/s counter-clockwise and slows at 50 rad/s².
 
 # %%
 geometry = dict(a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in")
 fivebar = GearedFiveBar(**geometry, lam=-2, phi="30 deg")
 r = fivebar.solve(theta2="60 deg", omega2="20 rad/s", alpha2="-50 rad/s^2")
-print(f"theta5 = {r.theta5.to('deg'):.1f~P}, omega5 = {r.omega5:.1f~P}, alpha5 = {r.alpha5:.1f~P}")
-print(f"theta3 = {r.theta3.to('deg'):.2f~P}, theta4 = {r.theta4.to('deg'):.2f~P}")
-print(f"omega3 = {r.omega3:.3f~P}, omega4 = {r.omega4:.3f~P}")
-print(f"alpha3 = {r.alpha3:.1f~P}, alpha4 = {r.alpha4:.1f~P}")
-for name in ("A_A", "A_C", "A_B"):
-    z = getattr(r, name)
-    print(f"{name} = {polar(z, 'in/s^2')} = {polar(z, 'm/s^2')}  ({in_g(z):.2f} g)")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "value"],
+    [
+        [
+            r"$\theta_5$, $\omega_5$, $\alpha_5$",
+            f"{num(r.theta5.m_as('deg'))}°, {num(r.omega5)} rad/s, {num(r.alpha5)} rad/s²",
+        ],
+        [r"$\theta_3$, $\theta_4$", f"{num(r.theta3.m_as('deg'))}°, {num(r.theta4.m_as('deg'))}°"],
+        [r"$\omega_3$, $\omega_4$", f"{num(r.omega3)}, {num(r.omega4)} rad/s"],
+        [r"$\alpha_3$, $\alpha_4$", f"{num(r.alpha3)}, {num(r.alpha4)} rad/s²"],
+    ]
+    + [
+        [
+            f"$\\mathbf{{A}}_{k[-1]}$",
+            f"{vec(getattr(r, k), 'in/s^2')} = {vec(getattr(r, k), 'm/s^2')} "
+            f"({num(in_g(getattr(r, k)), 3)} g)",
+        ]
+        for k in ("A_A", "A_C", "A_B")
+    ],
+)
 
 # %% [markdown]
-# The next cell evaluates eqs. 7.29a and 7.29b as printed, with the angles and velocities from
-# the solver, and asserts that they agree with it; then it checks eq. 7.29f.
+# The next cell evaluates eqs. 7.29a and 7.29b as printed, with the angles and velocities
+# from the solver, and asserts that they agree with it; then it checks eq. 7.29f.
 
 # %%
 a, b, c, d = 1.5, 4.0, 4.0, 1.5  # in
@@ -158,39 +182,58 @@ alpha4 = (
 assert np.isclose(alpha3, r.alpha3.magnitude, rtol=1e-12)
 assert np.isclose(alpha4, r.alpha4.magnitude, rtol=1e-12)
 assert np.isclose((r.A_A + r.A_BA - r.A_B).to("in/s^2").magnitude, 0, atol=1e-9)
-print(
-    f"eq. 7.29a: {alpha3:.4f} rad/s^2, eq. 7.29b: {alpha4:.4f} rad/s^2: both agree with the solver"
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"Eq. 7.29a gives $\alpha_3$ = {num(alpha3, 7)} rad/s² and eq. 7.29b $\alpha_4$ = "
+    f"{num(alpha4, 7)} rad/s²: both what the solver gives."
 )
 
 # %% [markdown]
-# The graphical construction (section 7.2's method, with two moving "pivots" A and C) draws the
-# same position to scale with its accelerations at their points. The dotted circles are the
-# gears' pitch circles: with external gears of ratio $-2$ on centres 4 in apart, gear 2 has a
-# pitch radius of 8/3 in and gear 5 of 4/3 in.
+# The graphical construction (section 7.2's method, with two moving "pivots" A and C) draws
+# the same position to scale with its accelerations at their points. The dotted circles are
+# the gears' pitch circles: with external gears of ratio $-2$ on centres 4 in apart, gear 2
+# has a pitch radius of 8/3 in and gear 5 of 4/3 in.
 
-# %% mystnb={"figure": {"caption": "The geared fivebar of example 1 drawn to scale with the accelerations at A, B and C and the gears' pitch circles (dotted)."}, "image": {"alt": "Geared fivebar linkage in inches with acceleration arrows at its pins and two dotted pitch circles."}}
+# %%
 pitch2, pitch5 = 4 * 2 / 3, 4 * 1 / 3  # in: r2 + r5 = 4 in and r2 / r5 = |lambda| = 2
-stated(pitch2, "2.667"), stated(pitch5, "1.333")
 m = Q_(1, "in").to("m").magnitude
 con = fivebar_construction.construct(
     a * m, b * m, c * m, d * m, 4 * m, -2, np.radians(30), t2, w2, al2
 )
 assert np.isclose(con.values["alpha3"], r.alpha3.magnitude, rtol=1e-9)
-fig, ax = plt.subplots(figsize=(9, 6))
-draw_linkage(con, ax=ax, units="US")  # the linkage was given in inches
-for centre, radius in ((0, pitch2), (4, pitch5)):  # drawn in inches
-    ax.add_patch(plt.Circle((centre, 0), radius, fill=False, color="#999999", ls=":", lw=1.2))
-(x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-ax.set_xlim(min(x0, -pitch2 - 0.3), max(x1, 4 + pitch5 + 0.3))  # room for the pitch circles
-ax.set_ylim(min(y0, -pitch2 - 0.3), y1)
-plt.show()
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(pitch2, "2.667")
+stated(pitch5, "1.333")
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The geared fivebar of example 1 drawn to scale (inches) with the accelerations at $A$, $B$ and $C$ and the gears' pitch circles (dotted)."}}
+def fivebar_drawing(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 5.0) if narrow else (7.4, 5.2), layout="constrained")
+    draw_linkage(con, ax=ax, units="US", legend=not narrow)  # the linkage was given in inches
+    for centre, radius in ((0, pitch2), (4, pitch5)):  # drawn in inches
+        ax.add_patch(plt.Circle((centre, 0), radius, fill=False, color="#999999", ls=":", lw=1.2))
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    ax.set_xlim(min(x0, -pitch2 - 0.3), max(x1, 4 + pitch5 + 0.3))  # room for the pitch circles
+    ax.set_ylim(min(y0, -pitch2 - 0.3), y1)
+    if narrow:
+        legend(fig, ("normal", "tangential", "resultant"), ncol=2, loc="outside lower center")
+    return fig
+
+
+show(
+    fivebar_drawing,
+    alt="Geared fivebar linkage in inches with acceleration arrows at its pins and two "
+    "dotted pitch circles.",
+)
 
 # %% [markdown]
 # ### 2. A gear ratio of zero is a fourbar
 #
 # With $\lambda = 0$, crank 5 never turns: C is a fixed pivot at $O_5 + d e^{j\phi}$, and the
-# linkage is a fourbar with ground link from $O_2$ to C. The `FourBar` solver must then give the
-# same coupler accelerations, which is a useful check on both.
+# linkage is a fourbar with ground link from $O_2$ to C. The `FourBar` solver must then give
+# the same coupler accelerations, which is a useful check on both.
 
 # %%
 phi = np.radians(30)
@@ -208,16 +251,21 @@ assert np.allclose(g.alpha3.magnitude[both], f4.alpha3.magnitude[both], rtol=1e-
 assert np.allclose(
     g.A_B.to("in/s^2").magnitude[both], f4.A_B.to("in/s^2").magnitude[both], rtol=1e-9
 )
-print(f"lambda = 0: alpha3 and A_B agree with the fourbar at {both.sum()} positions")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"With $\lambda = 0$, $\alpha_3$ and $\mathbf{{A}}_B$ agree with the fourbar's at all "
+    f"{both.sum()} positions both can reach."
+)
 
 # %% [markdown]
 # ### 3. Curves over a cycle: the gear ratio
 #
-# A steady 20 rad/s input ($\alpha_2 = 0$), the same phase $\phi = 30°$, three gear ratios. Each
-# curve is one solver call on an array of crank angles.
+# A steady 20 rad/s input ($\alpha_2 = 0$), the same phase $\phi = 30°$, three gear ratios.
+# Each curve is one solver call on an array of crank angles.
 
 
-# %% mystnb={"figure": {"caption": "Over a cycle for several gear ratios: the coupler's angular acceleration and the acceleration of pin B (phase 30 deg)."}, "image": {"alt": "Two line plots against crank angle, one curve per gear ratio."}}
+# %%
 def cycle_turns(lam):
     """Crank turns in one cycle: the denominator of lam as a fraction in lowest terms."""
     return Fraction(lam).limit_denominator(100).denominator
@@ -230,117 +278,175 @@ def sweep(lam, phi_deg, points_per_turn=360, omega2="20 rad/s"):
     return np.degrees(theta), linkage.solve(theta2=Q_(theta, "rad"), omega2=omega2, alpha2=0)
 
 
-colours = {-1: COLORS["normal"], -2: COLORS["tangential"], 2: COLORS["coriolis"]}
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
-for lam in (-1, -2, 2):
-    deg, s = sweep(lam, 30)
-    assert s.valid.all()
-    ax1.plot(deg, s.alpha3.magnitude / 1000, color=colours[lam], label=rf"$\lambda$ = {lam:+d}")
-    ax2.plot(deg, in_g(s.A_B), color=colours[lam], label=rf"$\lambda$ = {lam:+d}")
-ax1.set_ylabel(r"$\alpha_3$ [1000 rad/s$^2$]")
-ax2.set_ylabel(r"$|\mathbf{A}_B|$ [g]")
-for ax in (ax1, ax2):
-    ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
-    ax.set_xticks(range(0, 361, 60))
-    ax.legend()
-ax1.set_title(r"Coupler 3's angular acceleration ($\phi$ = 30°)")
-ax2.set_title(r"Acceleration of the coupler pin B ($\phi$ = 30°)")
-plt.show()
+ratios = {lam: sweep(lam, 30) for lam in (-1, -2, 2)}
+assert all(s.valid.all() for _, s in ratios.values())
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-peak_of = {lam: np.nanmax(in_g(sweep(lam, 30)[1].A_B)) for lam in (-1, -2, 2)}
-stated(peak_of[-2] / peak_of[-1], "3.4"), stated(peak_of[2] / peak_of[-1], "4.3")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Over a cycle for three gear ratios $\\lambda$ (phase $\\phi = 30^\\circ$, $\\omega_2 = 20$ rad/s): the coupler's angular acceleration $\\alpha_3$ and the acceleration of pin $B$."}}
+def gear_ratios(narrow):
+    colours = {-1: COLORS["normal"], -2: COLORS["tangential"], 2: COLORS["coriolis"]}
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.8, 3.6), tall=(4.4, 7.0), layout="constrained")
+    for lam, (deg, s) in ratios.items():
+        label = rf"$\lambda$ = {lam:+d}"
+        ax1.plot(deg, s.alpha3.magnitude / 1000, color=colours[lam], label=label)
+        ax2.plot(deg, in_g(s.A_B), color=colours[lam], label=label)
+    ax1.set_ylabel(r"$\alpha_3$ [1000 rad/s$^2$]")
+    ax2.set_ylabel(r"$|\mathbf{A}_B|$ [g]")
+    for ax in (ax1, ax2):
+        ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
+        ax.set_xticks(range(0, 361, 90))
+    ax2.legend()
+    ax1.set_title("Coupler 3's angular acceleration")
+    ax2.set_title("Acceleration of the coupler pin $B$")
+    return fig
+
+
+show(gear_ratios, alt="Two line plots against crank angle, one curve per gear ratio.")
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+peak_of = {lam: np.nanmax(in_g(s.A_B)) for lam, (_, s) in ratios.items()}
+stated(peak_of[-2] / peak_of[-1], "3.4")
+stated(peak_of[2] / peak_of[-1], "4.3")
+# "mirror each other" holds for phi = 180 deg only: then B stays on the line x = f / 2
+mirrored = sweep(-1, 180)[1]
+assert np.allclose(mirrored.R_B.m_as("in").real, 2.0, atol=1e-9)
+assert np.ptp(ratios[-1][1].R_B.m_as("in").real) > 0.5  # with phi = 30 deg it does not
+
 # %% [markdown]
-# With $\lambda = -1$ the two cranks mirror each other and the coupler moves gently; at
-# $\lambda = \pm 2$ crank 5 turns twice per input turn and the couplers are whipped round twice as
-# often: the peaks of $|\mathbf{A}_B|$ are 3.4 ($\lambda = -2$) and 4.3 ($\lambda = +2$) times
-# higher. Positive and negative ratios of the same size
-# give quite different motions, because the cranks then turn the same way or opposite ways.
+# With $\lambda = -1$ crank 5 turns as fast as crank 2, the other way, and the coupler moves
+# gently. (The two cranks mirror each other about the perpendicular bisector of $O_2O_5$ only
+# when $\theta_5 = 180^\circ - \theta_2$, that is with $\phi = 180^\circ$; at the phase used
+# here, $30^\circ$, they do not, and $B$ wanders off that line.) At $\lambda = \pm 2$ crank 5
+# turns twice per input turn and the couplers are whipped round twice as often: the peaks of
+# $|\mathbf{A}_B|$ are 3.4 ($\lambda = -2$) and 4.3 ($\lambda = +2$) times higher. Positive
+# and negative ratios of the same size give quite different motions, because the cranks then
+# turn the same way or opposite ways.
 #
 # ### 4. The phase
 #
-# The phase angle costs nothing to change (mesh the gears one tooth further round), yet it changes
-# the linkage: at a given $\theta_2$ crank 5 points somewhere else, so the couplers take different
-# shapes. The chart shows the largest $|\mathbf{A}_B|$ over a cycle against $\phi$, for four gear
-# ratios.
+# The phase angle costs nothing to change (mesh the gears one tooth further round), yet it
+# changes the linkage: at a given $\theta_2$ crank 5 points somewhere else, so the couplers
+# take different shapes. The chart shows the largest $|\mathbf{A}_B|$ over a cycle against
+# $\phi$, for four gear ratios.
 
-# %% mystnb={"figure": {"caption": "The peak acceleration of B at omega2 = 20 rad/s against the phase angle phi, for several gear ratios: the phase matters."}, "image": {"alt": "Line plot of peak acceleration against phase angle from 0 to 360 degrees, one curve per gear ratio."}}
+# %%
 phis = np.arange(0, 361, 10)
-fig, ax = plt.subplots(figsize=(8, 4.2))
-for lam, colour in (
-    (-1, COLORS["normal"]),
-    (-1.5, COLORS["slip"]),
-    (-2, COLORS["tangential"]),
-    (2, COLORS["coriolis"]),
-):
-    peak = [np.nanmax(in_g(sweep(lam, p, points_per_turn=180)[1].A_B)) for p in phis]
-    spread = {**globals().get("spread", {}), lam: max(peak) / min(peak)}
-    ax.plot(phis, peak, "o-", ms=3, color=colour, label=rf"$\lambda$ = {lam:+g}")
-ax.set_xlabel(r"phase $\phi$ [deg]")
-ax.set_ylabel(r"largest $|\mathbf{A}_B|$ in a cycle [g]")
-ax.set_xticks(range(0, 361, 45))
-ax.set_yscale("log")
-ax.set_title(r"Peak acceleration of B at $\omega_2$ = 20 rad/s: the phase matters")
-ax.legend()
-plt.show()
+gear_colour = {
+    -1: COLORS["normal"],
+    -1.5: COLORS["slip"],
+    -2: COLORS["tangential"],
+    2: COLORS["coriolis"],
+}
+peaks = {
+    lam: [np.nanmax(in_g(sweep(lam, p, points_per_turn=180)[1].A_B)) for p in phis]
+    for lam in gear_colour
+}
+spread = {lam: max(peak) / min(peak) for lam, peak in peaks.items()}
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-stated(spread[2], "6", sig=1), stated(spread[-2], "1.7")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The largest acceleration of $B$ in a cycle at $\\omega_2 = 20$ rad/s against the phase angle $\\phi$, for four gear ratios: the phase matters."}}
+def phases(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 4.2) if narrow else (7.4, 3.8), layout="constrained")
+    for lam, peak in peaks.items():
+        ax.plot(phis, peak, "o-", ms=3, color=gear_colour[lam], label=rf"$\lambda$ = {lam:+g}")
+    ax.set_xlabel(r"phase $\phi$ [deg]")
+    ax.set_ylabel(r"largest $|\mathbf{A}_B|$ [g]")
+    ax.set_xticks(range(0, 361, 90 if narrow else 45))
+    ax.set_yscale("log")
+    ax.legend(
+        ncol=2 if narrow else 4, loc="upper center", bbox_to_anchor=(0.5, -0.2 if narrow else -0.16)
+    )
+    return fig
+
+
+show(
+    phases,
+    alt="Line plot of peak acceleration against phase angle from 0 to 360 degrees, one curve "
+    "per gear ratio.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(spread[2], "6", sig=1)
+stated(spread[-2], "1.7")
+
 # %% [markdown]
-# For $\lambda = +2$ the worst phase gives six times the peak acceleration of the best one; for
-# $\lambda = -2$ about 1.7 times. A designer who picks the gear ratio for the coupler curve's shape
-# still has the phase to tune, and should look at accelerations while doing so.
+# For $\lambda = +2$ the worst phase gives six times the peak acceleration of the best one;
+# for $\lambda = -2$ about 1.7 times. A designer who picks the gear ratio for the coupler
+# curve's shape still has the phase to tune, and should look at accelerations while doing so.
 #
 # ### 5. A gear ratio that is not a whole number
 #
-# With $\lambda = -1.5$, crank 5 makes one and a half turns per input turn, so after one input
-# turn it is half a turn away from where it started and the coupler pin B is on a different
-# part of its path. One cycle needs two input turns (and three turns of crank 5).
+# With $\lambda = -1.5$, crank 5 makes one and a half turns per input turn, so after one
+# input turn it is half a turn away from where it started and the coupler pin B is on a
+# different part of its path. One cycle needs two input turns (and three turns of crank 5).
 
-# %% mystnb={"figure": {"caption": "With lambda = -1.5 the path of B takes two input turns to close: the path and the acceleration over one full cycle."}, "image": {"alt": "Left, the closed coupler path of B; right, acceleration of B against crank angle over two turns."}}
+# %%
 deg, s = sweep(-1.5, 30)
 B = s.R_B.to("in").magnitude
 half = len(deg) // 2
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2), gridspec_kw={"width_ratios": [1, 1.4]})
-ax1.plot(
-    B.real[: half + 1],
-    B.imag[: half + 1],
-    color=COLORS["tangential"],
-    lw=2.2,
-    label="first input turn",
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"$\lambda = -1.5 = {Fraction(-1.5)}$: one cycle is {cycle_turns(-1.5)} turns of the "
+    "input."
 )
-ax1.plot(
-    B.real[half:], B.imag[half:], color=COLORS["normal"], lw=2.2, ls="--", label="second input turn"
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "With $\\lambda = -1.5$ the path of $B$ takes two input turns to close: the path, and the acceleration of $B$ over one full cycle."}}
+def two_turns(narrow):
+    fig, (ax1, ax2) = panels(
+        2, narrow, wide=(7.8, 3.6), tall=(4.4, 7.4), width_ratios=[1, 1.3], layout="constrained"
+    )
+    ax1.plot(
+        B.real[: half + 1],
+        B.imag[: half + 1],
+        color=COLORS["tangential"],
+        lw=2.2,
+        label="first input turn",
+    )
+    ax1.plot(
+        B.real[half:],
+        B.imag[half:],
+        color=COLORS["normal"],
+        lw=2.2,
+        ls="--",
+        label="second input turn",
+    )
+    ax1.plot(B.real[0], B.imag[0], "ko", ms=6)
+    ax1.annotate(
+        r"start, $\theta_2$ = 0",
+        (B.real[0], B.imag[0]),
+        textcoords="offset points",
+        xytext=(8, -14),
+        fontsize=10,
+    )
+    ax1.plot(B.real[half], B.imag[half], "s", color="black", ms=6)
+    ax1.annotate(
+        "after one turn",
+        (B.real[half], B.imag[half]),
+        textcoords="offset points",
+        xytext=(8, 6),
+        fontsize=10,
+    )
+    ax1.set_aspect("equal")
+    ax1.set_xlabel("x [in]")
+    ax1.set_ylabel("y [in]")
+    ax1.set_title(r"Path of $B$, $\lambda$ = -1.5")
+    ax1.legend(loc="lower left")
+    ax2.plot(deg, in_g(s.A_B), color="black")
+    ax2.axvline(360, color="#888888", ls=":")
+    ax2.set_xlabel(r"crank angle $\theta_2$ [deg]")
+    ax2.set_ylabel(r"$|\mathbf{A}_B|$ [g]")
+    ax2.set_xticks(range(0, 721, 180))
+    ax2.set_title("Two input turns make one cycle")
+    return fig
+
+
+show(
+    two_turns,
+    alt="The closed coupler path of B, and the acceleration of B against crank angle over "
+    "two turns.",
 )
-ax1.plot(B.real[0], B.imag[0], "ko", ms=6)
-ax1.annotate(
-    r"start, $\theta_2$ = 0",
-    (B.real[0], B.imag[0]),
-    textcoords="offset points",
-    xytext=(8, -14),
-    fontsize=9,
-)
-ax1.plot(B.real[half], B.imag[half], "s", color="black", ms=6)
-ax1.annotate(
-    "after one turn",
-    (B.real[half], B.imag[half]),
-    textcoords="offset points",
-    xytext=(8, 6),
-    fontsize=9,
-)
-ax1.set_aspect("equal")
-ax1.set_xlabel("x [in]")
-ax1.set_ylabel("y [in]")
-ax1.set_title(r"Path of B, $\lambda$ = -1.5")
-ax1.legend(fontsize=9, loc="lower left")
-ax2.plot(deg, in_g(s.A_B), color="black")
-ax2.axvline(360, color="#888888", ls=":")
-ax2.set_xlabel(r"crank angle $\theta_2$ [deg]")
-ax2.set_ylabel(r"$|\mathbf{A}_B|$ [g]")
-ax2.set_xticks(range(0, 721, 90))
-ax2.set_title("Two input turns make one cycle")
-plt.show()
-print(f"lambda = -1.5 = {Fraction(-1.5)}: one cycle is {cycle_turns(-1.5)} turns of the input")
 
 # %% [markdown]
 # ## Explore
@@ -349,13 +455,13 @@ print(f"lambda = -1.5 = {Fraction(-1.5)}: one cycle is {cycle_turns(-1.5)} turns
 # acceleration on one fixed colour scale, so a hot path is a fast-changing one; the title gives
 # the peaks over the whole cycle, however many input turns it takes.
 
-# %% mystnb={"figure": {"caption": "The path of coupler pin B at four phase angles phi (lambda = -2), coloured by the size of its acceleration in g; the peak changes with the phase."}, "image": {"alt": "Four panels of the geared fivebar, each with the closed path of pin B coloured from dark (low) to yellow (high) acceleration."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The path of coupler pin $B$ at four phase angles $\\phi$ ($\\lambda = -2$), coloured by the size of its acceleration in g: the peak changes with the phase."}}
 NORM = Normalize(vmin=0, vmax=30)  # g
 
 
 def draw(phi=30, lam=-2.0):
     deg, s = sweep(lam, phi, points_per_turn=240)
-    fig, ax = plt.subplots(figsize=(6.2, 4.4))
+    fig, ax = plt.subplots(figsize=(4.6, 4.2))
     ok = s.valid
     if ok.any():
         B = s.R_B.to("in").magnitude
@@ -367,7 +473,8 @@ def draw(phi=30, lam=-2.0):
         ax.add_collection(lines)
         fig.colorbar(lines, ax=ax, label=r"$|\mathbf{A}_B|$ [g]", extend="max")
         title = (
-            rf"$\lambda$ = {lam:+g}: cycle of {cycle_turns(lam)} turn(s), "
+            rf"$\lambda$ = {lam:+g}: cycle of {cycle_turns(lam)} turn(s),"
+            "\n"
             rf"peak $|\mathbf{{A}}_B|$ {np.nanmax(g):.0f} g, "
             rf"$|\alpha_3|$ {np.nanmax(np.abs(s.alpha3.magnitude)):.0f} rad/s$^2$"
         )
@@ -388,10 +495,10 @@ def draw(phi=30, lam=-2.0):
             zorder=1,
             label=r"linkage at $\theta_2$ = 0",
         )
-        ax.legend(loc="lower left", fontsize=8)
+        ax.legend(loc="lower left", fontsize=10)
     for centre in (0, 4):
         ax.plot(centre, 0, "^", color="#333333", ms=9)
-    ax.set_title(title, fontsize=10)
+    ax.set_title(title, fontsize=11)
     ax.set_xlim(-3, 7)
     ax.set_ylim(-2, 6.5)
     ax.set_aspect("equal")
@@ -453,12 +560,13 @@ explore(draw, phi=(0, 360, 15, 30, "deg"), lam=(-3, 3, 0.5, -2.0))
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 assert Fraction(-2.5) == Fraction(-5, 2) and cycle_turns(-2.5) == 2
 steady, doubled = (
     fivebar.solve(theta2="60 deg", omega2=w, alpha2=0) for w in ("20 rad/s", "40 rad/s")
 )
-stated(doubled.alpha3 / steady.alpha3, "4"), stated(abs(doubled.A_B) / abs(steady.A_B), "4")
+stated(doubled.alpha3 / steady.alpha3, "4")
+stated(abs(doubled.A_B) / abs(steady.A_B), "4")
 stated(
     GearedFiveBar(**geometry, lam=-2, phi="30 deg")
     .solve(theta2="60 deg", omega2="20 rad/s", alpha2="10 rad/s^2")
@@ -472,7 +580,7 @@ stated(
 # round twice. The arrows (one scale for the whole turn) are the accelerations of A, B and C;
 # the marker runs along the curves of $\alpha_3$, $\alpha_4$ and the three sizes.
 
-# %% mystnb={"figure": {"caption": "Animation: the geared fivebar (lambda = -2) through one input turn at 20 rad/s with the accelerations of A, B and C, and a marker on alpha3, alpha4 and the three sizes."}, "image": {"alt": "Animated geared fivebar with acceleration arrows at A, B and C, beside plots with a moving marker."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Animation: the geared fivebar ($\\lambda = -2$, $\\phi = 30^\\circ$) through one input turn at 20 rad/s with the accelerations of $A$, $B$ and $C$, and a marker on $\\alpha_3$, $\\alpha_4$ and the three sizes. Play, pause, step or drag the slider."}}
 animate(
     {
         "mechanism": "fivebar",
@@ -484,6 +592,9 @@ animate(
         "alpha2": "0 rad/s^2",
     },
     title="Geared fivebar, $\\lambda$ = -2",
+    alt="The geared fivebar turning, crank 5 twice as fast the other way, with acceleration "
+    "arrows at A, B and C, beside plots of alpha3, alpha4 and the three sizes with a moving "
+    "marker.",
 )
 
 # %% [markdown]
@@ -514,13 +625,16 @@ animate(
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 r61 = GearedFiveBar(**geometry, lam=-3, phi="0 deg").solve(
     theta2="0 deg", omega2="15 rad/s", alpha2="40 rad/s^2"
 )
-stated(r61.theta5, "0", "deg"), stated(r61.alpha5, "-120", "rad/s^2")
-stated(r61.alpha3, "37.43", "rad/s^2"), stated(r61.alpha4, "-157.43", "rad/s^2")
-stated(abs(r61.A_B), "2193", "in/s^2"), stated(np.angle(r61.A_B.magnitude, deg=True), "-132.4")
+stated(r61.theta5, "0", "deg")
+stated(r61.alpha5, "-120", "rad/s^2")
+stated(r61.alpha3, "37.43", "rad/s^2")
+stated(r61.alpha4, "-157.43", "rad/s^2")
+stated(abs(r61.A_B), "2193", "in/s^2")
+stated(np.angle(r61.A_B.magnitude, deg=True), "-132.4")
 assert cycle_turns(-2 / 3) == 3
 
 # %% [markdown]

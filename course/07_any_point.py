@@ -29,7 +29,7 @@
 # - turn the accelerations of the centres of gravity into the forces $m\mathbf{A}_G$ that the
 #   dynamic force analysis needs, in lbf and in newtons.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
@@ -37,7 +37,9 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import Normalize
 
 from accelab.course.animation import animate
-from accelab.course.kit import COLORS, explore, in_g, polar, stated, use_style, vector
+from accelab.course.kit import COLORS, explore, in_g, stated, use_style, vector
+from accelab.course.renditions import show
+from accelab.course.text import num, say, table, vec, xy
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, FourBar
 
@@ -46,29 +48,32 @@ use_style()
 # %% [markdown]
 # ## The idea and its equations
 #
-# Angular acceleration is a *free vector*: a link has one $\alpha$, whatever point you look at.
-# So a point fixed on a link accelerates like a point on a rotating radius, measured from any
-# other point of the same link whose acceleration is known (eq. 7.4).
+# Angular acceleration is a *free vector*: a link has one $\alpha$, whatever point you look
+# at. So a point fixed on a link accelerates like a point on a rotating radius, measured from
+# any other point of the same link whose acceleration is known (eq. 7.4).
 #
-# **A point S on the crank**, at the distance $s$ from $O_2$ and the constant angle $\delta_2$ from
-# the line $O_2A$. It turns about a fixed pivot, so
+# **A point S on the crank**, at the distance $s$ from $O_2$ and the constant angle $\delta_2$
+# from the line $O_2A$. It turns about a fixed pivot, so
 #
 # $$ \mathbf{R}_S = s\,e^{j(\theta_2+\delta_2)} \tag{4.25} $$
 #
-# $$ \mathbf{A}_S = s\alpha_2\, je^{j(\theta_2+\delta_2)} - s\omega_2^2\, e^{j(\theta_2+\delta_2)} \tag{7.30} $$
+# $$ \begin{aligned} \mathbf{A}_S = {} & s\alpha_2\, je^{j(\theta_2+\delta_2)} \\
+#    & - s\omega_2^2\, e^{j(\theta_2+\delta_2)} \end{aligned} \tag{7.30} $$
 #
-# **A point U on the rocker**, at $u$ from $O_4$ and the angle $\delta_4$ from $O_4B$: the same form
-# with link 4's motion,
+# **A point U on the rocker**, at $u$ from $O_4$ and the angle $\delta_4$ from $O_4B$: the
+# same form with link 4's motion,
 #
-# $$ \mathbf{A}_U = u\alpha_4\, je^{j(\theta_4+\delta_4)} - u\omega_4^2\, e^{j(\theta_4+\delta_4)} \tag{7.31} $$
+# $$ \begin{aligned} \mathbf{A}_U = {} & u\alpha_4\, je^{j(\theta_4+\delta_4)} \\
+#    & - u\omega_4^2\, e^{j(\theta_4+\delta_4)} \end{aligned} \tag{7.31} $$
 #
-# **A point P on the coupler**, at $p$ from A and the angle $\delta_3$ from the line AB. The coupler
-# has no fixed pivot, so start from A, whose acceleration we know, and add the acceleration
-# difference of P from A:
+# **A point P on the coupler**, at $p$ from A and the angle $\delta_3$ from the line AB. The
+# coupler has no fixed pivot, so start from A, whose acceleration we know, and add the
+# acceleration difference of P from A:
 #
 # $$ \mathbf{A}_P = \mathbf{A}_A + \mathbf{A}_{PA} \tag{7.32a} $$
 #
-# $$ \mathbf{A}_{PA} = p\alpha_3\, je^{j(\theta_3+\delta_3)} - p\omega_3^2\, e^{j(\theta_3+\delta_3)} \tag{7.32b} $$
+# $$ \begin{aligned} \mathbf{A}_{PA} = {} & p\alpha_3\, je^{j(\theta_3+\delta_3)} \\
+#    & - p\omega_3^2\, e^{j(\theta_3+\delta_3)} \end{aligned} \tag{7.32b} $$
 #
 # Eq. 7.32 is eq. 7.4 again. It works for any point of any rigid link, referred to any other
 # point of the same link, once positions and velocities are known.
@@ -78,20 +83,27 @@ use_style()
 #
 # ### 1. A coupler point and three centres of gravity
 #
-# The fourbar $a$ = 2 in, $b$ = 6 in, $c$ = 9 in, $d$ = 7 in at $\theta_2 = 30°$, $\omega_2$ = 10 rad/s,
-# $\alpha_2$ = -5 rad/s². The coupler is a triangular plate with the point P at $p$ = 3 in,
-# $\delta_3$ = 30°: the linkage, input and coupler point of the course's Example 7-1
-# (notebook 2; the chapter's example prints no numbers, **these are the course's own
-# numbers**). Its centre of gravity $G_3$ is the centroid of the triangle A, B, P; the crank's
-# and rocker's centres of gravity are at their middles.
+# The fourbar $a$ = 2 in, $b$ = 6 in, $c$ = 9 in, $d$ = 7 in at $\theta_2 = 30°$,
+# $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s². The coupler is a triangular plate with the
+# point P at $p$ = 3 in, $\delta_3$ = 30°: the linkage, input and coupler point of the course's
+# Example 7-1 (notebook 2; the chapter's example prints no numbers, **these are the course's
+# own numbers**). Its centre of gravity $G_3$ is the centroid of the triangle A, B, P; the
+# crank's and rocker's centres of gravity are at their middles.
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
 motion = dict(theta2="30 deg", omega2="10 rad/s", alpha2="-5 rad/s^2")
 r = fourbar.solve(**motion, p="3 in", delta3="30 deg")
-print(f"alpha3 = {r.alpha3:.4f~P}, alpha4 = {r.alpha4:.4f~P}")
-print(f"A_A = {polar(r.A_A, 'in/s^2')}")
-print(f"A_P = {polar(r.A_P, 'in/s^2')} = {polar(r.A_P, 'm/s^2')}")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "value"],
+    [
+        [r"$\alpha_3$, $\alpha_4$", f"{num(r.alpha3)}, {num(r.alpha4)} rad/s²"],
+        [r"$\mathbf{A}_A$", vec(r.A_A, "in/s^2")],
+        [r"$\mathbf{A}_P$", f"{vec(r.A_P, 'in/s^2')} = {vec(r.A_P, 'm/s^2')}"],
+    ],
+)
 
 # %% [markdown]
 # Eq. 7.32 written out by hand, checked against the solver:
@@ -104,13 +116,13 @@ A_PA = p * a3 * 1j * np.exp(1j * (t3 + delta3)) - p * w3**2 * np.exp(
 )  # eq. 7.32b
 A_P = r.A_A.to("in/s^2").magnitude + A_PA  # eq. 7.32a
 assert np.isclose(A_P, r.A_P.to("in/s^2").magnitude, rtol=1e-12)
-print(f"by hand: A_P = {A_P:.4f} in/s^2")
+say(rf"By hand, $\mathbf{{A}}_P$ = {xy(A_P, 'in/s^2', sig=6)}: the solver's value.")
 
 # %% [markdown]
-# For points that are not the coupler point, `Result.point(link, p, delta)` gives the position,
-# velocity, acceleration (and its tangential and normal parts about the link's base pin) and jerk
-# of any point of link 2, 3 or 4, with no new solve. The coupler's centroid, in the coupler's own
-# frame (A at the origin, B on the x axis), is $(0 + b + p e^{j\delta_3})/3$:
+# For points that are not the coupler point, `Result.point(link, p, delta)` gives the
+# position, velocity, acceleration (and its tangential and normal parts about the link's base
+# pin) and jerk of any point of link 2, 3 or 4, with no new solve. The coupler's centroid, in
+# the coupler's own frame (A at the origin, B on the x axis), is $(0 + b + p e^{j\delta_3})/3$:
 
 # %%
 g3 = (0 + 6 + 3 * np.exp(1j * delta3)) / 3  # in, from A, in link 3's frame
@@ -120,9 +132,23 @@ cg = {
     "U = G4": (4, "4.5 in", "0 deg"),
 }
 points = {name: r.point(*spec) for name, spec in cg.items()}
-print(f"G3: {abs(g3):.4f} in from A at {np.degrees(np.angle(g3)):.3f} deg from AB")
-for name, pm in points.items():
-    print(f"{name:7} A = {polar(pm.A, 'in/s^2')}   ({in_g(pm.A):.3f} g)")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"$G_3$ is {num(abs(g3), 5)} in from $A$, at {num(np.degrees(np.angle(g3)), 5)}° from "
+    "$AB$. The accelerations of the three centres of gravity:"
+)
+table(
+    ["point", "acceleration", "in g"],
+    [
+        [
+            name.replace("G2", "$G_2$").replace("G3", "$G_3$").replace("G4", "$G_4$"),
+            vec(pm.A, "in/s^2"),
+            f"{num(in_g(pm.A), 3)} g",
+        ]
+        for name, pm in points.items()
+    ],
+)
 # the solver's coupler point and Result.point agree
 assert np.isclose(r.point(3, "3 in", "30 deg").si("A"), r.si("A_P"))
 
@@ -132,7 +158,7 @@ assert np.isclose(r.point(3, "3 in", "30 deg").si("A"), r.si("A_P"))
 # instantaneous centre of zero acceleration, the larger.
 
 
-# %% mystnb={"figure": {"caption": "The accelerations of the crank pin, coupler point and centres of gravity at theta2 = 30 deg, drawn at their points."}, "image": {"alt": "Fourbar drawing with acceleration arrows at A, B, the coupler point and the three centres of gravity."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The accelerations of the pins $A$ and $B$, the coupler point $P$ and the centres of gravity at $\\theta_2 = 30^\\circ$, drawn at their points at one scale."}}
 def linkage_points(res, i=None):
     """Pin positions [in] (complex) of a result, at index i of a sweep."""
     pick = (lambda z: z) if i is None else (lambda z: z[i])
@@ -149,45 +175,52 @@ def draw_fourbar(ax, pins, colour="#4d4d4d"):
     ax.scatter([A.real, B.real], [A.imag, B.imag], s=36, c="white", edgecolors="#222222", zorder=5)
 
 
-fig, ax = plt.subplots(figsize=(8.5, 5.5))
-pins = linkage_points(r)
-draw_fourbar(ax, pins)
-scale = 0.008  # in of drawing per in/s^2
-ends = [0j, 7 + 0j]
-here = {"A": r.A_A, "P": r.A_P, "B": r.A_B, **{k: pm.A for k, pm in points.items()}}
-where = {
-    "A": pins["A"],
-    "P": pins["P"],
-    "B": pins["B"],
-    **{k: pm.R.to("in").magnitude for k, pm in points.items()},
-}
-for name, A in here.items():
-    z0 = where[name]
-    ax.plot(z0.real, z0.imag, "o", color="black", ms=4, zorder=6)
-    tip = vector(ax, z0, A.to("in/s^2").magnitude, "resultant", scale=scale)
-    ends += [z0, tip]
-    ax.annotate(name, (z0.real, z0.imag), textcoords="offset points", xytext=(6, 6), fontsize=11)
-ax.set_xlim(min(z.real for z in ends) - 0.5, max(z.real for z in ends) + 0.5)
-ax.set_ylim(min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
-ax.set_aspect("equal")
-ax.set_xlabel("x [in]")
-ax.set_ylabel("y [in]")
-ax.set_title(
-    f"Accelerations at their points, $\\theta_2$ = 30°\n(1 in of drawing = {1 / scale:.0f} in/s$^2$)"
+def at_their_points(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 4.8) if narrow else (7.4, 4.8), layout="constrained")
+    pins = linkage_points(r)
+    draw_fourbar(ax, pins)
+    scale = 0.008  # in of drawing per in/s^2
+    ends = [0j, 7 + 0j]
+    here = {"A": r.A_A, "P": r.A_P, "B": r.A_B, **{k: pm.A for k, pm in points.items()}}
+    where = {
+        "A": pins["A"],
+        "P": pins["P"],
+        "B": pins["B"],
+        **{k: pm.R.to("in").magnitude for k, pm in points.items()},
+    }
+    for name, A in here.items():
+        z0 = where[name]
+        ax.plot(z0.real, z0.imag, "o", color="black", ms=4, zorder=6)
+        tip = vector(ax, z0, A.to("in/s^2").magnitude, "resultant", scale=scale)
+        ends += [z0, tip]
+        label = name.replace("G2", "$G_2$").replace("G3", "$G_3$").replace("G4", "$G_4$")
+        ax.annotate(label, (z0.real, z0.imag), textcoords="offset points", xytext=(6, 6))
+    ax.set_xlim(min(z.real for z in ends) - 0.5, max(z.real for z in ends) + 0.5)
+    ax.set_ylim(min(z.imag for z in ends) - 0.5, max(z.imag for z in ends) + 0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [in]")
+    ax.set_ylabel("y [in]")
+    ax.set_title(f"1 in of arrow = {1 / scale:.0f} in/s$^2$")
+    return fig
+
+
+show(
+    at_their_points,
+    alt="Fourbar drawing with acceleration arrows at A, B, the coupler point and the three "
+    "centres of gravity.",
 )
-plt.show()
 
 # %% [markdown]
 # ### 2. Coupler curves coloured by acceleration
 #
-# Over a whole crank turn (steady 10 rad/s) the coupler point traces its coupler curve. Colouring
-# the curve by $|\mathbf{A}_P|$ shows *where on its path* a point accelerates hardest: usually on
-# the tight bends traversed quickly. Each panel draws the linkage at $\theta_2 = 60°$ with the
-# chosen point (star) tied to A by a dashed line; a point outside the plate is still a point of
-# link 3, as if the plate were larger. One sweep solves the linkage; `Result.point` then gives
-# every other point of the coupler without solving again.
+# Over a whole crank turn (steady 10 rad/s) the coupler point traces its coupler curve.
+# Colouring the curve by $|\mathbf{A}_P|$ shows *where on its path* a point accelerates
+# hardest: usually on the tight bends traversed quickly. Each panel draws the linkage at
+# $\theta_2 = 60°$ with the chosen point (star) tied to A by a dashed line; a point outside the
+# plate is still a point of link 3, as if the plate were larger. One sweep solves the linkage;
+# `Result.point` then gives every other point of the coupler without solving again.
 
-# %% mystnb={"figure": {"caption": "The coupler curve of P and the size of its acceleration over a cycle."}, "image": {"alt": "Coupler curve of point P with the acceleration magnitude against crank angle."}}
+# %%
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", p="3 in", delta3="30 deg")
 assert cycle.valid.all()
@@ -196,105 +229,170 @@ choices = {
     r"$G_3$, the centroid": (f"{abs(g3)} in", f"{np.degrees(np.angle(g3))} deg"),
     r"$p$ = 8 in, $\delta_3$ = -30°": ("8 in", "-30 deg"),
 }
-norm = Normalize(0, 500)
-fig, axes = plt.subplots(1, 3, figsize=(13, 4.6), sharex=True, sharey=True)
-for ax, (label, (pp, dd)) in zip(axes, choices.items()):
-    pm = cycle.point(3, pp, dd)
-    z = pm.R.to("in").magnitude
-    A = np.abs(pm.A.to("in/s^2").magnitude)
-    seg = np.stack(
-        [np.column_stack([z.real, z.imag])[:-1], np.column_stack([z.real, z.imag])[1:]], axis=1
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The coupler curves of three points of the coupler over a cycle at 10 rad/s, coloured by the size of their acceleration; a circle marks each point's largest acceleration, a star the point at $\\theta_2 = 60^\\circ$."}}
+def coupler_curves(narrow):
+    norm = Normalize(0, 500)
+    fig, axes = plt.subplots(
+        3 if narrow else 1,
+        1 if narrow else 3,
+        figsize=(4.4, 10.2) if narrow else (7.8, 3.5),
+        sharex=True,
+        sharey=True,
+        layout="constrained",
     )
-    lc = LineCollection(seg, cmap="viridis", norm=norm, lw=3)
-    lc.set_array(A[:-1])
-    ax.add_collection(lc)
-    k = np.argmax(A)
-    ax.plot(z.real[k], z.imag[k], "o", mfc="none", mec="black", ms=10)
-    ax.annotate(
-        f"max {A[k]:.0f} in/s²\n({in_g(pm.A[k]):.2f} g)",
-        (z.real[k], z.imag[k]),
-        textcoords="offset points",
-        xytext=(8, -24),
-        fontsize=9,
+    for ax, (label, (pp, dd)) in zip(axes, choices.items()):
+        pm = cycle.point(3, pp, dd)
+        z = pm.R.to("in").magnitude
+        A = np.abs(pm.A.to("in/s^2").magnitude)
+        xy_ = np.column_stack([z.real, z.imag])
+        lc = LineCollection(np.stack([xy_[:-1], xy_[1:]], axis=1), cmap="viridis", norm=norm, lw=3)
+        lc.set_array(A[:-1])
+        ax.add_collection(lc)
+        k = np.argmax(A)
+        ax.plot(z.real[k], z.imag[k], "o", mfc="none", mec="black", ms=10)
+        ax.annotate(
+            f"max {A[k]:.0f} in/s²",
+            (z.real[k], z.imag[k]),
+            textcoords="offset points",
+            xytext=(8, -20),
+            fontsize=10,
+        )
+        draw_fourbar(ax, linkage_points(cycle, 60))  # the plate A, B, P at theta2 = 60 deg
+        A60 = cycle.R_A[60].to("in").magnitude
+        ax.plot([A60.real, z[60].real], [A60.imag, z[60].imag], color="#4d4d4d", lw=1, ls="--")
+        ax.plot(z[60].real, z[60].imag, "*", color="black", ms=11, zorder=7)
+        ax.set_title(label)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [in]")
+        ax.set_ylabel("y [in]")
+    fig.colorbar(
+        lc,
+        ax=axes,
+        label=r"$|\mathbf{A}|$ [in/s$^2$]",
+        shrink=0.8,
+        orientation="horizontal" if narrow else "vertical",
     )
-    draw_fourbar(ax, linkage_points(cycle, 60))  # the plate A, B, P at theta2 = 60 deg
-    A60 = cycle.R_A[60].to("in").magnitude
-    ax.plot([A60.real, z[60].real], [A60.imag, z[60].imag], color="#4d4d4d", lw=1, ls="--")
-    ax.plot(z[60].real, z[60].imag, "*", color="black", ms=11, zorder=7)
-    ax.set_title(label, fontsize=11)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x [in]")
-axes[0].set_ylabel("y [in]")
-fig.colorbar(lc, ax=axes, label=r"$|\mathbf{A}|$ [in/s$^2$]", shrink=0.8)
-plt.show()
+    return fig
+
+
+show(
+    coupler_curves,
+    alt="Three coupler curves of points of the coupler, coloured from low to high "
+    "acceleration, with the linkage drawn at one position.",
+)
 
 # %% [markdown]
 # ### 3. Ready for F = m a
 #
-# The forces that make the links move are $m\mathbf{A}_G$, one per link, applied at its centre of
-# gravity (with a torque $I_G\alpha$ about it, which needs the $\alpha$ we already have). Give the
-# links masses: crank 0.2 lb, coupler plate 0.6 lb, rocker 0.8 lb, and run the crank at a steady
-# 300 rpm. pint carries the units, including the US trap that a pound of *mass* at 1 g needs a
-# pound of *force*: it knows $g_c$ and converts lb·in/s² to lbf.
+# The forces that make the links move are $m\mathbf{A}_G$, one per link, applied at its centre
+# of gravity (with a torque $I_G\alpha$ about it, which needs the $\alpha$ we already have).
+# Give the links masses: crank 0.2 lb, coupler plate 0.6 lb, rocker 0.8 lb, and run the crank
+# at a steady 300 rpm. pint carries the units, including the US trap that a pound of *mass* at
+# 1 g needs a pound of *force*: it knows $g_c$ and converts lb·in/s² to lbf.
 
-# %% mystnb={"figure": {"caption": "The force needed to accelerate each link, F = m A of its centre of gravity, over a cycle."}, "image": {"alt": "Line plots of force against crank angle for the crank, coupler and rocker."}}
+# %%
 masses = {"S = G2": Q_(0.2, "lb"), "G3": Q_(0.6, "lb"), "U = G4": Q_(0.8, "lb")}
 fast = fourbar.solve(theta2=theta, omega2="300 rpm", alpha2=0)
 assert fast.valid.all()
-print(f"1 lb at 1 g needs {(Q_(1, 'lb') * Q_(1, 'standard_gravity')).to('lbf'):.4f~P}")
-fig, ax = plt.subplots(figsize=(8.5, 4))
-colour = {"S = G2": COLORS["normal"], "G3": "black", "U = G4": COLORS["tangential"]}
-for name, (link, pp, dd) in cg.items():
-    force = masses[name] * fast.point(link, pp, dd).A  # m A_G, a complex Quantity
-    size = np.abs(force.to("lbf").magnitude)
-    ax.plot(
-        np.degrees(theta.magnitude),
-        size,
-        color=colour[name],
-        label=f"{name}: m = {masses[name]:~P}",
-    )
-    k = np.argmax(size)
-    at = (
-        f"at theta2 = {np.degrees(theta.magnitude[k]):.0f} deg"
-        if np.ptp(size) > 1e-9 * size[k]
-        else "at every angle (s omega2^2, constant)"
-    )
-    print(f"{name:7} largest |m A| = {size[k]:5.2f} lbf = {Q_(size[k], 'lbf').to('N'):5.2f~P} {at}")
-ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
-ax.set_ylabel(r"$|m\,\mathbf{A}_G|$ [lbf]")
-ax.set_xticks(range(0, 361, 60))
-secondary = ax.secondary_yaxis(
-    "right", functions=(lambda f: f * 4.4482216, lambda n: n / 4.4482216)
-)
-secondary.set_ylabel("[N]")
-ax.set_title("Force needed to accelerate each link's mass, 300 rpm")
-ax.legend()
-plt.show()
+force = {name: masses[name] * fast.point(*spec).A for name, spec in cg.items()}  # m A_G
+size = {name: np.abs(f.m_as("lbf")) for name, f in force.items()}
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
-force = {
-    name: np.abs((masses[name] * fast.point(*spec).A).m_as("lbf")) for name, spec in cg.items()
-}
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+rows = []
+for name, s in size.items():
+    k = np.argmax(s)
+    at = (
+        rf"$\theta_2$ = {num(np.degrees(theta.magnitude[k]), decimals=0)}°"
+        if np.ptp(s) > 1e-9 * s[k]
+        else r"every angle ($s\omega_2^2$, constant)"
+    )
+    label = name.replace("G2", "$G_2$").replace("G3", "$G_3$").replace("G4", "$G_4$")
+    rows.append(
+        [
+            label,
+            f"{num(masses[name].m_as('lb'), decimals=1)} lb",
+            f"{num(s[k], 3)} lbf",
+            f"{num(Q_(s[k], 'lbf').m_as('N'), 3)} N",
+            at,
+        ]
+    )
+say(
+    f"One pound of mass at 1 g needs {num((Q_(1, 'lb') * Q_(1, 'standard_gravity')).m_as('lbf'), 4)} "
+    "lbf. The largest force each link's centre of gravity needs:"
+)
+table(["", "mass", r"largest $\lvert m\mathbf{A}_G\rvert$", "", "at"], rows)
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The force needed to accelerate each link, $|m\\mathbf{A}_G|$ of its centre of gravity, over a cycle at 300 rpm."}}
+def forces(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 3.9) if narrow else (7.4, 3.6), layout="constrained")
+    colour = {"S = G2": COLORS["normal"], "G3": "black", "U = G4": COLORS["tangential"]}
+    for name, s in size.items():
+        label = name.replace("G2", "$G_2$").replace("G3", "$G_3$").replace("G4", "$G_4$")
+        ax.plot(
+            np.degrees(theta.magnitude), s, color=colour[name], label=f"{label}, {masses[name]:~P}"
+        )
+    ax.set_xlabel(r"crank angle $\theta_2$ [deg]")
+    ax.set_ylabel(r"$|m\,\mathbf{A}_G|$ [lbf]")
+    ax.set_xticks(range(0, 361, 90 if narrow else 60))
+    secondary = ax.secondary_yaxis(
+        "right", functions=(lambda f: f * 4.4482216, lambda n: n / 4.4482216)
+    )
+    secondary.set_ylabel("[N]")
+    ax.legend()
+    return fig
+
+
+show(
+    forces,
+    alt="Line plots of force against crank angle for the crank, coupler and rocker.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 accel = {name: np.abs(fast.point(*spec).A.m_as("in/s^2")) for name, spec in cg.items()}
-stated(force["S = G2"].max(), "0.5", sig=1), stated(np.ptp(force["S = G2"]), "0")
-stated(force["G3"].max() / force["S = G2"].max(), "10", sig=1)
-stated(force["U = G4"].max() / force["S = G2"].max(), "9", sig=1)
+stated(size["S = G2"].max(), "0.5", sig=1)
+stated(np.ptp(size["S = G2"]), "0")
+stated(size["G3"].max() / size["S = G2"].max(), "10", sig=1)
+stated(size["U = G4"].max() / size["S = G2"].max(), "9", sig=1)
 for name in ("G3", "U = G4"):
-    stated(np.degrees(theta.magnitude[np.argmax(force[name])]), "50", sig=1)
+    stated(np.degrees(theta.magnitude[np.argmax(size[name])]), "50", sig=1)
 assert accel["U = G4"].max() < accel["G3"].max() and masses["U = G4"] > masses["G3"]
+# "where the rocker's angular acceleration alpha4 is largest": within 3 degrees of both peaks
+peak_alpha4 = np.degrees(theta.magnitude[np.argmax(np.abs(fast.alpha4.magnitude))])
+for name in ("G3", "U = G4"):
+    assert abs(np.degrees(theta.magnitude[np.argmax(size[name])]) - peak_alpha4) <= 3
 
 # %% [markdown]
 # At 300 rpm the crank's centre of gravity needs half a pound-force all the time; the coupler
 # and the rocker need nine to ten times as much, both near $\theta_2 \approx 50°$, where the
-# crank pulls the coupler round fastest. The rocker's centre of gravity accelerates less than
-# the coupler's, but it is heavier: force is mass times acceleration, and both matter. These
-# curves are the inputs the dynamic force analysis (a later chapter) starts from.
+# rocker's angular acceleration $\alpha_4$ is at its largest. The rocker's centre of gravity
+# accelerates less than the coupler's, but it is heavier: force is mass times acceleration,
+# and both matter. These curves are the inputs the dynamic force analysis (a later chapter)
+# starts from.
 #
 # **The coupler point in motion**: the linkage through one turn at a steady 10 rad/s, the
-# coupler curve of P dashed, the accelerations of A, B and P at one scale, and a marker on the
-# curves of $\alpha_3$, $\alpha_4$ and of the three sizes.
+# coupler curve of P dashed, and at P the triangle of eq. 7.32a drawn at every position: the
+# acceleration of the pin, $\mathbf{A}_A$ (grey, copied to P), plus the acceleration
+# difference $\mathbf{A}_{PA}$ (grey, from its tip), closed by $\mathbf{A}_P$ (black). The
+# marker runs along $\alpha_3$ and the sizes of the three vectors. Step through the turn and
+# watch $\mathbf{A}_{PA}$, which turns with the coupler, swing $\mathbf{A}_P$ away from
+# $\mathbf{A}_A$.
 
-# %% mystnb={"figure": {"caption": "Animation: the coupler point P of Example 7-1 tracing its coupler curve (dashed) at 10 rad/s, with the accelerations of A, B and P and a marker on the curves."}, "image": {"alt": "Animated fourbar with its coupler curve dashed and acceleration arrows at A, B and P, beside plots with a moving marker."}}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Animation: the coupler point $P$ of Example 7-1 tracing its coupler curve (dashed) at 10 rad/s, with eq. 7.32a drawn at $P$, $\\mathbf{A}_P = \\mathbf{A}_A + \\mathbf{A}_{PA}$, and a marker on $\\alpha_3$ and the three sizes. Play, pause, step or drag the slider."}}
+def triangle_at_P(con):
+    """Eq. 7.32a at P: A_A copied to P, then A_PA from its tip (start [m], or
+    (point [m], offset [m/s^2]) for the tip of the arrow before; vector [m/s^2])."""
+    v = con.values
+    P = con.linkage.points["P"]
+    return [
+        (P, v["A_A"], "known", r"$\mathbf{A}_A$"),
+        ((P, v["A_A"]), v["A_PA"], "known", r"$\mathbf{A}_{PA}$"),
+    ]
+
+
 animate(
     {
         "mechanism": "fourbar",
@@ -308,8 +406,14 @@ animate(
         "omega2": "10 rad/s",
         "alpha2": "0 rad/s^2",
     },
+    curves=("alpha3",),
+    magnitudes=("A_A", "A_PA", "A_P"),
     trace=("P",),
+    extra=triangle_at_P,
     title="Coupler point P",
+    alt="The fourbar turning with its coupler curve dashed; at P the acceleration of A, the "
+    "acceleration difference of P from A and their sum A_P, beside plots of alpha3 and the "
+    "three sizes with a moving marker.",
 )
 
 # %% [markdown]
@@ -319,7 +423,7 @@ animate(
 # live, $p$ moves it away from A). Watch the shape of the coupler curve and where its hottest
 # stretch is.
 
-# %% mystnb={"figure": {"caption": "Coupler points at several places on the coupler: their paths coloured by the size of their acceleration."}, "image": {"alt": "Small multiples of coupler curves coloured from low to high acceleration."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Coupler points at several angles $\\delta_3$ on the coupler ($p$ = 3 in): their paths coloured by the size of their acceleration."}}
 NORM = Normalize(0, 600)
 
 
@@ -327,7 +431,7 @@ def draw(delta3=30, p=3.0):
     res = fourbar.solve(theta2=theta, omega2="10 rad/s", p=f"{p} in", delta3=f"{delta3} deg")
     z = res.R_P.to("in").magnitude
     A = np.abs(res.A_P.to("in/s^2").magnitude)
-    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    fig, ax = plt.subplots(figsize=(4.6, 4.4))
     xy = np.column_stack([z.real, z.imag])
     lc = LineCollection(np.stack([xy[:-1], xy[1:]], axis=1), cmap="viridis", norm=NORM, lw=3)
     lc.set_array(A[:-1])
@@ -343,7 +447,7 @@ def draw(delta3=30, p=3.0):
     ax.set_ylabel("y [in]")
     ax.set_title(
         rf"$p$ = {p:g} in, $\delta_3$ = {delta3}°: largest $|\mathbf{{A}}_P|$ {A.max():.0f} in/s²",
-        fontsize=10,
+        fontsize=11,
     )
     return fig
 
@@ -402,10 +506,13 @@ explore(draw, delta3=(0, 360, 10, 30, "deg"), p=(0.5, 10, 0.5, 3.0, "in"))
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 f4 = Q_(0.6, "lb") * Q_(2, "standard_gravity")
-stated(f4, "1.2", "lbf"), stated(f4, "5.3", "N"), stated(f4, "463", "lb*in/s^2")
-stated(Q_(1, "lbf"), "386", "lb*in/s^2"), stated(Q_(1, "lbf"), "386.09", "lb*in/s^2")
+stated(f4, "1.2", "lbf")
+stated(f4, "5.3", "N")
+stated(f4, "463", "lb*in/s^2")
+stated(Q_(1, "lbf"), "386", "lb*in/s^2")
+stated(Q_(1, "lbf"), "386.09", "lb*in/s^2")
 assert np.isclose(r.point(3, "0 in", "0 deg").si("A"), r.si("A_A"))  # p = 0 is A
 crank_cg = fast.point(2, "1 in", "0 deg")
 assert np.allclose(np.abs(crank_cg.A_t.magnitude), 0, atol=1e-9)  # steady crank
@@ -440,14 +547,18 @@ assert np.allclose(np.abs(crank_cg.A_t.magnitude), 0, atol=1e-9)  # steady crank
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 U = r.point(4, "6 in", "20 deg")
-stated(r.omega4, "-3.461", "rad/s"), stated(r.alpha4, "39.43", "rad/s^2")
-stated(abs(U.A), "247.2", "in/s^2"), stated(np.angle(U.A.magnitude, deg=True), "-104.0")
+stated(r.omega4, "-3.461", "rad/s")
+stated(r.alpha4, "39.43", "rad/s^2")
+stated(abs(U.A), "247.2", "in/s^2")
+stated(np.angle(U.A.magnitude, deg=True), "-104.0")
 A0 = complex(r.A_A.m_as("in/s^2"))
 k = (r.alpha3.magnitude * 1j - r.omega3.magnitude**2) * np.exp(1j * r.theta3.magnitude)
 p_min = -((A0 * np.conj(k)).real) / abs(k) ** 2  # in
-stated(p_min, "-4.12"), stated(abs(r.A_A), "200.2", "in/s^2"), stated(abs(r.A_B), "370.8", "in/s^2")
+stated(p_min, "-4.12")
+stated(abs(r.A_A), "200.2", "in/s^2")
+stated(abs(r.A_B), "370.8", "in/s^2")
 along = np.abs(A0 + np.linspace(0, 6, 61) * k)
 assert np.all(np.diff(along) > 0)  # grows from A to B
 

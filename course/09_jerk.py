@@ -28,12 +28,14 @@
 # - compare the jerks of the slider-crank, the inverted slider-crank and the geared fivebar, and
 #   explain, with a small vibration model, why limiting jerk reduces vibration.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import matplotlib.pyplot as plt
 import numpy as np
 
-from accelab.course.kit import COLORS, explore, polar, stated, use_style
+from accelab.course.kit import COLORS, explore, stated, use_style
+from accelab.course.renditions import panels, show
+from accelab.course.text import num, say, sci, table, vec
 from accelab.exercises.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
 
@@ -48,56 +50,70 @@ use_style()
 #
 # $$ \mathbf{J} = \frac{d\mathbf{A}}{dt} \tag{7.33b} $$
 #
-# (The chapter's $\varphi_k$ is `jerk_k` in the solver; in notebook 6, $\phi$ was the fivebar's
-# phase, a different thing.) Differentiating a rotating vector $L e^{j\theta}$ three times gives
-# $L(-\omega^3 j - 3\omega\alpha + \varphi j)e^{j\theta}$. Doing that to every term of the fourbar's
-# acceleration loop (eq. 7.7) and collecting:
+# (The chapter's $\varphi_k$ is `jerk_k` in the solver; in notebook 6, $\phi$ was the
+# fivebar's phase, a different thing.) Differentiating a rotating vector $L e^{j\theta}$ three
+# times gives $L(-\omega^3 j - 3\omega\alpha + \varphi j)e^{j\theta}$. Doing that to every term
+# of the fourbar's acceleration loop (eq. 7.7) and collecting:
 #
-# $$ \begin{split}
-#    & -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} + a\varphi_2 je^{j\theta_2} \\
-#    & - b\omega_3^3 je^{j\theta_3} - 3b\omega_3\alpha_3 e^{j\theta_3} + b\varphi_3 je^{j\theta_3} \\
-#    & + c\omega_4^3 je^{j\theta_4} + 3c\omega_4\alpha_4 e^{j\theta_4} - c\varphi_4 je^{j\theta_4} = 0
-#    \end{split} \tag{7.34b} $$
+# $$ \begin{aligned}
+#    & -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} \\
+#    & \quad + a\varphi_2 je^{j\theta_2} \\
+#    & - b\omega_3^3 je^{j\theta_3} - 3b\omega_3\alpha_3 e^{j\theta_3} \\
+#    & \quad + b\varphi_3 je^{j\theta_3} \\
+#    & + c\omega_4^3 je^{j\theta_4} + 3c\omega_4\alpha_4 e^{j\theta_4} \\
+#    & \quad - c\varphi_4 je^{j\theta_4} = 0
+#    \end{aligned} \tag{7.34b} $$
 #
-# Everything is known from the position, velocity and acceleration analyses except $\varphi_3$ and
-# $\varphi_4$ (the input's jerk $\varphi_2$ is given; zero at steady speed or constant
-# $\alpha_2$). The real and imaginary parts are two linear equations:
+# Everything is known from the position, velocity and acceleration analyses except
+# $\varphi_3$ and $\varphi_4$ (the input's jerk $\varphi_2$ is given; zero at steady speed or
+# constant $\alpha_2$). The real and imaginary parts are two linear equations:
 #
-# $$ \begin{split}
-#    & a\omega_2^3\sin\theta_2 - 3a\omega_2\alpha_2\cos\theta_2 - a\varphi_2\sin\theta_2 \\
-#    & + b\omega_3^3\sin\theta_3 - 3b\omega_3\alpha_3\cos\theta_3 - b\varphi_3\sin\theta_3 \\
-#    & - c\omega_4^3\sin\theta_4 + 3c\omega_4\alpha_4\cos\theta_4 + c\varphi_4\sin\theta_4 = 0
-#    \end{split} \tag{7.35a} $$
+# $$ \begin{aligned}
+#    & a\omega_2^3\sin\theta_2 - 3a\omega_2\alpha_2\cos\theta_2 \\
+#    & \quad - a\varphi_2\sin\theta_2 \\
+#    & + b\omega_3^3\sin\theta_3 - 3b\omega_3\alpha_3\cos\theta_3 \\
+#    & \quad - b\varphi_3\sin\theta_3 \\
+#    & - c\omega_4^3\sin\theta_4 + 3c\omega_4\alpha_4\cos\theta_4 \\
+#    & \quad + c\varphi_4\sin\theta_4 = 0
+#    \end{aligned} \tag{7.35a} $$
 #
-# $$ \begin{split}
-#    & -a\omega_2^3\cos\theta_2 - 3a\omega_2\alpha_2\sin\theta_2 + a\varphi_2\cos\theta_2 \\
-#    & - b\omega_3^3\cos\theta_3 - 3b\omega_3\alpha_3\sin\theta_3 + b\varphi_3\cos\theta_3 \\
-#    & + c\omega_4^3\cos\theta_4 + 3c\omega_4\alpha_4\sin\theta_4 - c\varphi_4\cos\theta_4 = 0
-#    \end{split} \tag{7.35b} $$
+# $$ \begin{aligned}
+#    & -a\omega_2^3\cos\theta_2 - 3a\omega_2\alpha_2\sin\theta_2 \\
+#    & \quad + a\varphi_2\cos\theta_2 \\
+#    & - b\omega_3^3\cos\theta_3 - 3b\omega_3\alpha_3\sin\theta_3 \\
+#    & \quad + b\varphi_3\cos\theta_3 \\
+#    & + c\omega_4^3\cos\theta_4 + 3c\omega_4\alpha_4\sin\theta_4 \\
+#    & \quad - c\varphi_4\cos\theta_4 = 0
+#    \end{aligned} \tag{7.35b} $$
 #
 # The chapter names the known terms $A \ldots K$ in eq. 7.35a and $L \ldots U$ in eq. 7.35b
 # (eqs. 7.36a and 7.37a), e.g. $A = a\omega_2^3\sin\theta_2$, $H = c\sin\theta_4$,
-# $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$, and eliminates $\varphi_3$:
+# $K = b\sin\theta_3$, $R = b\cos\theta_3$, $U = c\cos\theta_4$ (the scan prints
+# $c\cos\theta_A$, a misread subscript), and eliminates $\varphi_3$:
 #
-# $$ \varphi_3 = \frac{A - B - C + D - E - F + G + H\varphi_4}{K} \tag{7.36b} $$
+# $$ \begin{aligned} K\varphi_3 = {} & A - B - C + D \\
+#    & - E - F + G + H\varphi_4 \end{aligned} \tag{7.36b} $$
 #
-# $$ \varphi_4 = \frac{K(N - L - M - P - Q + S + T) + R(A - B - C + D - E - F + G)}{KU - HR}
-#    \tag{7.39} $$
+# $$ \begin{aligned} & (KU - HR)\,\varphi_4 = \\
+#    & \quad K(N - L - M - P \\
+#    & \qquad - Q + S + T) \\
+#    & \quad + R(A - B - C + D \\
+#    & \qquad - E - F + G) \end{aligned} \tag{7.39} $$
 #
-# (The chapter writes the numerator out as fourteen products, $KN - KL - \ldots + KS + KT$; above
-# they are gathered by $K$ and $R$, and the cell below evaluates the chapter's form.) The
-# denominator $KU - HR = bc\sin(\theta_3 - \theta_4)$ vanishes at the toggle, as the
+# (The chapter writes the numerator out as fourteen products, $KN - KL - \ldots + KS + KT$;
+# above they are gathered by $K$ and $R$, and the cell below evaluates the chapter's form.)
+# The denominator $KU - HR = bc\sin(\theta_3 - \theta_4)$ vanishes at the toggle, as the
 # acceleration's did. The pins' linear jerks follow from the same rotating-vector derivative:
 #
-# $$ \begin{split}
-#    \mathbf{J}_A &= -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2}
-#      + a\varphi_2 je^{j\theta_2} \\
-#    \mathbf{J}_B &= -c\omega_4^3 je^{j\theta_4} - 3c\omega_4\alpha_4 e^{j\theta_4}
-#      + c\varphi_4 je^{j\theta_4}
-#    \end{split} \tag{7.40} $$
+# $$ \begin{aligned}
+#    \mathbf{J}_A = {} & -a\omega_2^3 je^{j\theta_2} - 3a\omega_2\alpha_2 e^{j\theta_2} \\
+#      & + a\varphi_2 je^{j\theta_2} \\
+#    \mathbf{J}_B = {} & -c\omega_4^3 je^{j\theta_4} - 3c\omega_4\alpha_4 e^{j\theta_4} \\
+#      & + c\varphi_4 je^{j\theta_4}
+#    \end{aligned} \tag{7.40} $$
 #
-# (the scanned chapter ends the line of $\mathbf{J}_B$ with a stray "= 0"), and any point from a
-# point of the same link, as for acceleration:
+# (the scanned chapter ends the line of $\mathbf{J}_B$ with a stray "= 0"), and any point from
+# a point of the same link, as for acceleration:
 #
 # $$ \mathbf{J}_P = \mathbf{J}_A + \mathbf{J}_{PA} \tag{7.41} $$
 #
@@ -110,10 +126,11 @@ use_style()
 #
 # ### 1. The fourbar at one position
 #
-# The fourbar of notebooks 3 and 7 ($a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in) at $\theta_2 = 30°$,
-# $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s² with its coupler point P ($p$ = 3 in, $\delta_3$ =
-# 30°): the course's Example 7-1 (the chapter's example prints no numbers; **these are the
-# course's own numbers**), here with a driving jerk $\varphi_2$ = 20 rad/s³ added.
+# The fourbar of notebooks 3 and 7 ($a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in) at
+# $\theta_2 = 30°$, $\omega_2$ = 10 rad/s, $\alpha_2$ = -5 rad/s² with its coupler point P
+# ($p$ = 3 in, $\delta_3$ = 30°): the course's Example 7-1 (the chapter's example prints no
+# numbers; **these are the course's own numbers**), here with a driving jerk
+# $\varphi_2$ = 20 rad/s³ added.
 
 # %%
 fourbar = FourBar(a="2 in", b="6 in", c="9 in", d="7 in")
@@ -125,10 +142,22 @@ r = fourbar.solve(
     p="3 in",
     delta3="30 deg",
 )
-print(f"phi3 = jerk3 = {r.jerk3:.2f~P}, phi4 = jerk4 = {r.jerk4:.2f~P}")
-for name in ("J_A", "J_B", "J_P"):
-    z = getattr(r, name)
-    print(f"{name} = {polar(z, 'in/s^3')} = {polar(z, 'm/s^3')}")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "value"],
+    [
+        [r"$\varphi_3$ (`jerk3`)", f"{num(r.jerk3)} rad/s³"],
+        [r"$\varphi_4$ (`jerk4`)", f"{num(r.jerk4)} rad/s³"],
+    ]
+    + [
+        [
+            f"$\\mathbf{{J}}_{k[-1]}$",
+            f"{vec(getattr(r, k), 'in/s^3')} = {vec(getattr(r, k), 'm/s^3')}",
+        ]
+        for k in ("J_A", "J_B", "J_P")
+    ],
+)
 
 # %% [markdown]
 # The chapter's constants and eqs. 7.36b and 7.39, evaluated by hand and checked against the
@@ -170,17 +199,22 @@ J_B = -c * w4**3 * 1j * e4 - 3 * c * w4 * al4 * e4 + c * phi4 * 1j * e4  # eq. 7
 assert np.isclose(J_B, r.J_B.to("in/s^3").magnitude, rtol=1e-12)
 J_PA = r.point(3, "3 in", "30 deg").J - r.J_A  # eq. 7.41
 assert np.isclose((r.J_A + J_PA - r.J_P).to("in/s^3").magnitude, 0, atol=1e-9)
-print(f"eqs. 7.36b and 7.39: phi3 = {phi3:.4f}, phi4 = {phi4:.4f} rad/s^3, as the solver says")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"Eqs. 7.36b and 7.39 give $\varphi_3$ = {num(phi3, 6)} and $\varphi_4$ = "
+    f"{num(phi4, 6)} rad/s³, as the solver does."
+)
 
 # %% [markdown]
 # ### 2. Checking jerk against a numerical derivative
 #
 # A closed form is only as good as its derivation. An independent check: at a steady
-# $\omega_2$ = 10 rad/s, $\theta_2 = \omega_2 t$, so $\varphi_3 = d\alpha_3/dt = \omega_2\,
-# d\alpha_3/d\theta_2$. We take $\alpha_3$ on a grid of crank angles, differentiate it numerically
-# (central differences) and lay the result over the solver's `jerk3`.
+# $\omega_2$ = 10 rad/s, $\theta_2 = \omega_2 t$, so $\varphi_3 = d\alpha_3/dt =
+# \omega_2\, d\alpha_3/d\theta_2$. We take $\alpha_3$ on a grid of crank angles, differentiate
+# it numerically (central differences) and lay the result over the solver's `jerk3`.
 
-# %% mystnb={"figure": {"caption": "The coupler's angular jerk from the solver and by numerical differentiation of its acceleration (left); they differ by the finite-difference error (right)."}, "image": {"alt": "Left, two overlapping curves of jerk against crank angle; right, their small difference."}}
+# %%
 h = np.radians(0.5)  # grid step of theta2
 grid = np.arange(0, 2 * np.pi + h / 2, h)
 cyc = fourbar.solve(theta2=Q_(grid, "rad"), omega2="10 rad/s", alpha2=0)
@@ -190,42 +224,59 @@ numeric[[0, -1]] = 10.0 * (alpha3[1] - alpha3[-2]) / (2 * h)  # 0 and 360 deg ar
 jerk3 = cyc.jerk3.magnitude
 error = np.abs(numeric - jerk3)
 deg = np.degrees(grid)
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
-ax1.plot(deg, jerk3, color="black", lw=2, label=r"$\varphi_3$, solver (eq. 7.39)")
-ax1.plot(
-    deg[::12],
-    numeric[::12],
-    "o",
-    color=COLORS["tangential"],
-    ms=5,
-    label=r"$\omega_2\,\Delta\alpha_3/\Delta\theta_2$ (central differences)",
-)
-ax1.set_ylabel(r"$\varphi_3$ [rad/s$^3$]")
-ax1.set_title("Jerk of the coupler at 10 rad/s")
-ax1.legend(fontsize=9)
-ax2.semilogy(deg, error / np.abs(jerk3).max(), color=COLORS["normal"])
-ax2.set_ylabel("|difference| / largest |jerk3|")
-ax2.set_title("They differ by the finite-difference error, $O(h^2)$")
-for ax in (ax1, ax2):
-    ax.set_xlabel(r"$\theta_2$ [deg]")
-    ax.set_xticks(range(0, 361, 60))
-plt.show()
-print(
-    f"largest difference: {error.max() / np.abs(jerk3).max():.1e} of the largest jerk "
-    f"(step {np.degrees(h)} deg); halving the step divides it by about 4"
-)
-assert error.max() < 1e-3 * np.abs(jerk3).max()
 coarse = cyc.alpha3.magnitude[::2]  # the same check at step 2h
 numeric2 = 10.0 * (np.roll(coarse, -1) - np.roll(coarse, 1)) / (4 * h)
 numeric2[[0, -1]] = 10.0 * (coarse[1] - coarse[-2]) / (4 * h)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"The largest difference is {sci(error.max() / np.abs(jerk3).max())} of the largest jerk "
+    f"(a step of {num(np.degrees(h), decimals=1)}°); doubling the step multiplies it by "
+    f"{num(np.abs(numeric2 - jerk3[::2]).max() / error.max(), 2)}, as an error of order $h^2$ "
+    "should."
+)
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The coupler's angular jerk from the solver and by numerical differentiation of its acceleration; they differ by the finite-difference error."}}
+def fd_check(narrow):
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.8, 3.6), tall=(4.4, 7.0), layout="constrained")
+    ax1.plot(deg, jerk3, color="black", lw=2, label=r"$\varphi_3$, solver (eq. 7.39)")
+    ax1.plot(
+        deg[::12],
+        numeric[::12],
+        "o",
+        color=COLORS["tangential"],
+        ms=5,
+        label=r"$\omega_2\,\Delta\alpha_3/\Delta\theta_2$",
+    )
+    ax1.set_ylabel(r"$\varphi_3$ [rad/s$^3$]")
+    ax1.set_title("Jerk of the coupler at 10 rad/s")
+    ax1.legend()
+    ax2.semilogy(deg, error / np.abs(jerk3).max(), color=COLORS["normal"])
+    ax2.set_ylabel("difference / largest jerk")
+    ax2.set_title("They differ by $O(h^2)$")
+    for ax in (ax1, ax2):
+        ax.set_xlabel(r"$\theta_2$ [deg]")
+        ax.set_xticks(range(0, 361, 90))
+    return fig
+
+
+show(
+    fd_check,
+    alt="Two overlapping curves of jerk against crank angle, and their small difference on a "
+    "logarithmic scale.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+assert error.max() < 1e-3 * np.abs(jerk3).max()
 stated(np.abs(numeric2 - jerk3[::2]).max() / error.max(), "4", sig=1)
 
 # %% [markdown]
-# The check above is at steady speed, where $\varphi_2 = 0$. The next cell checks one instant of
-# a general motion: the crank at $\theta_2 = 30°$ with $\omega_2$ = 10 rad/s, $\alpha_2$ = -5
-# rad/s² and $\varphi_2$ = 20 rad/s³. A short time $\Delta t$ earlier and later the crank's angle,
-# speed and acceleration follow from a Taylor expansion, so we can solve both instants and take
-# $(\alpha_3(\Delta t) - \alpha_3(-\Delta t))/2\Delta t$.
+# The check above is at steady speed, where $\varphi_2 = 0$. The next cell checks one instant
+# of a general motion: the crank at $\theta_2 = 30°$ with $\omega_2$ = 10 rad/s, $\alpha_2$ =
+# -5 rad/s² and $\varphi_2$ = 20 rad/s³. A short time $\Delta t$ earlier and later the crank's
+# angle, speed and acceleration follow from a Taylor expansion, so we can solve both instants
+# and take $(\alpha_3(\Delta t) - \alpha_3(-\Delta t))/2\Delta t$.
 
 
 # %%
@@ -248,25 +299,37 @@ later, earlier = (
 fd = (later.alpha3 - earlier.alpha3).magnitude / (2 * dt)
 fdJ = (later.A_B - earlier.A_B).to("in/s^2").magnitude / (2 * dt)
 J_B = r.J_B.to("in/s^3").magnitude
-print(
-    f"(alpha3(+dt) - alpha3(-dt)) / 2dt = {fd:.4f} rad/s^3, solver jerk3 = {r.jerk3.magnitude:.4f}"
-)
-print(f"(A_B(+dt) - A_B(-dt)) / 2dt = {fdJ:.2f} in/s^3, solver J_B = {J_B:.2f} in/s^3")
-print(
-    f"relative differences: {abs(fd / r.jerk3.magnitude - 1):.1e} and {abs(fdJ - J_B) / abs(J_B):.1e}"
-)
 assert abs(fd / r.jerk3.magnitude - 1) < 1e-5 and abs(fdJ - J_B) < 1e-5 * abs(J_B)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["", "central difference, $\\Delta t = 10^{-4}$ s", "solver", "relative difference"],
+    [
+        [
+            r"$\varphi_3$ [rad/s³]",
+            num(fd, 8),
+            num(r.jerk3.magnitude, 8),
+            sci(abs(fd / r.jerk3.magnitude - 1)),
+        ],
+        [
+            r"$\mathbf{J}_B$ [in/s³]",
+            f"{num(abs(fdJ), 7)} at {num(np.angle(fdJ, deg=True), decimals=2)}°",
+            f"{num(abs(J_B), 7)} at {num(np.angle(J_B, deg=True), decimals=2)}°",
+            sci(abs(fdJ - J_B) / abs(J_B)),
+        ],
+    ],
+)
 
 # %% [markdown]
 # ### 3. Linear jerk of points, and the other mechanisms
 #
 # Over a cycle at 10 rad/s, the pins' and the coupler point's jerks (eqs. 7.40-7.41), then the
 # other mechanisms of the chapter, each at a steady input speed: the slider-crank's piston
-# ($\dddot d$), the inverted slider-crank's link 4 ($\varphi_4$) and the geared fivebar's coupler
-# ($\varphi_3$). At steady speed every jerk is proportional to $\omega_2^3$: double the speed and
-# the jerk grows eightfold.
+# ($\dddot d$), the inverted slider-crank's link 4 ($\varphi_4$) and the geared fivebar's
+# coupler ($\varphi_3$). At steady speed every jerk is proportional to $\omega_2^3$: double the
+# speed and the jerk grows eightfold.
 
-# %% mystnb={"figure": {"caption": "Linear jerk of points A, B and P of the fourbar, of the slider-crank's piston, and of the inverted slider-crank."}, "image": {"alt": "Three line plots of linear jerk against crank angle."}}
+# %%
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 deg = np.degrees(theta.magnitude)
 cyc = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0, p="3 in", delta3="30 deg")
@@ -277,39 +340,67 @@ isc = InvertedSliderCrank(a="4 in", c="3 in", d="8 in", gamma="90 deg").solve(
 fivebar = GearedFiveBar(
     a="1.5 in", b="4 in", c="4 in", d="1.5 in", f="4 in", lam=-2, phi="30 deg"
 ).solve(theta2=theta, omega2="20 rad/s", alpha2=0)
-fig, axes = plt.subplots(2, 2, figsize=(11, 7))
-ax = axes[0, 0]
-for name, colour in (("J_A", COLORS["normal"]), ("J_B", COLORS["tangential"]), ("J_P", "black")):
-    ax.plot(
-        deg,
-        np.abs(getattr(cyc, name).to("in/s^3").magnitude),
-        color=colour,
-        label=rf"$|\mathbf{{J}}_{name[-1]}|$",
-    )
-ax.set_ylabel(r"[in/s$^3$]")
-ax.set_title("Fourbar at 10 rad/s: linear jerk of A, B, P")
-ax.legend(fontsize=9)
-ax = axes[0, 1]
-ax.plot(deg, engine.d_dddot.to("m/s^3").magnitude / 1e6, color="black")
-ax.set_ylabel(r"$\dddot d$ [10$^6$ m/s$^3$]")
-ax.set_title("Slider-crank piston, 40 mm crank, 3000 rpm")
-ax = axes[1, 0]
-ax.plot(deg, isc.jerk4.magnitude, color="black")
-ax.set_ylabel(r"$\varphi_4$ [rad/s$^3$]")
-ax.set_title("Inverted slider-crank (notebook 5), 10 rad/s")
-ax = axes[1, 1]
-ax.plot(deg, fivebar.jerk3.magnitude / 1000, color="black")
-ax.set_ylabel(r"$\varphi_3$ [10$^3$ rad/s$^3$]")
-ax.set_title(r"Geared fivebar (notebook 6), $\lambda$ = -2, 20 rad/s")
-for ax in axes.flat:
-    ax.set_xlabel(r"$\theta_2$ [deg]")
-    ax.set_xticks(range(0, 361, 60))
-plt.show()
-print(
-    f"piston: largest |d'''| = {np.abs(engine.d_dddot.to('m/s^3').magnitude).max():.3g} m/s^3 "
-    f"at 3000 rpm; at 6000 rpm it would be 8 times that"
-)
 twice = SliderCrank(a="40 mm", b="130 mm").solve(theta2=theta, omega2="6000 rpm", alpha2=0)
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"The piston's largest jerk is {num(np.abs(engine.d_dddot.m_as('m/s^3')).max(), 3)} m/s³ "
+    f"at 3000 rpm, and {num(np.abs(twice.d_dddot.m_as('m/s^3')).max(), 3)} m/s³ at 6000 rpm: "
+    f"{num(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).max(), 3)} "
+    "times as much."
+)
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Jerk over a cycle: the linear jerk of points $A$, $B$ and $P$ of the fourbar, the slider-crank's piston $\\dddot d$, the inverted slider-crank's $\\varphi_4$ and the geared fivebar's $\\varphi_3$."}}
+def four_mechanisms(narrow):
+    fig, axes = plt.subplots(
+        4 if narrow else 2,
+        1 if narrow else 2,
+        figsize=(4.4, 11.0) if narrow else (7.8, 5.8),
+        layout="constrained",
+    )
+    axes = axes.ravel()
+    ax = axes[0]
+    for name, colour in (
+        ("J_A", COLORS["normal"]),
+        ("J_B", COLORS["tangential"]),
+        ("J_P", "black"),
+    ):
+        ax.plot(
+            deg,
+            np.abs(getattr(cyc, name).to("in/s^3").magnitude),
+            color=colour,
+            label=rf"$|\mathbf{{J}}_{name[-1]}|$",
+        )
+    ax.set_ylabel(r"[in/s$^3$]")
+    ax.set_title("Fourbar, 10 rad/s")
+    ax.legend(ncol=3, loc="upper center", columnspacing=0.8, handlelength=1.2)
+    ax.set_ylim(top=ax.get_ylim()[1] * 1.25)
+    ax = axes[1]
+    ax.plot(deg, engine.d_dddot.to("m/s^3").magnitude / 1e6, color="black")
+    ax.set_ylabel(r"$\dddot d$ [10$^6$ m/s$^3$]")
+    ax.set_title("Slider-crank piston, 3000 rpm")
+    ax = axes[2]
+    ax.plot(deg, isc.jerk4.magnitude, color="black")
+    ax.set_ylabel(r"$\varphi_4$ [rad/s$^3$]")
+    ax.set_title("Inverted slider-crank, 10 rad/s")
+    ax = axes[3]
+    ax.plot(deg, fivebar.jerk3.magnitude / 1000, color="black")
+    ax.set_ylabel(r"$\varphi_3$ [10$^3$ rad/s$^3$]")
+    ax.set_title(r"Geared fivebar, $\lambda$ = -2, 20 rad/s")
+    for ax in axes:
+        ax.set_xlabel(r"$\theta_2$ [deg]")
+        ax.set_xticks(range(0, 361, 90))
+    return fig
+
+
+show(
+    four_mechanisms,
+    alt="Four line plots of jerk against crank angle: the fourbar's points, the piston, the "
+    "inverted slider-crank and the geared fivebar.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).max(), "8")
 
 # %% [markdown]
@@ -331,7 +422,7 @@ stated(np.abs(twice.d_dddot.magnitude).max() / np.abs(engine.d_dddot.magnitude).
 # The cell integrates the model numerically (a convolution with its impulse response) and
 # checks the formula.
 
-# %% mystnb={"figure": {"caption": "A spring and mass answering a change of acceleration: the less jerk, the less vibration (mostly)."}, "image": {"alt": "Line plots of the response of a spring-mass system to acceleration ramps of different steepness."}}
+# %%
 wn = 2 * np.pi  # natural period T_n = 1 s
 dt = 1e-3
 t = np.arange(0, 6, dt)
@@ -350,24 +441,41 @@ taus = np.linspace(0, 3, 61)
 simulated = np.array([leftover(tau)[1] for tau in taus])
 formula = np.abs(np.sinc(taus))  # sin(pi tau)/(pi tau), T_n = 1 s
 assert np.allclose(simulated, formula, atol=5e-3)
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
-for tau, colour, label in (
-    (0, COLORS["tangential"], "step: infinite jerk"),
-    (1.5, COLORS["normal"], r"ramp over $\tau$ = 1.5 $T_n$"),
-):
-    x, _ = leftover(tau)
-    ax1.plot(t, -x * wn**2, color=colour, label=label)
-ax1.set_xlabel(r"time [$T_n$]")
-ax1.set_ylabel(r"deflection [$A_0/\omega_n^2$]")
-ax1.set_title("Response of a spring-mass to a change of acceleration")
-ax1.legend(fontsize=9)
-ax2.plot(taus, formula, color="black", label="formula")
-ax2.plot(taus[::3], simulated[::3], "o", color=COLORS["tangential"], ms=4, label="simulated")
-ax2.set_xlabel(r"ramp time $\tau$ [$T_n$]  (jerk = $A_0/\tau$)")
-ax2.set_ylabel(r"leftover vibration [$A_0/\omega_n^2$]")
-ax2.set_title("Less jerk, less vibration (mostly)")
-ax2.legend(fontsize=9)
-plt.show()
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"The simulation and the formula agree to {num(np.abs(simulated - formula).max(), 1)} "
+    r"$A_0/\omega_n^2$ at every ramp time."
+)
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "A spring and mass answering a change of acceleration: its response to a sudden change and to a ramp, and the vibration left over against the ramp time. The less jerk, the less vibration (mostly)."}}
+def vibration(narrow):
+    fig, (ax1, ax2) = panels(2, narrow, wide=(7.8, 3.5), tall=(4.4, 7.0), layout="constrained")
+    for tau, colour, label in (
+        (0, COLORS["tangential"], "step: infinite jerk"),
+        (1.5, COLORS["normal"], r"ramp over $\tau$ = 1.5 $T_n$"),
+    ):
+        x, _ = leftover(tau)
+        ax1.plot(t, -x * wn**2, color=colour, label=label)
+    ax1.set_xlabel(r"time [$T_n$]")
+    ax1.set_ylabel(r"deflection [$A_0/\omega_n^2$]")
+    ax1.set_title("Response to a change of acceleration")
+    ax1.legend(loc="lower right")
+    ax2.plot(taus, formula, color="black", label="formula")
+    ax2.plot(taus[::3], simulated[::3], "o", color=COLORS["tangential"], ms=4, label="simulated")
+    ax2.set_xlabel(r"ramp time $\tau$ [$T_n$] (jerk $A_0/\tau$)")
+    ax2.set_ylabel(r"leftover [$A_0/\omega_n^2$]")
+    ax2.set_title("Less jerk, less vibration (mostly)")
+    ax2.legend()
+    return fig
+
+
+show(
+    vibration,
+    alt="The response of a spring-mass system to a step and to a ramp of acceleration, and the "
+    "leftover vibration against the ramp time, simulated and by the formula.",
+)
 
 # %% [markdown]
 # Spreading the change of acceleration over more than about one natural period (lower jerk) cuts
@@ -383,7 +491,7 @@ plt.show()
 # Jerk is the slope of the angular acceleration curve (times $\omega_2$). Move the crank and watch
 # the tangent: steep stretches of $\alpha_3$ are where the jerk is large.
 
-# %% mystnb={"figure": {"caption": "The angular jerk is the slope of the angular acceleration: alpha3 over a cycle with the tangent at several crank angles."}, "image": {"alt": "Small multiples of the alpha3 curve with a tangent line at one crank angle each."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The angular jerk is the slope of the angular acceleration: $\\alpha_3$ over a cycle with the tangent at several crank angles $\\theta_2$."}}
 steady = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0)
 
 
@@ -392,7 +500,7 @@ def draw(theta2=60):
     al = steady.alpha3.magnitude
     phi3 = steady.jerk3.magnitude[i]
     slope = phi3 / 10.0 * np.pi / 180  # d(alpha3)/d(theta2) per degree
-    fig, ax = plt.subplots(figsize=(6.4, 4))
+    fig, ax = plt.subplots(figsize=(4.6, 3.6))
     ax.plot(deg, al, color="black", lw=2)
     span = np.array([-25, 25])
     ax.plot(theta2 + span, al[i] + slope * span, color=COLORS["tangential"], lw=2.5)
@@ -451,7 +559,7 @@ explore(draw, theta2=(0, 360, 5, 60, "deg"), values=(30, 100, 200, 300))
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 steady = fourbar.solve(theta2="30 deg", omega2="10 rad/s", alpha2=0)
 J_A = steady.J_A.to("in/s^3").magnitude
 assert np.isclose(J_A, -2 * 10**3 * 1j * np.exp(1j * np.radians(30)))  # -a omega2^3 j e^{j theta2}
@@ -497,10 +605,12 @@ stated(
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 r91 = fourbar.solve(theta2="120 deg", omega2="10 rad/s", alpha2=0)
-stated(r91.jerk3, "-103.4", "rad/s^3"), stated(r91.jerk4, "-269.1", "rad/s^3")
-stated(abs(r91.J_B), "2592", "in/s^3"), stated(np.angle(r91.J_B.magnitude, deg=True), "22.0")
+stated(r91.jerk3, "-103.4", "rad/s^3")
+stated(r91.jerk4, "-269.1", "rad/s^3")
+stated(abs(r91.J_B), "2592", "in/s^3")
+stated(np.angle(r91.J_B.magnitude, deg=True), "22.0")
 tdc = SliderCrank(a="40 mm", b="130 mm").solve(theta2="0 deg", omega2="3000 rpm", alpha2=0)
 assert abs(tdc.d_dddot.m_as("m/s^3")) < 1e-6
 stated(np.abs(engine.d_dddot.m_as("m/s^3")).max(), "1.8e6")

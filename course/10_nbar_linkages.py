@@ -31,7 +31,7 @@
 # - recognise what goes wrong with a bad initial guess, at a position the linkage cannot reach,
 #   and near a limit (toggle) position, and read the solver's answer there.
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 # %matplotlib inline
 import copy
 
@@ -39,6 +39,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.kit import COLORS, explore, stated, use_style, vector
+from accelab.course.renditions import panels, show
+from accelab.course.text import num, say, sci, table
 from accelab.solver import Q_, AccelabError, FourBar, VectorLoopLinkage
 from accelab.solver.vectorloops.examples import sixbar_slider, watt2_sixbar
 
@@ -47,9 +49,9 @@ use_style()
 # %% [markdown]
 # ## The idea and its equations
 #
-# Every link, and every line between joints of the ground, is a vector $L_k e^{j\theta_k}$. Walk
-# round any closed chain of links and the vectors add up to zero: a **vector loop**. The fourbar
-# has one loop,
+# Every link, and every line between joints of the ground, is a vector $L_k e^{j\theta_k}$.
+# Walk round any closed chain of links and the vectors add up to zero: a **vector loop**. The
+# fourbar has one loop,
 #
 # $$ \mathbf{R}_2 + \mathbf{R}_3 - \mathbf{R}_4 - \mathbf{R}_1 = 0 , $$
 #
@@ -58,12 +60,12 @@ use_style()
 # links, or lengths of sliders. Each loop adds two equations and must add two unknowns.
 #
 # **Position: Newton-Raphson.** Collect the unknowns in $\mathbf{q}$ and the loops' real and
-# imaginary parts in $\mathbf{F}(\mathbf{q}) = 0$. From a guess $\mathbf{q}_0$, linearise and solve
-# for the correction:
+# imaginary parts in $\mathbf{F}(\mathbf{q}) = 0$. From a guess $\mathbf{q}_0$, linearise and
+# solve for the correction:
 #
-# $$ \mathbf{J}\,\Delta\mathbf{q} = -\mathbf{F}(\mathbf{q}_i), \qquad
-#    \mathbf{q}_{i+1} = \mathbf{q}_i + \Delta\mathbf{q}, \qquad
-#    J_{mn} = \frac{\partial F_m}{\partial q_n} . $$
+# $$ \begin{aligned} \mathbf{J}\,\Delta\mathbf{q} &= -\mathbf{F}(\mathbf{q}_i), \\
+#    \mathbf{q}_{i+1} &= \mathbf{q}_i + \Delta\mathbf{q}, \\
+#    J_{mn} &= \frac{\partial F_m}{\partial q_n} . \end{aligned} $$
 #
 # The Jacobian is easy to write by hand because each vector depends on at most one unknown:
 # $\partial(Le^{j\theta})/\partial\theta = jLe^{j\theta}$ for an unknown angle and
@@ -72,14 +74,18 @@ use_style()
 # $$ \mathbf{J} = \begin{bmatrix} -b\sin\theta_3 & c\sin\theta_4 \\
 #    b\cos\theta_3 & -c\cos\theta_4 \end{bmatrix} . $$
 #
-# Near a solution each step roughly squares the error (quadratic convergence): 1e-2, 1e-4, 1e-8,
-# 1e-16. Far from one, a step can jump anywhere, including to the *other* assembly.
+# Near a solution each step roughly squares the error (quadratic convergence): $10^{-2}$,
+# $10^{-4}$, $10^{-8}$, $10^{-16}$. Far from one, a step can jump anywhere, including to the
+# *other* assembly.
 #
-# **Velocity, acceleration, jerk: no more iteration.** Differentiate $\mathbf{F}(\mathbf{q},
-# \theta_2) = 0$ in time. The unknown rates always appear multiplied by the same Jacobian:
+# **Velocity, acceleration, jerk: no more iteration.** Differentiate
+# $\mathbf{F}(\mathbf{q}, \theta_2) = 0$ in time. The unknown rates always appear multiplied by
+# the same Jacobian:
 #
-# $$ \mathbf{J}\,\dot{\mathbf{q}} = -\frac{\partial\mathbf{F}}{\partial\theta_2}\,\omega_2, \qquad
-#    \mathbf{J}\,\ddot{\mathbf{q}} = -(\text{terms in } \omega, \alpha_2, \dot L \text{ already known}) $$
+# $$ \mathbf{J}\,\dot{\mathbf{q}} = -\frac{\partial\mathbf{F}}{\partial\theta_2}\,\omega_2 $$
+#
+# $$ \mathbf{J}\,\ddot{\mathbf{q}} = -(\text{terms in } \omega, \alpha_2, \dot L
+#    \text{, all known}) $$
 #
 # which is what the chapter's closed forms did by hand for one loop (eq. 7.7 is the fourbar's
 # second line). Where $\mathbf{J}$ is singular (two links in line: a limit or toggle position),
@@ -91,9 +97,10 @@ use_style()
 # ### 1. Newton-Raphson by hand, on the fourbar
 #
 # The fourbar $a$ = 2, $b$ = 6, $c$ = 9, $d$ = 7 in at $\theta_2 = 30°$ (the course's Example
-# 7-1 linkage: the chapter's example prints no numbers, **these are the course's own**), from the guess
-# $\theta_3 = 90°$, $\theta_4 = 130°$. Ten lines do it; the cell prints the size of the loop's
-# residual at each step and checks the result against the closed form of notebook 3.
+# 7-1 linkage: the chapter's example prints no numbers, **these are the course's own**), from
+# the guess $\theta_3 = 90°$, $\theta_4 = 130°$. Ten lines do it; the table gives the size of
+# the loop's residual after each step, and the result is checked against the closed form of
+# notebook 3.
 
 # %%
 a, b, c, d = 2.0, 6.0, 9.0, 7.0  # in
@@ -112,43 +119,53 @@ def jacobian(q):
 
 q = np.radians([90.0, 130.0])
 history = [np.linalg.norm(loop(q))]
-for i in range(6):
+for _ in range(6):
     q = q + np.linalg.solve(jacobian(q), -loop(q))  # one Newton-Raphson step
     history.append(np.linalg.norm(loop(q)))
-for i, res in enumerate(history):
-    print(f"step {i}: |F| = {res:.2e} in")
 closed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(theta2="30 deg", omega2="10 rad/s")
 assert np.allclose(
     np.exp(1j * q), np.exp(1j * np.array([closed.theta3.magnitude, closed.theta4.magnitude]))
 )
-print(
-    f"theta3 = {np.degrees(q[0]) % 360:.6f} deg, theta4 = {np.degrees(q[1]) % 360:.6f} deg "
-    f"(closed form: {closed.theta3.to('deg').magnitude:.6f}, {closed.theta4.to('deg').magnitude:.6f})"
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["step", r"$\lvert\mathbf{F}\rvert$ [in]"],
+    [[str(i), sci(res)] for i, res in enumerate(history)],
+)
+say(
+    rf"Newton-Raphson ends at $\theta_3$ = {num(np.degrees(q[0]) % 360, 9)}° and $\theta_4$ = "
+    f"{num(np.degrees(q[1]) % 360, 9)}°; the closed form gives "
+    f"{num(closed.theta3.m_as('deg'), 9)}° and {num(closed.theta4.m_as('deg'), 9)}°."
 )
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 assert history[4] < 1e-12 < history[3] and history[0] > 0.1  # round-off after four steps
 assert all(history[k + 1] < 10 * history[k] ** 2 for k in range(3))  # each about squaring
 
 # %% [markdown]
-# The residual falls from inches to round-off in four steps, each about squaring the last: that
-# is quadratic convergence. Then the same Jacobian gives the velocities in one linear solve,
-# $\mathbf{J}\dot{\mathbf{q}} = -ja\omega_2e^{j\theta_2}$ (as real and imaginary parts):
+# The residual falls from inches to round-off in four steps, each about squaring the last:
+# that is quadratic convergence. Then the same Jacobian gives the velocities in one linear
+# solve, $\mathbf{J}\dot{\mathbf{q}} = -ja\omega_2e^{j\theta_2}$ (as real and imaginary parts):
 
 # %%
 omega2 = 10.0
 rhs = -1j * a * omega2 * np.exp(1j * theta2)
 omega34 = np.linalg.solve(jacobian(q), [rhs.real, rhs.imag])
 assert np.allclose(omega34, [closed.omega3.magnitude, closed.omega4.magnitude], rtol=1e-12)
-print(f"omega3 = {omega34[0]:.6f} rad/s, omega4 = {omega34[1]:.6f} rad/s, as the closed form")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    rf"$\omega_3$ = {num(omega34[0], 7)} rad/s and $\omega_4$ = {num(omega34[1], 7)} rad/s, as "
+    "the closed form gives."
+)
 
 # %% [markdown]
-# **Which solution does Newton find?** The fourbar has two assemblies at this crank angle, open
-# and crossed. The map runs plain Newton-Raphson (the ten lines above, vectorised) from 40 000
-# different guesses and colours each guess by where it ends. The basins are large and mostly
-# sensible, but their boundaries are ragged: a guess near a boundary can land anywhere.
+# **Which solution does Newton find?** The fourbar has two assemblies at this crank angle,
+# open and crossed. The map runs plain Newton-Raphson (the ten lines above, vectorised) from
+# 40 000 different guesses and colours each guess by where it ends. The basins are large and
+# mostly sensible, but their boundaries are ragged: a guess near a boundary can land anywhere.
 
-# %% mystnb={"figure": {"caption": "Where plain Newton-Raphson ends from each starting guess: the open circuit, the crossed circuit, or no solution."}, "image": {"alt": "Map of starting guesses for the two unknown angles, coloured by the assembly Newton-Raphson converges to."}}
+# %%
 crossed = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
     theta2="30 deg", omega2="10 rad/s", circuit="crossed"
 )
@@ -157,7 +174,7 @@ g3, g4 = np.meshgrid(
 )
 t3, t4 = g3.copy(), g4.copy()
 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-    for i in range(30):  # Newton on all guesses at once
+    for _ in range(30):  # Newton on all guesses at once
         z = a * np.exp(1j * theta2) + b * np.exp(1j * t3) - c * np.exp(1j * t4) - d
         j11, j12, j21, j22 = -b * np.sin(t3), c * np.sin(t4), b * np.cos(t3), -c * np.cos(t4)
         det = j11 * j22 - j12 * j21
@@ -169,56 +186,73 @@ ended = np.full(g3.shape, 2)  # 2: did not converge
 for k, sol in enumerate((closed, crossed)):
     near = np.abs(np.exp(1j * t3) - np.exp(1j * sol.theta3.magnitude)) < 1e-6
     ended[(res < 1e-9) & near] = k
-fig, ax = plt.subplots(figsize=(6.2, 5))
-cmap = plt.matplotlib.colors.ListedColormap([COLORS["normal"], COLORS["tangential"], "#dddddd"])
-ax.pcolormesh(np.degrees(g3), np.degrees(g4), ended, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto")
-for k, (sol, name) in enumerate(((closed, "open"), (crossed, "crossed"))):
-    ax.plot(
-        *np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
-        "o",
-        mec="black",
-        mfc="white",
-        ms=9,
-    )
-    ax.annotate(
-        name,
-        np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
-        textcoords="offset points",
-        xytext=(8, 6),
-        fontsize=11,
-        fontweight="bold",
-    )
-ax.plot(90, 130, "k+", ms=12, mew=2)
-ax.set_xlabel(r"guess for $\theta_3$ [deg]")
-ax.set_ylabel(r"guess for $\theta_4$ [deg]")
-ax.set_title("Where plain Newton-Raphson ends:\nopen (blue), crossed (vermillion), nowhere (grey)")
-plt.show()
-print(
-    f"open: {np.mean(ended == 0):.0%} of the guesses, crossed: {np.mean(ended == 1):.0%}, "
-    f"neither after 30 steps: {np.mean(ended == 2):.1%}"
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"Of the {g3.size} guesses, {num(100 * np.mean(ended == 0), 2)} % end on the open circuit, "
+    f"{num(100 * np.mean(ended == 1), 2)} % on the crossed one, and "
+    f"{num(100 * np.mean(ended == 2), 2)} % nowhere after 30 steps."
 )
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Where plain Newton-Raphson ends from each starting guess of $\\theta_3$ and $\\theta_4$: the open circuit (blue), the crossed circuit (vermillion), or nowhere (grey); the cross is the guess of the table above."}}
+def basins(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 4.2) if narrow else (5.6, 5.0), layout="constrained")
+    cmap = plt.matplotlib.colors.ListedColormap([COLORS["normal"], COLORS["tangential"], "#dddddd"])
+    ax.pcolormesh(
+        np.degrees(g3), np.degrees(g4), ended, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto"
+    )
+    for sol, name in ((closed, "open"), (crossed, "crossed")):
+        at = np.degrees(
+            np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))
+        )
+        ax.plot(*at, "o", mec="black", mfc="white", ms=9)
+        ax.annotate(
+            name, at, textcoords="offset points", xytext=(8, 6), fontsize=11, fontweight="bold"
+        )
+    ax.plot(90, 130, "k+", ms=12, mew=2)
+    ax.set_xlabel(r"guess for $\theta_3$ [deg]")
+    ax.set_ylabel(r"guess for $\theta_4$ [deg]")
+    ax.set_xticks(range(-180, 181, 90))
+    ax.set_yticks(range(-180, 181, 90))
+    return fig
+
+
+show(
+    basins,
+    alt="Map of starting guesses for the two unknown angles, coloured by the assembly "
+    "Newton-Raphson converges to.",
+)
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 assert g3.size == 40_000
 stated(np.mean(ended == 2), "0.3", sig=1)
 
 # %% [markdown]
-# Near each solution lies a smooth basin; further away the basins interleave in thin,
-# ragged bands, and a third of the square (grey) never converges: plain Newton-Raphson falls into
-# a cycle, bouncing between two wrong configurations for ever. The next cell shows one such cycle,
-# then what the solver does from the same guess. Its Newton-Raphson limits the size of each step
-# (so that it creeps instead of leaping) and reports a guess that sits exactly on a singular
-# configuration instead of dividing by zero.
+# Near each solution lies a smooth basin; further away the basins interleave in thin, ragged
+# bands, and a third of the square (grey) never converges: plain Newton-Raphson falls into a
+# cycle, bouncing between two wrong configurations for ever. The next cell shows one such
+# cycle, then what the solver does from the same guess. Its Newton-Raphson limits the size of
+# each step (so that it creeps instead of leaping) and reports a guess that sits exactly on a
+# singular configuration instead of dividing by zero.
 
 # %%
 q = np.radians([-73.4, -14.9])
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+rows = []
 for i in range(4):
     step = np.linalg.solve(jacobian(q), -loop(q))
-    print(
-        f"plain Newton step {i}: theta3, theta4 = {np.degrees(q[0]):7.2f}, {np.degrees(q[1]):7.2f} deg, "
-        f"|F| = {np.linalg.norm(loop(q)):.3f} in"
+    rows.append(
+        [
+            str(i),
+            f"{num(np.degrees(q[0]), 4)}°",
+            f"{num(np.degrees(q[1]), 4)}°",
+            num(np.linalg.norm(loop(q)), 3),
+        ]
     )
     q = q + step
+table(["plain Newton step", r"$\theta_3$", r"$\theta_4$", r"$\lvert\mathbf{F}\rvert$ [in]"], rows)
 
 
 def fourbar_loops(guess3, guess4):
@@ -234,14 +268,15 @@ def fourbar_loops(guess3, guess4):
 
 
 s = fourbar_loops("-73.4 deg", "-14.9 deg").solve(theta2="30 deg", omega2="10 rad/s")
-print(
-    f"solver from the same guess: theta3 = {s.vectors['R3'].angle.to('deg'):.4f~P}, "
-    f"theta4 = {s.vectors['R4'].angle.to('deg'):.4f~P} after {s.iterations} (damped) iterations"
+say(
+    rf"From the same guess the solver reaches $\theta_3$ = {num(s.vectors['R3'].angle.m_as('deg'), 8)}° "
+    rf"and $\theta_4$ = {num(s.vectors['R4'].angle.m_as('deg'), 8)}° after {s.iterations} "
+    "(damped) iterations."
 )
 try:
     fourbar_loops("180 deg", "180 deg").solve(theta2="30 deg", omega2="10 rad/s")
 except AccelabError as err:
-    print(f"solver from theta3 = theta4 = 180 deg: {type(err).__name__}: {err}")
+    say(rf"From $\theta_3 = \theta_4 = 180^\circ$ it raises `{type(err).__name__}`: {err}")
 
 # %% [markdown]
 # Even so, no method can read your mind: **the guesses choose the assembly**. Give them from a
@@ -249,31 +284,60 @@ except AccelabError as err:
 #
 # ### 2. A sixbar driving a slider
 #
-# A crank-rocker fourbar (the one above) has its rocker extended past $O_4$ to C; a rod CD pushes
-# a slider D along a line 3 in below $O_4$. Two loops:
+# A crank-rocker fourbar (the one above) has its rocker extended past $O_4$ to C; a rod CD
+# pushes a slider D along a line 3 in below $O_4$. Two loops:
 #
-# $$ \mathbf{R}_2 + \mathbf{R}_3 - \mathbf{R}_4 - \mathbf{R}_1 = 0, \qquad
-#    \mathbf{R}_{4C} + \mathbf{R}_5 - \mathbf{H} - \mathbf{S} = 0 $$
+# $$ \mathbf{R}_2 + \mathbf{R}_3 - \mathbf{R}_4 - \mathbf{R}_1 = 0 $$
+#
+# $$ \mathbf{R}_{4C} + \mathbf{R}_5 - \mathbf{H} - \mathbf{S} = 0 $$
 #
 # with four unknowns: $\theta_3$, $\theta_4$ (which also turns $\mathbf{R}_{4C}$, rigidly
-# attached at 180°), $\theta_5$ and the slider's length $S$. The description is the one shipped
-# in `accelab.solver.vectorloops.examples`:
+# attached at 180°), $\theta_5$ and the slider's length $S$. The description is the one
+# shipped in `accelab.solver.vectorloops.examples`:
 
 # %%
 slider_six = sixbar_slider()
-for name, spec in slider_six["vectors"].items():
-    print(f"{name:4} {spec}")
-print("loops: ", slider_six["loops"])
-print("points:", slider_six["points"])
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+table(
+    ["vector", "description"],
+    [
+        [
+            f"`{name}`",
+            ", ".join(
+                f"{k}: follows {v['follow']}, offset {v['offset']}"
+                if isinstance(v, dict)
+                else f"{k}: {v}"
+                for k, v in spec.items()
+            ),
+        ]
+        for name, spec in slider_six["vectors"].items()
+    ],
+)
+say(
+    "Loops: "
+    + "; ".join(f"`{x}`" for x in slider_six["loops"])
+    + ". Points: "
+    + "; ".join(f"{k} = `{v}`" for k, v in slider_six["points"].items())
+    + "."
+)
 linkage = VectorLoopLinkage(**slider_six)
 r = linkage.solve(theta2="57 deg", omega2="12 rad/s", alpha2="-30 rad/s^2")
 S = r.vectors["S"]
-print(f"\nNewton-Raphson: {r.iterations} iterations from the guesses")
-print(
-    f"theta5 = {r.vectors['R5'].angle.to('deg'):.3f~P}; slider S = {S.length.to('in'):.4f~P}, "
-    f"S' = {S.length_dot.to('in/s'):.3f~P}, S'' = {S.length_ddot.to('in/s^2'):.2f~P}"
+A_D = r.points["D"].A.to("in/s^2").magnitude
+table(
+    ["at $\\theta_2 = 57^\\circ$, 12 rad/s, −30 rad/s²", "value"],
+    [
+        ["Newton-Raphson iterations from the guesses", str(r.iterations)],
+        [r"$\theta_5$", f"{num(r.vectors['R5'].angle.m_as('deg'))}°"],
+        [
+            r"slider $S$, $\dot S$",
+            f"{num(S.length.m_as('in'))} in, {num(S.length_dot.m_as('in/s'))} in/s",
+        ],
+        [r"$\ddot S$", f"{num(S.length_ddot.m_as('in/s^2'))} in/s²"],
+        [r"$\mathbf{A}_D$", f"({num(A_D.real)}, {num(A_D.imag)}) in/s²"],
+    ],
 )
-print(f"A_D = {r.points['D'].A.to('in/s^2'):.2f~P}")
 # the first loop is the fourbar: it must agree with the closed form
 fb = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
     theta2="57 deg", omega2="12 rad/s", alpha2="-30 rad/s^2"
@@ -285,7 +349,7 @@ assert np.isclose(r.vectors["R4"].alpha.magnitude, fb.alpha4.magnitude, rtol=1e-
 # signs say which way round each arrow is walked). The second loop starts at $O_4$.
 
 
-# %% mystnb={"figure": {"caption": "The sixbar with a slider at theta2 = 57 deg, drawn as its two vector loops."}, "image": {"alt": "Drawing of a sixbar linkage with the vectors of loop 1 in blue and loop 2 in vermillion."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The sixbar with a slider at $\\theta_2 = 57^\\circ$, drawn as its two vector loops: loop 1 in blue, loop 2 in vermillion."}}
 def draw_loops(ax, description, result, starts, i=None, show_names=True):
     """Draw each loop's vectors tip to tail from its start point [in]; i picks a sweep position.
     Returns the complex vectors drawn [in]."""
@@ -334,56 +398,81 @@ def draw_loops(ax, description, result, starts, i=None, show_names=True):
     return z
 
 
-fig, ax = plt.subplots(figsize=(9, 4.6))
-draw_loops(ax, slider_six, r, starts=[0j, 7 + 0j])
-ax.plot([0, 7], [0, 0], "^", color="#222222", ms=10)
-ax.axhline(-3, color="#888888", lw=1, ls="-.")
-ax.text(0, -3.4, "slide line", color="#666666", fontsize=9)
-D = r.points["D"].R.to("in").magnitude
-ax.plot(D.real, D.imag, "s", ms=12, mfc="#dddddd", mec="#333333", zorder=0)
-ax.set_aspect("equal")
-ax.set_xlabel("x [in]")
-ax.set_ylabel("y [in]")
-ax.set_title(r"Sixbar with slider at $\theta_2$ = 57°: loop 1 (blue), loop 2 (vermillion)")
-plt.show()
+def sixbar_loops(narrow):
+    fig, ax = plt.subplots(figsize=(4.4, 3.4) if narrow else (7.4, 4.2), layout="constrained")
+    draw_loops(ax, slider_six, r, starts=[0j, 7 + 0j])
+    ax.plot([0, 7], [0, 0], "^", color="#222222", ms=10)
+    ax.axhline(-3, color="#888888", lw=1, ls="-.")
+    ax.text(0, -3.6, "slide line", color="#666666", fontsize=10)
+    D = r.points["D"].R.to("in").magnitude
+    ax.plot(D.real, D.imag, "s", ms=12, mfc="#dddddd", mec="#333333", zorder=0)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [in]")
+    ax.set_ylabel("y [in]")
+    return fig
+
+
+show(
+    sixbar_loops,
+    alt="Drawing of a sixbar linkage with the vectors of loop 1 in blue and loop 2 in vermillion.",
+)
 
 # %% [markdown]
 # **A whole cycle on one assembly.** Passing an array of crank angles makes the solver sweep:
 # each position starts from the previous solution moved on by the velocity (a predictor), so
-# Newton-Raphson needs only a step or two, and it refuses to jump to another assembly. The same
-# call gives the slider's motion, the iterations each position took, and a condition number of
-# the Jacobian (a scaled ratio of its smallest to largest singular value: 0 means singular, larger
-# is better).
+# Newton-Raphson needs only a step or two, and it refuses to jump to another assembly. The
+# same call gives the slider's motion, the iterations each position took, and `condition`, a
+# measure of how far the Jacobian is from singular: twice its smallest singular value divided
+# by its largest, once each column is scaled to unit length. That ratio is the *reciprocal* of
+# the Jacobian's condition number, so the measure is 0 at a singular position and 2 at best
+# (columns at right angles); a large condition number is a small measure.
 
-# %% mystnb={"figure": {"caption": "The sixbar over a cycle: slider position, slider acceleration at 12 rad/s, and Newton-Raphson iterations per position."}, "image": {"alt": "Three line plots against crank angle."}}
+# %%
 theta = Q_(np.linspace(0, 2 * np.pi, 361), "rad")
 deg = np.degrees(theta.magnitude)
 cycle = linkage.solve(theta2=theta, omega2="12 rad/s", alpha2=0)
 assert cycle.valid.all()
 S = cycle.vectors["S"]
-fig, axes = plt.subplots(2, 2, figsize=(11, 6.5), sharex=True)
-axes[0, 0].plot(deg, S.length.to("in").magnitude, color="black")
-axes[0, 0].set_ylabel("S [in]")
-axes[0, 0].set_title("Slider position")
-axes[0, 1].plot(deg, S.length_ddot.to("in/s^2").magnitude, color="black")
-axes[0, 1].set_ylabel(r"$\ddot S$ [in/s$^2$]")
-axes[0, 1].set_title(r"Slider acceleration at $\omega_2$ = 12 rad/s")
-axes[1, 0].step(deg, cycle.iterations, where="mid", color=COLORS["normal"])
-axes[1, 0].set_ylabel("iterations")
-axes[1, 0].set_title("Newton-Raphson iterations per position")
-axes[1, 1].plot(deg, cycle.condition, color=COLORS["tangential"])
-axes[1, 1].set_ylim(0, 1.1 * np.nanmax(cycle.condition))
-axes[1, 1].set_ylabel("condition (0: singular)")
-axes[1, 1].set_title("How far from a singular position")
-for ax in axes[1]:
-    ax.set_xlabel(r"$\theta_2$ [deg]")
-    ax.set_xticks(range(0, 361, 60))
-plt.show()
 its = np.asarray(cycle.iterations)
-print(
-    f"{its.sum()} iterations for {its.size} positions (mean {its.mean():.2f}, most {its.max()}); "
-    f"S from {S.length.to('in').magnitude.min():.3f} to {S.length.to('in').magnitude.max():.3f} in"
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"{its.sum()} iterations for {its.size} positions (mean {num(its.mean(), 3)}, at most "
+    f"{its.max()}); $S$ runs from {num(S.length.m_as('in').min(), 4)} to "
+    f"{num(S.length.m_as('in').max(), 4)} in."
 )
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The sixbar over a cycle at 12 rad/s: slider position and acceleration, Newton-Raphson iterations per position, and the Jacobian's condition measure (0 at a singular position)."}}
+def sixbar_cycle(narrow):
+    fig, axes = plt.subplots(
+        4 if narrow else 2,
+        1 if narrow else 2,
+        figsize=(4.4, 10.0) if narrow else (7.8, 5.6),
+        sharex=True,
+        layout="constrained",
+    )
+    axes = axes.ravel()
+    axes[0].plot(deg, S.length.to("in").magnitude, color="black")
+    axes[0].set_ylabel("$S$ [in]")
+    axes[0].set_title("Slider position")
+    axes[1].plot(deg, S.length_ddot.to("in/s^2").magnitude, color="black")
+    axes[1].set_ylabel(r"$\ddot S$ [in/s$^2$]")
+    axes[1].set_title("Slider acceleration")
+    axes[2].step(deg, cycle.iterations, where="mid", color=COLORS["normal"])
+    axes[2].set_ylabel("iterations")
+    axes[2].set_title("Newton-Raphson iterations per position")
+    axes[3].plot(deg, cycle.condition, color=COLORS["tangential"])
+    axes[3].set_ylim(0, 1.1 * np.nanmax(cycle.condition))
+    axes[3].set_ylabel("condition measure")
+    axes[3].set_title("How far from a singular position (0)")
+    for ax in axes[-2:] if not narrow else axes[-1:]:
+        ax.set_xlabel(r"$\theta_2$ [deg]")
+    axes[-1].set_xticks(range(0, 361, 90))
+    return fig
+
+
+show(sixbar_cycle, alt="Four line plots against crank angle.")
 
 # %% [markdown]
 # ### 3. A Watt II sixbar
@@ -392,41 +481,54 @@ print(
 # second fourbar $O_4$-C-D-$O_6$. Both loops close on rotating links, so all four unknowns are
 # angles.
 
-# %% mystnb={"figure": {"caption": "The Watt II sixbar at theta2 = 57 deg, and the angular accelerations of its two rockers over a cycle."}, "image": {"alt": "Left, the Watt II sixbar drawing; right, line plots of two angular accelerations against crank angle."}}
+# %%
 watt = watt2_sixbar()
-print("loops:", watt["loops"])
 w_linkage = VectorLoopLinkage(**watt)
 w = w_linkage.solve(theta2=theta, omega2="12 rad/s", alpha2=0)
 assert w.valid.all()
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.4), gridspec_kw={"width_ratios": [1.1, 1]})
-draw_loops(ax1, watt, w, starts=[0j, 7 + 0j], i=57)
-O6 = 7 + 9 * np.exp(1j * np.radians(10))
-ax1.plot([0, 7, O6.real], [0, 0, O6.imag], "^", color="#222222", ms=10)
-ax1.set_aspect("equal")
-ax1.set_xlabel("x [in]")
-ax1.set_ylabel("y [in]")
-ax1.set_title(r"Watt II at $\theta_2$ = 57°")
-for name, colour in (("R4", COLORS["normal"]), ("R6", COLORS["tangential"])):
-    ax2.plot(
-        deg,
-        w.vectors[name].alpha.magnitude,
-        color=colour,
-        label=rf"$\alpha$ of {name} (link {name[1]})",
+say("Its loops: " + "; ".join(f"`{x}`" for x in watt["loops"]) + ".")
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The Watt II sixbar at $\\theta_2 = 57^\\circ$ drawn as its two vector loops, and the angular accelerations of its two rockers over a cycle at 12 rad/s."}}
+def watt_ii(narrow):
+    fig, (ax1, ax2) = panels(
+        2, narrow, wide=(7.8, 3.8), tall=(4.4, 7.0), width_ratios=[1.1, 1], layout="constrained"
     )
-ax2.set_xlabel(r"$\theta_2$ [deg]")
-ax2.set_ylabel(r"$\alpha$ [rad/s$^2$]")
-ax2.set_xticks(range(0, 361, 60))
-ax2.set_title("Angular accelerations of the two rockers, 12 rad/s")
-ax2.legend()
-plt.show()
+    draw_loops(ax1, watt, w, starts=[0j, 7 + 0j], i=57)
+    O6 = 7 + 9 * np.exp(1j * np.radians(10))
+    ax1.plot([0, 7, O6.real], [0, 0, O6.imag], "^", color="#222222", ms=10)
+    ax1.set_aspect("equal")
+    ax1.set_xlabel("x [in]")
+    ax1.set_ylabel("y [in]")
+    ax1.set_title(r"Watt II at $\theta_2$ = 57°")
+    for name, colour in (("R4", COLORS["normal"]), ("R6", COLORS["tangential"])):
+        ax2.plot(
+            deg,
+            w.vectors[name].alpha.magnitude,
+            color=colour,
+            label=rf"$\alpha$ of {name} (link {name[1]})",
+        )
+    ax2.set_xlabel(r"$\theta_2$ [deg]")
+    ax2.set_ylabel(r"$\alpha$ [rad/s$^2$]")
+    ax2.set_xticks(range(0, 361, 90))
+    ax2.set_title("The two rockers' angular accelerations")
+    ax2.legend()
+    return fig
+
+
+show(
+    watt_ii,
+    alt="The Watt II sixbar drawing, and line plots of two angular accelerations against "
+    "crank angle.",
+)
 
 # %% [markdown]
 # ### 4. When things go wrong
 #
 # **A bad guess.** Guess the fourbar's angles on the wrong side and Newton-Raphson converges,
 # correctly, to the crossed assembly: a legitimate solution of the loops, but not the machine
-# you built. Guess the rod pointing left and the slider closes on the other side of C. Nothing
-# is "wrong" numerically, which is why the result must be looked at.
+# you built. Guess the rod pointing left and the slider closes on the other side of C.
+# Nothing is "wrong" numerically, which is why the result must be looked at.
 
 
 # %%
@@ -437,29 +539,34 @@ def with_guesses(description, **guesses):
     return new
 
 
+rows = []
 for label, desc in (
     ("as designed", slider_six),
     ("fourbar guessed crossed", with_guesses(slider_six, R3="-60 deg", R4="-120 deg")),
     ("rod guessed pointing left", with_guesses(slider_six, R5="170 deg")),
 ):
     s = VectorLoopLinkage(**desc).solve(theta2="57 deg", omega2="12 rad/s")
-    print(
-        f"{label:26} theta3 = {s.vectors['R3'].angle.to('deg').magnitude % 360:7.2f} deg, "
-        f"theta5 = {s.vectors['R5'].angle.to('deg').magnitude % 360:7.2f} deg, "
-        f"S = {s.vectors['S'].length.to('in').magnitude:7.3f} in"
+    rows.append(
+        [
+            label,
+            f"{num(s.vectors['R3'].angle.m_as('deg') % 360)}°",
+            f"{num(s.vectors['R5'].angle.m_as('deg') % 360)}°",
+            f"{num(s.vectors['S'].length.m_as('in'))} in",
+        ]
     )
+table(["guesses", r"$\theta_3$", r"$\theta_5$", "$S$"], rows)
 
 # %% [markdown]
-# **A position the linkage cannot reach, and the limit before it.** Move the slide line up, to
-# 1 in *above* $O_4$, and shorten the rod to 4 in. Now C, swinging between 1.7 and 3.4 in below
-# the ground line, is sometimes more than 4 in from the slide: the rod cannot reach, and the
-# linkage cannot run a full cycle. Geometry alone says where: the rod reaches while
-# $|y_{slide} - y_C| \le 4$ in, and C's path does not depend on the second loop. The sweep marks
-# positions it cannot close as invalid instead of inventing numbers; the condition number falls
-# toward zero as the rod comes perpendicular to the slide at the edge of the reachable range, and
-# the slider's acceleration there grows without bound.
+# **A position the linkage cannot reach, and the limit before it.** Move the slide line up,
+# to 1 in *above* $O_4$, and shorten the rod to 4 in. Now C, swinging between 1.7 and 3.4 in
+# below the ground line, is sometimes more than 4 in from the slide: the rod cannot reach, and
+# the linkage cannot run a full cycle. Geometry alone says where: the rod reaches while
+# $|y_{slide} - y_C| \le 4$ in, and C's path does not depend on the second loop. The sweep
+# marks positions it cannot close as invalid instead of inventing numbers; the condition
+# measure falls toward zero as the rod comes perpendicular to the slide at the edge of the
+# reachable range, and the slider's acceleration there grows without bound.
 
-# %% mystnb={"figure": {"caption": "Near a limit position: the condition of the Jacobian falls to zero and the slider's acceleration grows without bound."}, "image": {"alt": "Two line plots against crank angle approaching a limit position."}}
+# %%
 short = copy.deepcopy(slider_six)
 short["vectors"]["H"] = {"length": "1 in", "angle": "90 deg"}
 short["vectors"]["R5"] = {"length": "4 in", "angle": "unknown", "guess": "50 deg"}
@@ -471,69 +578,88 @@ sw = reach.solve(theta2=fine, omega2="12 rad/s", alpha2=0)
 ok = sw.valid
 C_y = linkage.solve(theta2=fine, omega2="12 rad/s").points["C"].R.to("in").magnitude.imag
 can = np.abs(1.0 - C_y) <= 4.0  # the geometric check
-stated(-C_y.max(), "1.7"), stated(-C_y.min(), "3.4")  # C below the ground line
 limits = fdeg[np.flatnonzero(np.diff(can.astype(int)))]
-print(f"geometry: the rod reaches the slide except between {limits[0]:.1f} and {limits[1]:.1f} deg")
-print(
-    f"sweep:    valid at {ok.sum()} of {ok.size} positions, status names {sorted(set(sw.status))}"
-)
 missed = int(np.sum(can & ~ok))
-print(
-    f"          positions the sweep does not return although geometry allows them: {missed}"
-    + (" (it picks the linkage up again where geometry allows)" if missed == 0 else "")
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
+say(
+    f"Geometry: the rod reaches the slide except between {num(limits[0], decimals=1)}° and "
+    f"{num(limits[1], decimals=1)}°. The sweep is valid at {ok.sum()} of {ok.size} positions "
+    "(status " + ", ".join(f"`{x}`" for x in sorted(set(sw.status))) + "); positions the "
+    f"sweep does not return although geometry allows them: {missed}"
+    + (" (it picks the linkage up again where geometry allows)." if missed == 0 else ".")
 )
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8), sharex=True)
-ax1.plot(fdeg, sw.condition, color=COLORS["tangential"])
-top = 1.1 * np.nanmax(sw.condition)
-ax1.fill_between(fdeg, 0, top, where=~ok, color="#dddddd", label="sweep: not valid")
-ax1.set_ylabel("condition")
-ax1.set_ylim(0, top)
-ax2.plot(fdeg, np.abs(sw.vectors["S"].length_ddot.to("in/s^2").magnitude), color="black")
-ax2.fill_between(fdeg, 1, 1e7, where=~ok, color="#dddddd")
-ax2.set_yscale("log")
-ax2.set_ylim(10, 1e7)
-ax2.set_ylabel(r"$|\ddot S|$ [in/s$^2$]")
-for ax in (ax1, ax2):
-    for x in limits:
-        ax.axvline(x, color="black", ls="--", lw=1)
-    ax.set_xlabel(r"$\theta_2$ [deg]")
-    ax.set_xticks(range(0, 361, 60))
-ax1.plot([], [], "k--", lw=1, label="geometric reach limits")
-ax1.legend(fontsize=8, loc="center")
-ax1.set_title("Condition of the Jacobian")
-ax2.set_title("Slider acceleration near the limit")
-plt.show()
+
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
+stated(-C_y.max(), "1.7")
+stated(-C_y.min(), "3.4")  # C below the ground line
+
+
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Near a limit position: the Jacobian's condition measure falls to zero and the slider's acceleration grows without bound (grey: positions the sweep does not return; dashed: the geometric reach limits)."}}
+def near_the_limit(narrow):
+    fig, (ax1, ax2) = panels(
+        2, narrow, wide=(7.8, 3.4), tall=(4.4, 6.6), sharex=True, layout="constrained"
+    )
+    ax1.plot(fdeg, sw.condition, color=COLORS["tangential"])
+    top = 1.1 * np.nanmax(sw.condition)
+    ax1.fill_between(fdeg, 0, top, where=~ok, color="#dddddd")
+    ax1.set_ylabel("condition measure")
+    ax1.set_ylim(0, top)
+    ax2.plot(fdeg, np.abs(sw.vectors["S"].length_ddot.to("in/s^2").magnitude), color="black")
+    ax2.fill_between(fdeg, 1, 1e7, where=~ok, color="#dddddd")
+    ax2.set_yscale("log")
+    ax2.set_ylim(10, 1e7)
+    ax2.set_ylabel(r"$|\ddot S|$ [in/s$^2$]")
+    for ax in (ax1, ax2):
+        for x in limits:
+            ax.axvline(x, color="black", ls="--", lw=1)
+        ax.set_xlabel(r"$\theta_2$ [deg]")
+        ax.set_xticks(range(0, 361, 90))
+    ax1.set_title("Condition of the Jacobian")
+    ax2.set_title("Slider acceleration near the limit")
+    return fig
+
+
+show(
+    near_the_limit,
+    alt="Two line plots against crank angle approaching a limit position, with the positions "
+    "the sweep does not return shaded.",
+)
 
 # %% [markdown]
-# Where the linkage runs *into* the limit (the first dashed line) the sweep stops exactly there.
-# Coming *out* of the gap is harder: the sweep has no previous solution to continue from, so it
-# must search for the linkage again from its last known state, on either side of the gap. The
-# cell above counts the positions that geometry allows but the sweep did not return (compare the
-# end of the grey band with the second dashed line): a search can come up empty where a linkage
-# exists, so the count is worth printing, and the cell says so when it is zero. In the same way,
-# a `not_assemblable` from a sweep means that Newton-Raphson found no closure from its guesses,
-# not a proof that none exists; the geometric check is what proves it.
+# Where the linkage runs *into* the limit (the first dashed line) the sweep stops exactly
+# there. Coming *out* of the gap is harder: the sweep has no previous solution to continue
+# from, so it must search for the linkage again from its last known state, on either side of
+# the gap. The cell above counts the positions that geometry allows but the sweep did not
+# return (compare the end of the grey band with the second dashed line): a search can come up
+# empty where a linkage exists, so the count is worth printing, and the cell says so when it is
+# zero. In the same way, a `not_assemblable` from a sweep means that Newton-Raphson found no
+# closure from its guesses, not a proof that none exists; the geometric check is what proves
+# it.
 #
-# Asked about a single position, the solver raises an error that says what is wrong instead of
-# returning numbers. Inside the gap Newton-Raphson cannot close the loops; just inside an edge it
-# still can, but the velocities and accelerations there are enormous and only as good as the
-# condition number allows; and just after the gap a fresh guess (the rod leaning right, as
-# designed) finds the linkage whatever the sweep said.
+# Asked about a single position, the solver raises an error that says what is wrong instead
+# of returning numbers. Inside the gap Newton-Raphson cannot close the loops; just inside an
+# edge it still can, but the velocities and accelerations there are enormous and only as good
+# as the condition measure allows; and just after the gap a fresh guess (the rod leaning right,
+# as designed) finds the linkage whatever the sweep said.
 
 # %%
 after = limits[1] + 10
+lines = []
 for angle, guess in ((limits[0] - 0.5, None), (100.0, None), (after, "60 deg")):
     solver_ = reach if guess is None else VectorLoopLinkage(**with_guesses(short, R5=guess))
     try:
         s = solver_.solve(theta2=f"{angle} deg", omega2="12 rad/s")
-        print(
-            f"{angle:6.1f} deg: ok, condition {s.condition:.3f}, theta5 = "
-            f"{s.vectors['R5'].angle.to('deg'):.1f~P}, S'' = {s.vectors['S'].length_ddot.to('in/s^2'):.4g~P}"
+        lines.append(
+            rf"- $\theta_2$ = {num(angle, decimals=1)}°: solved, condition measure "
+            rf"{num(s.condition, 3)}, $\theta_5$ = {num(s.vectors['R5'].angle.m_as('deg'))}°, "
+            rf"$\ddot S$ = {num(s.vectors['S'].length_ddot.m_as('in/s^2'))} in/s²."
         )
     except AccelabError as err:
-        print(f"{angle:6.1f} deg: {type(err).__name__}: {str(err)[:150]}...")
+        lines.append(rf"- $\theta_2$ = {num(angle, decimals=1)}°: `{type(err).__name__}`: {err}")
 k = int(np.argmin(np.abs(fdeg - after)))
-print(f"(the sweep said {sw.status[k]!r} at {fdeg[k]:.1f} deg)")
+lines.append(f"- (The sweep said `{sw.status[k]}` at {num(fdeg[k], decimals=1)}°.)")
+say("\n".join(lines))
 
 # %% [markdown]
 # ## Explore
@@ -542,10 +668,10 @@ print(f"(the sweep said {sw.status[k]!r} at {fdeg[k]:.1f} deg)")
 # acceleration (1 in of arrow = 50 in/s²).
 
 
-# %% mystnb={"figure": {"caption": "The sixbar with a slider at several crank angles, with the slider's acceleration."}, "image": {"alt": "Small multiples of the sixbar drawing with acceleration arrows."}}
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The sixbar with a slider at several crank angles $\\theta_2$, drawn as its two vector loops, with the slider's acceleration at $D$."}}
 def draw(theta2=57):
     i = int(round(theta2))
-    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    fig, ax = plt.subplots(figsize=(4.6, 3.0))
     draw_loops(ax, slider_six, cycle, starts=[0j, 7 + 0j], i=i, show_names=False)
     D = cycle.points["D"].R.to("in").magnitude[i]
     A_D = cycle.points["D"].A.to("in/s^2").magnitude[i]
@@ -557,9 +683,9 @@ def draw(theta2=57):
     ax.set_aspect("equal")
     ax.set_xlabel("x [in]")
     ax.set_title(
-        rf"$\theta_2$ = {theta2}°: S'' = {A_D.real:.0f} in/s², "
+        rf"$\theta_2$ = {theta2}°: $\ddot S$ = {A_D.real:.0f} in/s², "
         f"{cycle.iterations[i]} Newton steps",
-        fontsize=10,
+        fontsize=11,
     )
     return fig
 
@@ -608,7 +734,8 @@ explore(draw, theta2=(0, 360, 5, 57, "deg"))
 #
 # </details>
 #
-# 5. What does a condition number near zero tell you, and why do the accelerations blow up there?
+# 5. What does a condition measure near zero tell you, and why do the accelerations blow up
+#    there?
 #
 # <details><summary>Answer</summary>
 #
@@ -618,7 +745,7 @@ explore(draw, theta2=(0, 360, 5, 57, "deg"))
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 assert len(watt["loops"]) == 2 and len(slider_six["loops"]) == 2
 
 # %% [markdown]
@@ -648,11 +775,13 @@ assert len(watt["loops"]) == 2 and len(slider_six["loops"]) == 2
 #
 # </details>
 
-# %% tags=["remove-input"] jupyter={"source_hidden": true}
+# %% tags=["remove-cell"] jupyter={"source_hidden": true}
 r101 = linkage.solve(theta2="120 deg", omega2="12 rad/s", alpha2="0 rad/s^2")
 S101 = r101.vectors["S"]
-stated(S101.length, "12.42", "in"), stated(S101.length_dot, "7.97", "in/s")
-stated(S101.length_ddot, "39.1", "in/s^2"), stated(r101.vectors["R5"].angle, "1.05", "deg")
+stated(S101.length, "12.42", "in")
+stated(S101.length_dot, "7.97", "in/s")
+stated(S101.length_ddot, "39.1", "in/s^2")
+stated(r101.vectors["R5"].angle, "1.05", "deg")
 
 # %% [markdown]
 # ## Common mistakes
@@ -663,7 +792,7 @@ stated(S101.length_ddot, "39.1", "in/s^2"), stated(r101.vectors["R5"].angle, "1.
 #   ones.
 # - **Treating a converged answer as the right one.** Newton-Raphson finds *a* solution; check it
 #   is the linkage you meant.
-# - **Reading numbers near a singular position.** Use the `valid` mask and the condition number;
+# - **Reading numbers near a singular position.** Use the `valid` mask and the condition measure;
 #   the solver reports `Singular` or `NotAssemblable` (or `NoConvergence`) rather than guessing.
 # - **Iterating for velocities.** Only positions need Newton-Raphson.
 #

@@ -7,8 +7,12 @@ lists them, and ``make docs`` publishes them as the course section of the
 documentation site (``docs/``). They are clients of the installed packages:
 :mod:`accelab.solver` for every number, :mod:`accelab.course.kit` for what they share (the
 ``explore`` control, number formatting, plot style, :func:`accelab.course.kit.stated`),
-:mod:`accelab.course.animation` for the mechanisms that move, and
-``accelab.exercises.practice`` for self-study problems with instant feedback.
+:mod:`accelab.course.text` for results written as sentences and tables,
+:mod:`accelab.course.renditions` for figures in a wide and a narrow (phone) rendition,
+:mod:`accelab.course.animation` and :mod:`accelab.course.player` for the mechanisms that
+move (a player with play, pause and step), and ``accelab.exercises.practice`` for
+self-study problems with instant feedback. ``benchmark.json`` holds the numbers of the
+benchmark run that notebook 11 quotes.
 ``errata.md`` lists the misprints of the chapter the course found, and
 ``FAMILIES.md`` which notebook teaches each graded exercise family.
 """

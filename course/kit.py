@@ -40,8 +40,10 @@ G0 = Q_(1, "standard_gravity")
 #: panels of the static figure when the first slider's values are not given
 STATIC_FRAMES = 4
 _STATIC_DPI = 100
-#: widest static figure [px]: two panels of a page's width (about 750 px) side by side
-STATIC_WIDTH = 900
+#: widest static figure [px]: two panels side by side on a page about 760 px wide
+STATIC_WIDTH = 960
+#: widest static figure on a phone [px]: its panels one above the other
+NARROW_WIDTH = 470
 
 __all__ = [
     "COLORS",
@@ -74,7 +76,9 @@ def use_style():
             "font.size": 11,
             "axes.titlesize": 12,
             "axes.labelsize": 11,
-            "legend.fontsize": 10,
+            "legend.fontsize": 10.5,
+            "xtick.labelsize": 10.5,
+            "ytick.labelsize": 10.5,
             "axes.grid": True,
             "grid.alpha": 0.3,
             "axes.spines.top": False,
@@ -123,11 +127,49 @@ def static_values(lo, hi, step, frames=STATIC_FRAMES):
     return [float(v) if not float(v).is_integer() else int(v) for v in snapped]
 
 
+#: how a slider's name reads on a figure and beside a slider (mathtext; ipywidgets
+#: typesets the same $...$ in a live notebook)
+SLIDER_NAMES = {
+    "theta2": r"$\theta_2$",
+    "omega2": r"$\omega_2$",
+    "alpha2": r"$\alpha_2$",
+    "delta3": r"$\delta_3$",
+    "lam": r"$\lambda$",
+    "phi": r"$\phi$",
+    "p": r"$p$",
+    "c": r"$c$",
+    "rod_mm": r"rod $b$",
+    "speed": "crank speed",
+    "log10_h": r"$\log_{10} h$",
+}
+#: units as they read on a figure
+_UNIT_TEXT = {"deg": "\u00b0", "rad/s^2": "rad/s\u00b2", "rad/s**2": "rad/s\u00b2"}
+
+
+def _symbol(name):
+    return SLIDER_NAMES.get(name, name)
+
+
+def _unit_text(unit):
+    unit = _UNIT_TEXT.get(unit, unit)
+    return unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
+
+
 def _label(name, value, unit):
-    unit = unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
-    if unit and name.strip().lower() == unit.strip().lower():  # "rpm = 6 rpm" reads "6 rpm"
-        return f"{value:g} {unit}"
-    return f"{name} = {value:g} {unit}".strip()
+    """``θ₂ = 30°``: a slider's value as a panel of the static figure names it."""
+    text = _unit_text(unit)
+    number = f"{value:g}".replace("-", "\u2212")  # a true minus sign
+    if text and name.strip().lower() == unit.strip().lower():  # "rpm = 6 rpm" reads "6 rpm"
+        return f"{number} {text}"
+    sep = "" if text == "\u00b0" else " "
+    return f"{_symbol(name)} = {number}{sep}{text}".strip()
+
+
+def _description(name, unit):
+    """A live slider's label: ``$\\theta_2$ [deg]``, never ``rpm [rpm]``."""
+    if unit and name.strip().lower() == unit.strip().lower():
+        return name
+    return f"{_symbol(name)} [{_unit_text(unit)}]" if unit else _symbol(name)
 
 
 def _render(fig):
@@ -151,36 +193,53 @@ def _figure_of(result):
     )
 
 
-def small_multiples(draw, name, values, fixed, unit="", columns=None, units=None):
-    """One figure: ``draw(name=v, **fixed)`` for each v in ``values``, side by
-    side, each panel at its own resolution and titled with its value."""
+def _panels(draw, name, values, fixed):
     images = []
     for v in values:
         fig = _figure_of(draw(**{name: v}, **fixed))
         images.append(_render(fig))
         plt.close(fig)
+    return images
+
+
+def small_multiples(
+    draw, name, values, fixed, unit="", columns=None, units=None, width=STATIC_WIDTH, images=None
+):
+    """One figure: ``draw(name=v, **fixed)`` for each v in ``values``, side by
+    side (as many as fit in ``width`` px, or ``columns``), each panel at its
+    own resolution and titled with its value."""
+    if images is None:
+        images = _panels(draw, name, values, fixed)
     h = max(im.shape[0] for im in images)
     w = max(im.shape[1] for im in images)
-    if columns is None:  # STATIC_WIDTH px wide at most, rows as full as possible
-        fit = max(1, min(len(images), STATIC_WIDTH // w))
+    if columns is None:  # `width` px wide at most, rows as full as possible
+        fit = max(1, min(len(images), width // w))
         columns = math.ceil(len(images) / math.ceil(len(images) / fit))
     rows = math.ceil(len(images) / columns)
-    band = 30  # px for each panel's caption
-    head = 34
-    W, H = columns * w, rows * (h + band) + head
-    fig = plt.figure(figsize=(W / _STATIC_DPI, H / _STATIC_DPI), dpi=_STATIC_DPI, layout="none")
+    W = columns * w
     units = units or {}
     others = ", ".join(_label(k, v, units.get(k, "")) for k, v in fixed.items())
+    header = (
+        f"Moving {_symbol(name)}"
+        + (f" (with {others})" if others else "")
+        + ": in a live notebook, a slider"
+    )
+    lines = 1 if W >= 8.5 * len(header) else 2  # about 8.5 px per character at 12 pt
+    if lines == 2:
+        header = header.replace(": in a live", ":\nin a live")
+    band = 30  # px for each panel's caption
+    head = 14 + 22 * lines
+    H = rows * (h + band) + head
+    fig = plt.figure(figsize=(W / _STATIC_DPI, H / _STATIC_DPI), dpi=_STATIC_DPI, layout="none")
     fig.text(
         0.5,
-        1 - 17 / H,
-        f"Moving {name}"
-        + (f" (with {others})" if others else "")
-        + ": in a live notebook this is a slider",
+        1 - (head / 2) / H,
+        header,
         ha="center",
         va="center",
         fontsize=12,
         color="#333333",
+        linespacing=1.4,
     )
     for i, im in enumerate(images):
         r, c = divmod(i, columns)
@@ -230,10 +289,18 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
         name, (lo, hi, step, default, unit) = next(iter(specs.items()))
         fixed = {k: s[3] for k, s in list(specs.items())[1:]}
         vals = list(values) if values is not None else static_values(lo, hi, step, frames)
-        fig = small_multiples(
-            draw, name, vals, fixed, unit, columns, units={k: s[4] for k, s in specs.items()}
+        units = {k: s[4] for k, s in specs.items()}
+        images = _panels(draw, name, vals, fixed)
+        wide = small_multiples(draw, name, vals, fixed, unit, columns, units, images=images)
+        narrow = small_multiples(
+            draw, name, vals, fixed, unit, None, units, width=NARROW_WIDTH, images=images
         )
-        _show(fig)
+        from accelab.course.renditions import Renditions, png
+
+        alt = f"The figure above drawn at {len(vals)} values of {name}: " + ", ".join(
+            f"{v:g}" for v in vals
+        )
+        _show_object(Renditions(png(wide), png(narrow), alt))
         return None
     import ipywidgets as widgets
     from IPython.display import display
@@ -250,7 +317,7 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
             max=hi,
             step=step,
             value=default,
-            description=f"{k} [{unit}]" if unit else k,
+            description=_description(k, unit),
             continuous_update=False,
             style={"description_width": "initial"},
             layout=widgets.Layout(width="420px"),
@@ -262,6 +329,16 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
 
     display(widgets.interactive(update, **controls))
     return None
+
+
+def _show_object(obj):
+    try:
+        from IPython import get_ipython
+        from IPython.display import display
+    except ImportError:  # plain Python: nothing to show on
+        return
+    if get_ipython() is not None:
+        display(obj)
 
 
 def _show(fig):
@@ -314,10 +391,9 @@ def stated(value, text, unit=None, sig=None):
     a unit of its last written digit, or of its ``sig``-th significant digit
     when the prose rounds ("about 2100 g" is ``stated(x, "2100", sig=2)``).
     ``value`` may be a Quantity (then give the ``unit`` the prose uses).
-    Returns ``value``, so that a cell can both check and print it.
+    Returns None, so that a cell of checks shows nothing (the page hides it).
 
     >>> stated(36.96, "37")
-    36.96
     """
     v = value.to(unit).magnitude if unit is not None else getattr(value, "magnitude", value)
     t = text.replace(",", "").replace("\u2009", "").replace(" ", "").replace("\u2212", "-")
@@ -333,7 +409,7 @@ def stated(value, text, unit=None, sig=None):
             f"the prose says {text}{' ' + unit if unit else ''} but the "
             f"notebook computes {float(v):.6g}: update the prose"
         )
-    return value
+    return None
 
 
 def measure(functions, repeats=5, min_time=0.01):

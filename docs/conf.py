@@ -24,7 +24,7 @@ notebooks.set_kernel_env()
 
 project = "accelab"
 author = "the accelab developers"
-copyright = "accelab developers"
+copyright = "2026, the accelab developers"
 release = version = accelab.__version__  # the one place the version is written
 # signatures name an object without its module path (the page and its heading say which
 # module): accelab.solver.vectorloops.newton.SINGULAR_CONDITION does not fit a phone
@@ -111,7 +111,9 @@ html_js_files = ["accelab.js"]
 html_last_updated_fmt = None
 html_copy_source = False
 html_show_sourcelink = False
+html_search_scorer = str(HERE / "search_scorer.js")  # prose before API objects
 html_theme_options = {
+    "footer_content_items": ["copyright.html", "licence-footer.html"],
     "home_page_in_toc": True,
     "show_navbar_depth": 1,
     "use_download_button": False,

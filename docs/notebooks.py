@@ -17,6 +17,7 @@ follows builds the site without executing anything again.
 
 import hashlib
 import os
+import re
 import shutil
 from pathlib import Path
 
@@ -143,7 +144,7 @@ def execute(source, timeout=CELL_TIMEOUT):
         client.execute(env=kernel_env())
     except CellExecutionError as exc:
         raise _failed(nb, f"{source.name} failed:\n{exc}") from None
-    except Exception as exc:  # a timeout, a dead kernel: the same verdict, with its kind
+    except Exception as exc:  # noqa: BLE001  a timeout, a dead kernel: the same verdict, with its kind
         raise _failed(nb, f"{source.name} failed: {type(exc).__name__}: {exc}") from None
     found = problems(nb)
     if found:
@@ -187,6 +188,27 @@ def cached(source):
     return nb
 
 
+WIDE_IMAGE = re.compile(r"\(data:image/png;base64,([A-Za-z0-9+/=]+)\)\{\.accelab-wide\}")
+
+
+def figures(nb):
+    """The figures of an executed notebook, in order, as base64 PNG: each image/png
+    output, and the wide rendition of each figure shown in two renditions
+    (``accelab.course.renditions``, a Markdown output)."""
+    out = []
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        for o in cell.get("outputs", []):
+            data = o.get("data", {})
+            if "image/png" in data:
+                out.append(data["image/png"])
+            elif "text/markdown" in data:
+                text = data["text/markdown"]
+                out += WIDE_IMAGE.findall(text if isinstance(text, str) else "".join(text))
+    return out
+
+
 #: figures the README shows: file name -> (notebook, n-th figure of its executed outputs)
 README_FIGURES = {"course-piston-acceleration.png": ("04_slider_crank_engine", 2)}
 
@@ -204,13 +226,7 @@ def readme_figures(outdir):
         if nb is None:
             nb = execute(source)
             store(source, nb)
-        pngs = [
-            o["data"]["image/png"]
-            for c in nb.cells
-            if c.cell_type == "code"
-            for o in c.get("outputs", [])
-            if "image/png" in o.get("data", {})
-        ]
+        pngs = figures(nb)
         target = Path(outdir) / name
         target.write_bytes(base64.b64decode(pngs[k - 1]))
         written.append(target)

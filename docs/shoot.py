@@ -94,7 +94,19 @@ def main(argv=None):
                 driver.execute_async_script(WAIT_MATH)
                 if args.full:
                     h = driver.execute_script("return document.documentElement.scrollHeight")
-                    driver.set_window_size(width, min(h + 100, 16000))
+                    if width < 500:  # the phone's emulated viewport, as tall as the page
+                        driver.execute_cdp_cmd(
+                            "Emulation.setDeviceMetricsOverride",
+                            {
+                                "width": width,
+                                "height": min(h, 16000),
+                                "deviceScaleFactor": 1,
+                                "mobile": True,
+                            },
+                        )
+                        driver.execute_async_script(WAIT_MATH)
+                    else:
+                        driver.set_window_size(width, min(h + 100, 16000))
                 elif args.scroll:
                     driver.execute_script(f"window.scrollTo(0, {args.scroll})")
                 name = page.replace("/", "_").replace(".html", "") + f"-{width}"

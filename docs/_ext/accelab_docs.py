@@ -46,9 +46,8 @@ def _download_line(stem):
         f'<p class="nb-download">'
         f'<a class="nb-download-link" href="{stem}.ipynb" download="{stem}.ipynb" '
         f'type="application/x-ipynb+json">Download this notebook (.ipynb)</a>'
-        f'<span class="nb-download-note"> to run it yourself in Jupyter with accelab '
-        f"installed (<code>pip install -e .</code>); <code>accelab course --out DIR</code> "
-        f"writes every notebook of the course.</span></p>"
+        f'<span class="nb-download-note"> and run it in Jupyter with accelab installed '
+        f'(<a href="../install.html">how to install</a>).</span></p>'
     )
 
 
@@ -121,18 +120,34 @@ def number_equations(app, doctree):
 
 
 # ---------------------------------------------------------------- figures
+#: classes of the renditions of one figure (accelab.course.renditions): the page's
+#: stylesheet shows the one that fits the screen
+RENDITIONS = ("accelab-wide", "accelab-narrow")
+
+
+def _in_figure(node):
+    parent = node.parent
+    while parent is not None:
+        if isinstance(parent, nodes.figure):
+            return True
+        parent = parent.parent
+    return False
+
+
 def caption_images(app, doctree):
     """A picture standing alone in its paragraph (``![what it shows](file.png)``
-    in Markdown) becomes a figure whose caption is its alt text."""
+    in Markdown) becomes a figure whose caption is its alt text, unless it is
+    inside a figure already (a notebook output with a caption in its cell)."""
     for para in list(doctree.findall(nodes.paragraph)):
         kids = [k for k in para.children if not (isinstance(k, nodes.Text) and not k.strip())]
         if len(kids) != 1 or not isinstance(kids[0], nodes.image):
             continue
         image = kids[0]
         alt = image.get("alt", "").strip()
-        if not alt or isinstance(para.parent, nodes.figure):
+        if not alt or _in_figure(para):
             continue
         figure = nodes.figure("", image.deepcopy(), nodes.caption(alt, alt))
+        figure["classes"] += [c for c in image.get("classes", []) if c in RENDITIONS]
         para.replace_self(figure)
         doctree.set_id(figure)
 
@@ -152,6 +167,27 @@ def _embedded_to_file(app, uri):
     if not (folder / name).exists():
         (folder / name).write_bytes(raw)
     return name
+
+
+#: widest figure [CSS px] a phone shows shrunk to its screen: a wider chart (the
+#: benchmark's, 1300 px and more) would be unreadable at 342 px, so there it keeps
+#: its size (1 in of figure = 100 CSS px) and scrolls sideways in its box
+SCROLL_CHART = 800
+
+
+def _chart_width(app, uri):
+    """The width [CSS px] of a local image file at 100 px per inch of its DPI, or None."""
+    path = (Path(app.srcdir) / uri).resolve()
+    if not path.is_file() or path.suffix.lower() != ".png":
+        return None
+    try:
+        from PIL import Image
+
+        with Image.open(path) as im:
+            dpi = (im.info.get("dpi") or (100, 100))[0] or 100
+            return round(im.size[0] * 100 / dpi)
+    except OSError:
+        return None
 
 
 def link_images(app, doctree, docname):
@@ -174,10 +210,65 @@ def link_images(app, doctree, docname):
             continue
         else:
             refuri = uri
-        ref = nodes.reference("", "", internal=True, refuri=refuri, classes=["image-full-size"])
+        classes = ["image-full-size"] + [c for c in image.get("classes", []) if c in RENDITIONS]
+        width = None if "://" in uri or uri.startswith("data:") else _chart_width(app, uri)
+        if width and width > SCROLL_CHART and isinstance(image.parent, nodes.figure):
+            image.parent["classes"].append("scroll-chart")
+            image["width"] = f"{width}px"
+        ref = nodes.reference("", "", internal=True, refuri=refuri, classes=classes)
         ref["reftitle"] = "Open the image at full size"
         image.replace_self(ref)
         ref.append(image)
+
+
+DATA_URI = re.compile(r"data:image/(png|jpeg|gif);base64,([A-Za-z0-9+/=]+)")
+
+
+def player_frames(app, doctree, docname):
+    """The frames of an animation player (raw HTML with ``data:`` URIs, from
+    :mod:`accelab.course.player`) written out as image files once each, so that
+    the page stays small and a browser loads only the frames it plays."""
+    if app.builder.format != "html":
+        return
+    imgdir = relative_uri(app.builder.get_target_uri(docname), "_images")
+    for raw in list(doctree.findall(nodes.raw)):
+        text = raw.astext()
+        if "accelab-player" not in text or "data:image/" not in text:
+            continue
+
+        def out(m):
+            name = _embedded_to_file(app, m.group(0))
+            return posixpath.join(imgdir, name) if name else m.group(0)
+
+        new = DATA_URI.sub(out, text)
+        raw.replace_self(nodes.raw("", new, format="html"))
+
+
+#: a word with a hyphen inside ("slider-crank", "7-1;")
+HYPHENATED = re.compile(r"\S*\w-\w\S*")
+
+
+def unbreakable_words(app, doctree):
+    """In a table cell a line may break between words but never inside one: a
+    hyphenated word ("slider-crank", "problem 7-1") is kept on one line (a table
+    wider than a phone scrolls in its box instead)."""
+    for entry in doctree.findall(nodes.entry):
+        for text in list(entry.findall(nodes.Text)):
+            parent = text.parent
+            if isinstance(parent, (nodes.literal, nodes.math, nodes.raw, nodes.inline)):
+                continue
+            value = str(text)
+            if not HYPHENATED.search(value):
+                continue
+            pieces, pos = [], 0
+            for m in HYPHENATED.finditer(value):
+                if m.start() > pos:
+                    pieces.append(nodes.Text(value[pos : m.start()]))
+                pieces.append(nodes.inline(m.group(0), m.group(0), classes=["nobreak"]))
+                pos = m.end()
+            if pos < len(value):
+                pieces.append(nodes.Text(value[pos:]))
+            parent.replace(text, pieces)
 
 
 # ---------------------------------------------------------------- API pages
@@ -260,7 +351,7 @@ def _definer(package, attr):
     for modname, _ in _modules(_api_package(package) or package):
         try:
             mod = importlib.import_module(modname)
-        except Exception:
+        except Exception:  # noqa: BLE001  a module that does not import defines nothing here
             continue
         if modname != package and attr in getattr(mod, "__all__", []) and _assigned_here(mod, attr):
             return modname
@@ -286,7 +377,7 @@ def api_pages():
 
                 try:
                     importlib.import_module(name)
-                except Exception as exc:  # reported, never hidden
+                except Exception as exc:  # noqa: BLE001  reported as a warning, never hidden
                     logger.warning(f"API reference: cannot import {name}: {exc}")
                     continue
                 if name != key:
@@ -518,7 +609,7 @@ class FamiliesTable(Directive):
             from accelab.exercises.families import common
 
             specs = family_specs()
-        except Exception as exc:  # an exercises package being rebuilt: say so on the page
+        except Exception as exc:  # noqa: BLE001  an exercises package being rebuilt: say so
             logger.warning(f"accelab-families: cannot read accelab.exercises.families: {exc}")
             return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
         result = []
@@ -601,7 +692,7 @@ class FamilyNotebooks(Directive):
             from accelab.exercises import families
 
             mapping = family_notebooks(course)
-        except Exception as exc:
+        except Exception as exc:  # noqa: BLE001  said on the page and in a warning
             logger.warning(f"accelab-family-notebooks: {exc}")
             return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
         rows = []
@@ -635,7 +726,9 @@ def setup(app):
     app.connect("source-read", source_read)
     app.connect("doctree-read", number_equations)
     app.connect("doctree-read", caption_images)
+    app.connect("doctree-read", unbreakable_words)
     app.connect("doctree-resolved", link_images)
+    app.connect("doctree-resolved", player_frames)
     app.connect("build-finished", write_notebooks)
     app.connect("build-finished", copy_mathjax)
     app.add_directive("accelab-families", FamiliesTable)
