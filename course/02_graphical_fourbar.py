@@ -54,9 +54,9 @@ use_style()
 # For any two points $A$ and $B$ of one link (Case 1 of notebook 1), the acceleration
 # difference equation with every term split into its components reads
 #
-# $$ \mathbf{A}_B = \mathbf{A}_A + \mathbf{A}_{BA}, \qquad
-#    \left(\mathbf{A}^t_B + \mathbf{A}^n_B\right) = \left(\mathbf{A}^t_A + \mathbf{A}^n_A\right)
-#    + \left(\mathbf{A}^t_{BA} + \mathbf{A}^n_{BA}\right) \tag{7.4} $$
+# $$ \begin{aligned} \mathbf{A}_B &= \mathbf{A}_A + \mathbf{A}_{BA} \\
+#    \mathbf{A}^t_B + \mathbf{A}^n_B &= \left(\mathbf{A}^t_A + \mathbf{A}^n_A\right) \\
+#    &\quad + \left(\mathbf{A}^t_{BA} + \mathbf{A}^n_{BA}\right) \end{aligned} \tag{7.4} $$
 #
 # and the size of each component of a point turning at radius $r$ is
 #
