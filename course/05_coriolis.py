@@ -806,7 +806,8 @@ g = example.given
 model = InvertedSliderCrank(a=g["a"], c=g["c"], d=g["d"], gamma=g["gamma"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
 assert example.check("A_cor_mag", abs(res.A_coriolis))  # right
-assert not example.check("A_cor_mag", abs(res.A_coriolis) / 2)  # the factor 2 of eq. 7.19b forgotten
+# the factor 2 of eq. 7.19b forgotten:
+assert not example.check("A_cor_mag", abs(res.A_coriolis) / 2)
 assert example.check("alpha4", res.alpha4)  # right
 
 # %% [markdown]

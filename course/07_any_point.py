@@ -499,7 +499,8 @@ res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
 )
 assert example.check("A_P_mag", abs(res.A_P))  # right
 assert not example.check("A_P_mag", abs(res.A_A))  # the pin's acceleration, not the point's
-assert example.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))  # right, a bare number in deg
+# right, a bare number in deg:
+assert example.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))
 
 # %% [markdown]
 # ## Common mistakes
