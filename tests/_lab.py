@@ -227,20 +227,21 @@ def shared_venv():
     if not stamp.exists():
         shutil.rmtree(SHARED_VENV, ignore_errors=True)
         subprocess.run(["/usr/bin/python3", "-m", "venv", str(SHARED_VENV)], check=True)
-        cfile = BUILD / "lab-constraints.txt"
-        cfile.write_text(constraints)
         subprocess.run(
             [str(py), "-m", "pip", "install", "-q", "--upgrade", "pip"],
             check=True,
             capture_output=True,
         )
-        proc = subprocess.run(
-            [str(py), "-m", "pip", "install", "-q", "-c", str(cfile), str(wheel), *SHARED_EXTRAS],
-            capture_output=True,
-            text=True,
-        )
-        assert proc.returncode == 0, proc.stderr[-3000:]
         stamp.write_text(constraints)
+    cfile = BUILD / "lab-constraints.txt"
+    cfile.write_text(constraints)
+    # accelab's dependencies as this checkout declares them (quick when they are there)
+    proc = subprocess.run(
+        [str(py), "-m", "pip", "install", "-q", "-c", str(cfile), str(wheel), *SHARED_EXTRAS],
+        capture_output=True,
+        text=True,
+    )
+    assert proc.returncode == 0, proc.stderr[-3000:]
     proc = subprocess.run(
         [str(py), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)],
         capture_output=True,
@@ -254,6 +255,50 @@ def shared_venv():
         if not mode & 0o005:
             os.chmod(folder, mode | 0o005)
     return SHARED_VENV
+
+
+# ---------------------------------------------------------------- per-role configuration
+#: nbgrader's JupyterLab plugins a student has no use for (the instructor's menus)
+INSTRUCTOR_PLUGINS = (
+    "@jupyter/nbgrader:formgrader",
+    "@jupyter/nbgrader:create-assignment",
+    "@jupyter/nbgrader:course-list",
+)
+#: and their server extensions
+INSTRUCTOR_SERVER_EXTENSIONS = (
+    "nbgrader.server_extensions.formgrader",
+    "nbgrader.server_extensions.course_list",
+)
+
+
+def role_config(folder, role, exchange, course_id=None, hub=False):
+    """Write the Jupyter configuration of ``role`` ("student" or "instructor") into
+    ``folder`` (a directory for ``JUPYTER_CONFIG_PATH``), as docs/guide/deploy.md gives
+    it: nbgrader's exchange, on a hub its JupyterHub authentication, and for a student
+    the instructor's menus and server extensions turned off. Returns ``folder``."""
+    folder = Path(folder)
+    (folder / "labconfig").mkdir(parents=True, exist_ok=True)
+    lines = ["c = get_config()  # noqa: F821", f"c.Exchange.root = {str(exchange)!r}"]
+    if course_id:
+        lines.append(f"c.CourseDirectory.course_id = {course_id!r}")
+    if hub:
+        lines += [
+            "from nbgrader.auth import JupyterHubAuthPlugin",
+            "c.Authenticator.plugin_class = JupyterHubAuthPlugin",
+        ]
+    (folder / "nbgrader_config.py").write_text("\n".join(lines) + "\n")
+    if role == "student":
+        page = {"disabledExtensions": {name: True for name in INSTRUCTOR_PLUGINS}}
+        server = {
+            "ServerApp": {"jpserver_extensions": dict.fromkeys(INSTRUCTOR_SERVER_EXTENSIONS, False)}
+        }
+    else:
+        page, server = {"disabledExtensions": {}}, {}
+    (folder / "labconfig" / "page_config.json").write_text(json.dumps(page, indent=1))
+    (folder / "jupyter_server_config.json").write_text(json.dumps(server, indent=1))
+    for path in (folder, *folder.rglob("*")):
+        os.chmod(path, 0o755 if path.is_dir() else 0o644)
+    return folder
 
 
 # ---------------------------------------------------------------- servers
