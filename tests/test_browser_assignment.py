@@ -222,7 +222,10 @@ def validate(driver):
         lambda: next(
             (
                 b
-                for b in driver.find_elements(By.CSS_SELECTOR, ".jp-NotebookPanel-toolbar button")
+                for b in driver.find_elements(
+                    By.CSS_SELECTOR,
+                    ".jp-NotebookPanel-toolbar jp-button, .jp-NotebookPanel-toolbar button",
+                )
                 if b.text.strip() == "Validate" and b.is_displayed()
             ),
             None,
@@ -290,9 +293,11 @@ def test_student_fetches_answers_validates_and_submits(klass, student_lab, drive
     ), params["text"]
     cell_node(driver, params["index"])
     shot(driver, "student-5-whose-values")
-    # before any answer: each check says what is missing, as an error of its cell
-    unanswered = [c for c in nb if c["source"].startswith("from accelab.exercises.student")]
-    assert unanswered and all(c["errors"] for c in unanswered[1:]), "empty answers pass"
+    # before any answer, the first check says what is missing (and Run All stops there)
+    first_check = next(c for c in nb if "check_format(" in c["source"])
+    assert first_check["errors"], "an empty answer passes its check"
+    cell_node(driver, first_check["index"])
+    shot(driver, "student-5-unanswered-check")
 
     code = key_code(read_spec(klass["course"], "A"), STUDENT)  # the right answers
     answer_cells = [
@@ -311,6 +316,8 @@ def test_student_fetches_answers_validates_and_submits(klass, student_lab, drive
         type_into_cell(driver, c["index"], code[name])
         answered += 1
     assert answered == len(code), (answered, sorted(code))
+    wait_idle(driver)
+    click_menu(driver, "Run", "Run All Cells")
     wait_idle(driver)
     assert not tracebacks(driver), tracebacks(driver)
     last = answer_cells[-1]["index"]

@@ -102,7 +102,7 @@ def exchange_student(spec=None):
     account = _account()
     if not account:
         return None, None
-    return account, f"the account nbgrader's exchange ({root}) submits this notebook from"
+    return account, "the account nbgrader's exchange submits this notebook from"
 
 
 def identify(spec=None):
