@@ -15,6 +15,11 @@ import os
 import subprocess
 import sys
 
+#: a Jupyter data folder for ``JUPYTER_PATH``: nbconvert's ``mathjax`` macro that loads MathJax
+#: from the Jupyter server itself (jupyter-server-mathjax), so that formgrader and the feedback
+#: pages typeset their equations offline (nbgrader's templates otherwise fetch it from a CDN)
+JUPYTER_DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "jupyter")
+
 CONFIG = """\
 # nbgrader configuration written by `accelab assign` (accelab exercises).
 import os
@@ -23,7 +28,6 @@ from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPrep
 from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
                                     LimitOutput, SaveAutoGrades)
 
-import accelab.exercises
 from accelab.exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission, sanitize_steps
 
 c = get_config()  # noqa: F821
@@ -48,10 +52,6 @@ c.OverwriteCells.add_missing_cells = True
 c.OverwriteCells.missing_cell_notification = "# test cell {{cell_id}} was deleted and put back\\n"
 # feedback: error messages without tracebacks
 c.GenerateFeedback.preprocessors = [GetGrades, CSSHTMLHeaderPreprocessor, CleanFeedback]
-# formgrader and the feedback pages typeset math with the Jupyter server's own MathJax
-# (jupyter-server-mathjax), never a CDN: accelab's templates/mathjax.html.j2 comes first
-c.HTMLExporter.extra_template_paths = [
-    os.path.join(os.path.dirname(accelab.exercises.__file__), "templates")]
 # the released answer cells start empty (an undefined answer gets a clear message)
 c.ClearSolutions.code_stub = {{"python": "# YOUR ANSWER HERE"}}
 """

@@ -12,6 +12,7 @@ formgrader's autograde button (through the sandbox), looks at the submission in 
 Screenshots of every step are kept in ``build/screenshots/``.
 """
 
+import csv
 import os
 import shutil
 import subprocess
@@ -130,8 +131,13 @@ def student_lab(klass):
 
 @pytest.fixture(scope="module")
 def instructor_lab(klass):
+    from accelab.exercises.nbgrader_course import JUPYTER_DATA
+
     server = Lab(
-        klass["course"], config_dirs=[klass["instructor_cfg"]], log_name="lab-instructor"
+        klass["course"],
+        config_dirs=[klass["instructor_cfg"]],
+        env_extra={"JUPYTER_PATH": JUPYTER_DATA},  # formgrader's math offline (deploy guide)
+        log_name="lab-instructor",
     ).start()
     yield server
     server.stop()
@@ -360,3 +366,183 @@ def test_student_fetches_answers_validates_and_submits(klass, student_lab, drive
     inbound = klass["exchange"] / COURSE_ID / "inbound"
     ours = [p for p in inbound.iterdir() if p.name.startswith(f"{STUDENT}+A+")]
     assert ours and all(p.stat().st_uid == account(STUDENT).pw_uid for p in ours)
+
+
+# ---------------------------------------------------------------- the instructor
+def formgrader(driver, lab, page="formgrader"):
+    """Open formgrader (Nbgrader > Formgrader) and switch into its frame at ``page``."""
+    from selenium.webdriver.common.by import By
+
+    driver.switch_to.default_content()
+    driver.get(lab.url("lab"))
+    lab_ready(driver)
+    dismiss_toasts(driver)
+    click_menu(driver, "Nbgrader", "Formgrader")
+    frame = wait(
+        lambda: next(
+            (f for f in driver.find_elements(By.CSS_SELECTOR, "iframe") if f.is_displayed()), None
+        ),
+        60,
+        what="formgrader's frame",
+    )
+    driver.switch_to.frame(frame)
+    wait(lambda: driver.execute_script("return document.readyState") == "complete", 60)
+    if page != "formgrader":
+        driver.get(lab.url(page))  # the frame's own address, as its links go
+    time.sleep(1.5)
+
+
+def formgrader_modal(driver, timeout=300):
+    """The text of formgrader's modal once it says something; closed after reading."""
+    from selenium.webdriver.common.by import By
+
+    modal = wait(
+        lambda: next(
+            (m for m in driver.find_elements(By.CSS_SELECTOR, ".modal") if m.is_displayed()), None
+        ),
+        timeout,
+        every=0.5,
+        what="formgrader's message",
+    )
+    time.sleep(0.5)
+    text = modal.text
+    return modal, text
+
+
+def close_modal(driver, modal):
+    from selenium.webdriver.common.by import By
+
+    for b in modal.find_elements(By.CSS_SELECTOR, ".modal-footer button"):
+        if b.is_displayed():
+            b.click()
+            break
+    time.sleep(1)
+
+
+def click_in_row(driver, row_text, cell_class):
+    """Click the link in column ``cell_class`` of the formgrader table row naming ``row_text``."""
+    from selenium.webdriver.common.by import By
+
+    row = wait(
+        lambda: next(
+            (r for r in driver.find_elements(By.CSS_SELECTOR, "tbody tr") if row_text in r.text),
+            None,
+        ),
+        60,
+        what=f"the row {row_text}",
+    )
+    link = wait(
+        lambda: next(iter(row.find_elements(By.CSS_SELECTOR, f"td.{cell_class} a")), None),
+        60,
+        what=f"the {cell_class} button of {row_text}",
+    )
+    link.click()
+
+
+def grades(course):
+    with open(course / "grades_A.csv") as fh:
+        return {r["student"]: r for r in csv.DictReader(fh)}
+
+
+def test_instructor_collects_grades_and_releases_feedback(
+    klass, instructor_lab, student_lab, driver
+):
+    from selenium.webdriver.common.by import By
+
+    course = klass["course"]
+    formgrader(driver, instructor_lab)
+    shot(driver, "instructor-1-formgrader")
+    click_in_row(driver, "A", "collect")
+    modal, text = formgrader_modal(driver)
+    shot(driver, "instructor-2-collected")
+    assert "Successfully collected" in text, text
+    close_modal(driver, modal)
+    assert (course / "submitted" / STUDENT / "A" / "A.ipynb").exists()
+
+    # the command line: accelab grade (sandbox, judge, gradebook, feedback, CSV)
+    proc = accelab("grade", "--course", str(course), "--assignment", "A", cwd=course)
+    assert "1 submission(s) graded" in proc.stdout, proc.stdout
+    row = grades(course)[STUDENT]
+    assert float(row["total"]) == float(row["max"]) > 0, row
+
+    # formgrader's autograde button: the same judgement, through the sandbox
+    formgrader(driver, instructor_lab, "formgrader/manage_submissions/A")
+    shot(driver, "instructor-3-submissions")
+    click_in_row(driver, STUDENT, "autograde")
+    modal, text = formgrader_modal(driver)
+    shot(driver, "instructor-4-autograded")
+    assert "Successfully autograded" in text or "autograded" in text.lower(), text
+    close_modal(driver, modal)
+    driver.refresh()
+    row = wait(
+        lambda: next(
+            (r for r in driver.find_elements(By.CSS_SELECTOR, "tbody tr") if STUDENT in r.text),
+            None,
+        ),
+        60,
+    )
+    score = row.find_element(By.CSS_SELECTOR, "td.score").text
+    assert score and score.split("/")[0].strip() == score.split("/")[1].strip(), score
+
+    # the submission in formgrader: its equations typeset by the server's own MathJax
+    from nbgrader.api import Gradebook
+
+    with Gradebook("sqlite:///" + str(course / "gradebook.db"), COURSE_ID) as gb:
+        submission = gb.find_submission_notebook("A", "A", STUDENT).id
+    formgrader(driver, instructor_lab, f"formgrader/submissions/{submission}/")
+    wait(
+        lambda: driver.execute_script(
+            "return !!(window.MathJax && MathJax.Hub) && "
+            "document.querySelectorAll('.MathJax_CHTML, .MathJax, mjx-container').length > 0"
+        ),
+        90,
+        what="MathJax to typeset the submission's equations (offline)",
+    )
+    sources = driver.execute_script(
+        "return [...document.scripts].map(s => s.src).filter(s => s.includes('MathJax'))"
+    )
+    assert sources and all("/static/jupyter_server_mathjax/" in s for s in sources), sources
+    driver.execute_script(
+        "document.querySelector('.MathJax').scrollIntoView({block: 'center'}); "
+        "window.scrollBy(0, 150);"
+    )
+    time.sleep(0.5)
+    shot(driver, "instructor-5-formgrade-math")
+
+    formgrader(driver, instructor_lab)
+    click_in_row(driver, "A", "generate-feedback")
+    modal, text = formgrader_modal(driver)
+    assert "Successfully generated feedback" in text, text
+    close_modal(driver, modal)
+    click_in_row(driver, "A", "release-feedback")
+    modal, text = formgrader_modal(driver)
+    shot(driver, "instructor-6-feedback-released")
+    assert "Successfully released feedback" in text, text
+    close_modal(driver, modal)
+    driver.switch_to.default_content()
+
+    # the student fetches the feedback from the Assignments panel
+    driver.get(student_lab.url("lab"))
+    lab_ready(driver)
+    dismiss_toasts(driver)
+    assignments_panel(driver)
+    button_in(driver, "#submitted_assignments_list", "Fetch Feedback").click()
+    feedback = klass["home"] / "A" / "feedback"
+    pages = wait(
+        lambda: list(feedback.rglob("A.html")) if feedback.exists() else None,
+        60,
+        what="the feedback to be fetched",
+    )
+    text = pages[0].read_text()
+    assert f"Graded against the values of student {STUDENT}" in text
+    time.sleep(1)
+    shot(driver, "student-10-feedback-fetched")
+
+    # a resubmission: the documented collect command (--update) picks it up
+    before = (course / "submitted" / STUDENT / "A" / "timestamp.txt").read_text()
+    time.sleep(1.1)
+    button_in(driver, "#fetched_assignments_list", "Submit").click()
+    time.sleep(3)
+    nbgrader("collect", "--update", "A", cwd=course)
+    after = (course / "submitted" / STUDENT / "A" / "timestamp.txt").read_text()
+    assert after != before, "nbgrader collect --update did not pick up the resubmission"
