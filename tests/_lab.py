@@ -271,7 +271,7 @@ INSTRUCTOR_SERVER_EXTENSIONS = (
 )
 
 
-def role_config(folder, role, exchange, course_id=None, hub=False):
+def role_config(folder, role, exchange, course_id=None, hub=False, course_root=None):
     """Write the Jupyter configuration of ``role`` ("student" or "instructor") into
     ``folder`` (a directory for ``JUPYTER_CONFIG_PATH``), as docs/guide/deploy.md gives
     it: nbgrader's exchange, on a hub its JupyterHub authentication, and for a student
@@ -281,6 +281,8 @@ def role_config(folder, role, exchange, course_id=None, hub=False):
     lines = ["c = get_config()  # noqa: F821", f"c.Exchange.root = {str(exchange)!r}"]
     if course_id:
         lines.append(f"c.CourseDirectory.course_id = {course_id!r}")
+    if course_root:  # the instructor's course folder, wherever the server starts
+        lines.append(f"c.CourseDirectory.root = {str(course_root)!r}")
     if hub:
         lines += [
             "from nbgrader.auth import JupyterHubAuthPlugin",
@@ -294,6 +296,15 @@ def role_config(folder, role, exchange, course_id=None, hub=False):
         }
     else:
         page, server = {"disabledExtensions": {}}, {}
+        if hub:  # formgrader is a frame of the instructor's JupyterLab, which JupyterHub's
+            # default policy (frame-ancestors 'none') would leave empty
+            server = {
+                "ServerApp": {
+                    "tornado_settings": {
+                        "headers": {"Content-Security-Policy": "frame-ancestors 'self'"}
+                    }
+                }
+            }
     (folder / "labconfig" / "page_config.json").write_text(json.dumps(page, indent=1))
     (folder / "jupyter_server_config.json").write_text(json.dumps(server, indent=1))
     for path in (folder, *folder.rglob("*")):
@@ -613,3 +624,119 @@ def json_of(driver, lab, api_path):
     """GET a JSON API of the server (as the page, with its token)."""
     with urllib.request.urlopen(lab.url(api_path), timeout=30) as r:
         return json.loads(r.read())
+
+
+# ---------------------------------------------------------------- nbgrader's pages
+def assignments_panel(driver):
+    """Open nbgrader's Assignments panel (Nbgrader > Assignment List) and wait for it."""
+    from selenium.webdriver.common.by import By
+
+    click_menu(driver, "Nbgrader", "Assignment List")
+    wait(
+        lambda: (
+            driver.find_elements(By.CSS_SELECTOR, "#released_assignments_list")
+            and not any(
+                e.is_displayed()
+                for e in driver.find_elements(By.CSS_SELECTOR, ".list_loading")
+                if e.get_attribute("hidden") is None
+            )
+        ),
+        60,
+        what="the Assignments panel",
+    )
+    time.sleep(1)
+
+
+def button_in(driver, selector, label, timeout=60):
+    """The button labelled ``label`` in the element ``selector`` (waited for)."""
+    from selenium.webdriver.common.by import By
+
+    return wait(
+        lambda: next(
+            (
+                b
+                for b in driver.find_elements(By.CSS_SELECTOR, f"{selector} button")
+                if b.text.strip() == label and b.is_displayed() and b.is_enabled()
+            ),
+            None,
+        ),
+        timeout,
+        what=f"the button {label!r} in {selector}",
+    )
+
+
+def dialog_text(driver, timeout=300):
+    """The text of JupyterLab's dialog once it is there; (title, body)."""
+    from selenium.webdriver.common.by import By
+
+    box = wait(
+        lambda: next(iter(driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-content")), None),
+        timeout,
+        every=0.5,
+        what="a dialog",
+    )
+    time.sleep(0.5)
+    header = box.find_element(By.CSS_SELECTOR, ".jp-Dialog-header").text
+    body = box.find_element(By.CSS_SELECTOR, ".jp-Dialog-body").text
+    return header, body
+
+
+def close_dialog(driver):
+    from selenium.webdriver.common.by import By
+
+    for b in driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-button"):
+        if b.is_displayed():
+            b.click()
+            break
+    wait(
+        lambda: not driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-content"),
+        30,
+        what="the dialog to close",
+    )
+
+
+def formgrader_modal(driver, timeout=300):
+    """The text of formgrader's modal once it says something; closed after reading."""
+    from selenium.webdriver.common.by import By
+
+    modal = wait(
+        lambda: next(
+            (m for m in driver.find_elements(By.CSS_SELECTOR, ".modal") if m.is_displayed()), None
+        ),
+        timeout,
+        every=0.5,
+        what="formgrader's message",
+    )
+    time.sleep(0.5)
+    text = modal.text
+    return modal, text
+
+
+def close_modal(driver, modal):
+    from selenium.webdriver.common.by import By
+
+    for b in modal.find_elements(By.CSS_SELECTOR, ".modal-footer button"):
+        if b.is_displayed():
+            b.click()
+            break
+    time.sleep(1)
+
+
+def click_in_row(driver, row_text, cell_class):
+    """Click the link in column ``cell_class`` of the formgrader table row naming ``row_text``."""
+    from selenium.webdriver.common.by import By
+
+    row = wait(
+        lambda: next(
+            (r for r in driver.find_elements(By.CSS_SELECTOR, "tbody tr") if row_text in r.text),
+            None,
+        ),
+        60,
+        what=f"the row {row_text}",
+    )
+    link = wait(
+        lambda: next(iter(row.find_elements(By.CSS_SELECTOR, f"td.{cell_class} a")), None),
+        60,
+        what=f"the {cell_class} button of {row_text}",
+    )
+    link.click()

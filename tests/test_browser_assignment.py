@@ -27,12 +27,19 @@ from _lab import (
     NARROW,
     Lab,
     account,
+    assignments_panel,
     browser,
+    button_in,
     cell_node,
     cells,
+    click_in_row,
     click_menu,
     close,
+    close_dialog,
+    close_modal,
+    dialog_text,
     dismiss_toasts,
+    formgrader_modal,
     in_panel,
     lab_ready,
     menu_labels,
@@ -151,72 +158,6 @@ def driver(klass):
 
 
 # ---------------------------------------------------------------- nbgrader's panels
-def assignments_panel(driver):
-    """Open nbgrader's Assignments panel (Nbgrader > Assignment List) and wait for it."""
-    from selenium.webdriver.common.by import By
-
-    click_menu(driver, "Nbgrader", "Assignment List")
-    wait(
-        lambda: (
-            driver.find_elements(By.CSS_SELECTOR, "#released_assignments_list")
-            and not any(
-                e.is_displayed()
-                for e in driver.find_elements(By.CSS_SELECTOR, ".list_loading")
-                if e.get_attribute("hidden") is None
-            )
-        ),
-        60,
-        what="the Assignments panel",
-    )
-    time.sleep(1)
-
-
-def button_in(driver, selector, label, timeout=60):
-    """The button labelled ``label`` in the element ``selector`` (waited for)."""
-    from selenium.webdriver.common.by import By
-
-    return wait(
-        lambda: next(
-            (
-                b
-                for b in driver.find_elements(By.CSS_SELECTOR, f"{selector} button")
-                if b.text.strip() == label and b.is_displayed() and b.is_enabled()
-            ),
-            None,
-        ),
-        timeout,
-        what=f"the button {label!r} in {selector}",
-    )
-
-
-def dialog_text(driver, timeout=300):
-    """The text of JupyterLab's dialog once it is there; (title, body)."""
-    from selenium.webdriver.common.by import By
-
-    box = wait(
-        lambda: next(iter(driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-content")), None),
-        timeout,
-        every=0.5,
-        what="a dialog",
-    )
-    time.sleep(0.5)
-    header = box.find_element(By.CSS_SELECTOR, ".jp-Dialog-header").text
-    body = box.find_element(By.CSS_SELECTOR, ".jp-Dialog-body").text
-    return header, body
-
-
-def close_dialog(driver):
-    from selenium.webdriver.common.by import By
-
-    for b in driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-button"):
-        if b.is_displayed():
-            b.click()
-            break
-    wait(
-        lambda: not driver.find_elements(By.CSS_SELECTOR, ".jp-Dialog-content"),
-        30,
-        what="the dialog to close",
-    )
 
 
 def validate(driver):
@@ -390,53 +331,6 @@ def formgrader(driver, lab, page="formgrader"):
     if page != "formgrader":
         driver.get(lab.url(page))  # the frame's own address, as its links go
     time.sleep(1.5)
-
-
-def formgrader_modal(driver, timeout=300):
-    """The text of formgrader's modal once it says something; closed after reading."""
-    from selenium.webdriver.common.by import By
-
-    modal = wait(
-        lambda: next(
-            (m for m in driver.find_elements(By.CSS_SELECTOR, ".modal") if m.is_displayed()), None
-        ),
-        timeout,
-        every=0.5,
-        what="formgrader's message",
-    )
-    time.sleep(0.5)
-    text = modal.text
-    return modal, text
-
-
-def close_modal(driver, modal):
-    from selenium.webdriver.common.by import By
-
-    for b in modal.find_elements(By.CSS_SELECTOR, ".modal-footer button"):
-        if b.is_displayed():
-            b.click()
-            break
-    time.sleep(1)
-
-
-def click_in_row(driver, row_text, cell_class):
-    """Click the link in column ``cell_class`` of the formgrader table row naming ``row_text``."""
-    from selenium.webdriver.common.by import By
-
-    row = wait(
-        lambda: next(
-            (r for r in driver.find_elements(By.CSS_SELECTOR, "tbody tr") if row_text in r.text),
-            None,
-        ),
-        60,
-        what=f"the row {row_text}",
-    )
-    link = wait(
-        lambda: next(iter(row.find_elements(By.CSS_SELECTOR, f"td.{cell_class} a")), None),
-        60,
-        what=f"the {cell_class} button of {row_text}",
-    )
-    link.click()
 
 
 def grades(course):
