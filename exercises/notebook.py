@@ -81,7 +81,8 @@ the assignment is graded, outside this notebook, against the exact value for you
 """
 
 ANSWER_TEMPLATE = (
-    "# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
+    "# your answer: {name} = ...   ({description} [{unit}])\n"
+    "### BEGIN SOLUTION\n# the grader computes the key "
     "for each student (accelab variant shows the problem)\n### END SOLUTION\n"
 )
 TEST_TEMPLATE = (

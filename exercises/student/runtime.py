@@ -22,7 +22,16 @@ from accelab.solver.units import Q_, ureg
 from .answers import MISSING, Asked, describe, read
 from .identity import identify
 
-__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "SELF_STUDY"]
+__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "CheckFailed", "SELF_STUDY"]
+
+
+class CheckFailed(AssertionError):
+    """A visible check that failed: shown in the notebook as its one sentence (what to
+    fix), not as a traceback through this module."""
+
+    def _render_traceback_(self):  # IPython shows these lines in place of a traceback
+        return [f"\x1b[0;31mCheck failed\x1b[0m: {self}"]
+
 
 SELF_STUDY = "self-study"
 #: the sandbox's statement while grading, the loaded variant, the ids a
@@ -196,17 +205,17 @@ def check_format(name, namespace):
     value itself: that is judged when the assignment is graded."""
     nv = _state["variant"]
     if nv is None:
-        raise AssertionError("the parameter cell has not run: run the notebook from the top")
+        raise CheckFailed("the parameter cell has not run: run the notebook from the top")
     if name not in nv.asked:
-        raise AssertionError(f"this notebook has no graded answer {name!r}")
+        raise CheckFailed(f"this notebook has no graded answer {name!r}")
     if _state["grading"] is None:
         problem = _not_the_submitters()
         if problem:
-            raise AssertionError(problem)
+            raise CheckFailed(problem)
     value = namespace.get(name, MISSING) if namespace is not None else MISSING
     reading = read(nv.asked[name], describe(value), ureg)
     if not reading.ok:
-        raise AssertionError(reading.problem)
+        raise CheckFailed(reading.problem)
     print(
         f"{name}: form and dimension are fine (its value is judged when the assignment is graded)"
     )
