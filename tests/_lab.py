@@ -205,12 +205,17 @@ def _constraints():
     return "\n".join(sorted(lines)) + "\n"
 
 
+_venv_ready = []
+
+
 def shared_venv():
     """A venv of Debian's python3 in ``build/lab-venv`` that every account can run,
     with accelab (built from this checkout as a wheel, so with its JupyterLab
     extension) and the same versions of its dependencies as this environment, plus
     ipywidgets and JupyterHub. Dependencies are installed once (until the versions
     change); accelab is installed afresh once per test session."""
+    if _venv_ready:
+        return SHARED_VENV
     SHARED_VENV.parent.mkdir(parents=True, exist_ok=True)
     constraints = _constraints()
     digest = hashlib.sha256(constraints.encode()).hexdigest()[:16]
@@ -254,6 +259,7 @@ def shared_venv():
         mode = folder.stat().st_mode
         if not mode & 0o005:
             os.chmod(folder, mode | 0o005)
+    _venv_ready.append(True)
     return SHARED_VENV
 
 

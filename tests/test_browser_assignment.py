@@ -88,7 +88,7 @@ def klass():
         "--roster",
         str(roster),
         "--families",
-        "tolerance,rotation",
+        "tolerance",
         cwd=CLASS,
     )
     with open(course / "nbgrader_config.py", "a") as fh:
@@ -310,11 +310,18 @@ def test_student_fetches_answers_validates_and_submits(klass, student_lab, drive
 
 
 # ---------------------------------------------------------------- the instructor
-def formgrader(driver, lab, page="formgrader"):
-    """Open formgrader (Nbgrader > Formgrader) and switch into its frame at ``page``."""
+def formgrader(driver, lab, page=None):
+    """Open formgrader from JupyterLab (Nbgrader > Formgrader) and switch into its frame;
+    or, with ``page``, go to that page of formgrader (as its links do, in a page of its
+    own: JupyterLab is not loaded again)."""
     from selenium.webdriver.common.by import By
 
     driver.switch_to.default_content()
+    if page:
+        driver.get(lab.url(page))
+        wait(lambda: driver.execute_script("return document.readyState") == "complete", 60)
+        time.sleep(1)
+        return
     driver.get(lab.url("lab"))
     lab_ready(driver)
     dismiss_toasts(driver)
@@ -328,8 +335,6 @@ def formgrader(driver, lab, page="formgrader"):
     )
     driver.switch_to.frame(frame)
     wait(lambda: driver.execute_script("return document.readyState") == "complete", 60)
-    if page != "formgrader":
-        driver.get(lab.url(page))  # the frame's own address, as its links go
     time.sleep(1.5)
 
 
@@ -403,7 +408,7 @@ def test_instructor_collects_grades_and_releases_feedback(
     time.sleep(0.5)
     shot(driver, "instructor-5-formgrade-math")
 
-    formgrader(driver, instructor_lab)
+    formgrader(driver, instructor_lab, "formgrader/manage_assignments")
     click_in_row(driver, "A", "generate-feedback")
     modal, text = formgrader_modal(driver)
     assert "Successfully generated feedback" in text, text
