@@ -14,7 +14,6 @@
 (function () {
   var NAME = "accelab-lab";
   var RUNTIME = "accelab.exercises.student.runtime";
-  var TITLE = "Form checked; values are judged at grading";
   var MESSAGE =
     "Every answer has the right form and dimension, and this notebook shows the values of " +
     "the student it will be collected as. Validate does not judge the values: they are " +
@@ -51,11 +50,6 @@
       message.setAttribute("data-accelab", "1");
       var p = message.querySelector("p") || message.appendChild(document.createElement("p"));
       p.innerText = MESSAGE;
-      var dialog = message.closest(".jp-Dialog-content");
-      var header = dialog && dialog.querySelector(".jp-Dialog-header");
-      if (header) {
-        header.innerText = TITLE;
-      }
     });
   }
 
