@@ -30,8 +30,18 @@ BUILD = ROOT / "build"
 SHOTS = BUILD / "screenshots"
 CHROMIUM = "/usr/bin/chromium"
 DRIVER = "/usr/bin/chromedriver"
+
+
+def _reachable(path):
+    """True when every folder above ``path`` lets other accounts through."""
+    return all(p.stat().st_mode & 0o001 for p in Path(path).resolve().parents)
+
+
+#: where the files other accounts use live (their environment, the class's exchange and
+#: configuration): build/ when other accounts can reach it, else a folder of /var/tmp
+SHARED = BUILD if _reachable(BUILD) else Path("/var/tmp/accelab-lab")
 #: the environment other accounts run: Debian's python3, the same versions as this one
-SHARED_VENV = BUILD / "lab-venv"
+SHARED_VENV = SHARED / "lab-venv"
 #: what it holds besides accelab and its dependencies
 SHARED_EXTRAS = ("ipywidgets", "jupyterhub")
 LAPTOP = (1366, 768)
@@ -253,12 +263,7 @@ def shared_venv():
         text=True,
     )
     assert proc.returncode == 0, proc.stderr[-3000:]
-    for folder in (SHARED_VENV, *SHARED_VENV.parents):  # every account can reach and run it
-        if folder == Path("/"):
-            break
-        mode = folder.stat().st_mode
-        if not mode & 0o005:
-            os.chmod(folder, mode | 0o005)
+    os.chmod(SHARED, 0o755)
     _venv_ready.append(True)
     return SHARED_VENV
 

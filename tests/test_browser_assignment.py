@@ -22,9 +22,9 @@ from pathlib import Path
 
 import pytest
 from _lab import (
-    BUILD,
     LAPTOP,
     NARROW,
+    SHARED,
     Lab,
     account,
     assignments_panel,
@@ -59,7 +59,7 @@ pytestmark = pytest.mark.slow
 
 STUDENT = "lab_ann"
 COURSE_ID = "mech101"
-CLASS = BUILD / "lab-class"
+CLASS = SHARED / "lab-class"
 
 
 @pytest.fixture(scope="module")

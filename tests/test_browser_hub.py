@@ -26,6 +26,7 @@ import pytest
 from _lab import (
     BUILD,
     LAPTOP,
+    SHARED,
     account,
     assignments_panel,
     browser,
@@ -59,7 +60,7 @@ pytestmark = pytest.mark.slow
 STUDENTS = ("lab_ann", "lab_hal")
 INSTRUCTOR = "lab_prof"
 COURSE_ID = "mech101"
-HUB = BUILD / "hub-class"
+HUB = SHARED / "hub-class"
 PASSWORD = secrets.token_hex(8)
 
 HUB_CONFIG = """\
