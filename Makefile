@@ -20,6 +20,9 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e ".[test]"
+	@# an editable install leaves out data files: accelab's JupyterLab extension is linked in
+	mkdir -p $(VENV)/share/jupyter/labextensions
+	ln -sfn $(CURDIR)/exercises/lab $(VENV)/share/jupyter/labextensions/accelab-lab
 	touch $(STAMP)
 
 test: $(STAMP)

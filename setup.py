@@ -21,4 +21,12 @@ packages = []
 for name, folder in LAYERS.items():
     packages += [name] + [f"{name}.{sub}" for sub in find_packages(folder)]
 
-setup(package_dir=LAYERS, packages=packages)
+#: accelab's JupyterLab extension (exercises/lab/: nbgrader's Validate message in an accelab
+#: assignment), installed where JupyterLab finds extensions
+LAB = "share/jupyter/labextensions/accelab-lab"
+data_files = [
+    (LAB, ["exercises/lab/package.json"]),
+    (f"{LAB}/static", ["exercises/lab/static/remoteEntry.js"]),
+]
+
+setup(package_dir=LAYERS, packages=packages, data_files=data_files)

@@ -39,7 +39,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import explore, in_g, point_label, stated, use_style, vector
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, RotatingPoint
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage
@@ -667,8 +667,8 @@ stated(np.angle(A_B, deg=True), "-75.22")
 #
 # Problems like problem 7-1 with instant feedback, for self-study: not graded, and never one
 # of a graded assignment's. Each run of the next cell draws a fresh problem (or give it a
-# seed, e.g. `practice("rotation", seed=12)`, to come back to one; `p.seed` tells you the
-# seed of the one you have). Work it out, then hand each answer to `p.check`: it says at once
+# seed, e.g. `practice("rotation", seed=12)`, to come back to one; `mine.seed` tells you the
+# seed of the one you have). Work it out, then hand each answer to `mine.check`: it says at once
 # whether it is right and, if not, what to look at (the unit, the sign, the size). A bare number
 # is read in the unit the problem asks for; a Quantity may be in any unit of the right kind.
 #
@@ -681,22 +681,20 @@ stated(np.angle(A_B, deg=True), "-75.22")
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("rotation")
-p
+mine = practice("rotation")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("A_A_x", Q_(-48500, "in/s^2"))
+# your answers to the problem above, e.g.:  mine.check("A_A_x", Q_(-48500, "in/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 2: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("rotation", seed=2)
-p
+example = practice("rotation", seed=2)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like.** The problem of seed 2, solved with the solver (`RotatingPoint`,
@@ -704,13 +702,13 @@ p.answers()
 # wrong kind of unit:
 
 # %%
-p = practice("rotation", seed=2)
-g = p.given
+example = practice("rotation", seed=2, show=False)
+g = example.given
 point = RotatingPoint(p=g["p"])
 at_A = point.solve(theta2=g["theta_A"], omega2=g["omega"], alpha2=g["alpha"])
-assert p.check("A_A_x", at_A.A.real.to("in/s^2"))  # right
-assert not p.check("A_A_x", -at_A.A.real.to("in/s^2"))  # a sign error
-assert not p.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s"))  # a velocity unit
+assert example.check("A_A_x", at_A.A.real.to("in/s^2"))  # right
+assert not example.check("A_A_x", -at_A.A.real.to("in/s^2"))  # a sign error
+assert not example.check("A_A_x", Q_(at_A.A.real.to("in/s^2").magnitude, "in/s"))  # a velocity unit
 
 # %% [markdown]
 # ## Common mistakes

@@ -39,7 +39,7 @@ import math
 import matplotlib.pyplot as plt
 
 from accelab.course.kit import explore, stated, use_style
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct, construct_case
 from accelab.solver.graphical.byhand import Markdown, by_hand, case_table
@@ -621,7 +621,7 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 # Fourbar problems with instant feedback, for self-study (not graded, and never one of a graded
 # assignment's): each run of the next cell draws a fresh linkage and input (or give a seed to
 # come back to one). Solve it graphically, with `construct_case` and the polygon, or by the
-# equations of notebook 3, then hand each answer to `p.check`, which says at once whether it is
+# equations of notebook 3, then hand each answer to `mine.check`, which says at once whether it is
 # right and, if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `fourbar` (with `coupler` for
@@ -633,33 +633,31 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("fourbar")
-p
+mine = practice("fourbar")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("alpha3", Q_(12.5, "rad/s^2"))
+# your answers to the problem above, e.g.:  mine.check("alpha3", Q_(12.5, "rad/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 3: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("fourbar", seed=3)
-p
+example = practice("fourbar", seed=3)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 3, solved by the graphical construction:
 
 # %%
-p = practice("fourbar", seed=3)
-g = dict(p.problem.given, mechanism="fourbar")
+example = practice("fourbar", seed=3, show=False)
+g = dict(example.problem.given, mechanism="fourbar")
 drawn = construct_case(g).values
-assert p.check("alpha4", Q_(drawn["alpha4"], "rad/s^2"))  # right
-assert not p.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2"))  # the sense read the wrong way
-assert not p.check("alpha4", Q_(drawn["alpha4"], "rad/s"))  # not an angular acceleration
+assert example.check("alpha4", Q_(drawn["alpha4"], "rad/s^2"))  # right
+assert not example.check("alpha4", Q_(-drawn["alpha4"], "rad/s^2"))  # the sense read the wrong way
+assert not example.check("alpha4", Q_(drawn["alpha4"], "rad/s"))  # not an angular acceleration
 
 # %% [markdown]
 # ## Common mistakes

@@ -41,7 +41,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import CIRCUIT_COLORS, explore, stated, use_style
 from accelab.course.renditions import panels, show
 from accelab.course.text import num, say, sci, table, vec, xy
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage
@@ -599,7 +599,7 @@ for circuit, (a3, a4, ab, ang) in (
 # Fourbar problems with instant feedback, for self-study (not graded, and never one of a graded
 # assignment's): each run of the next cell draws a fresh linkage and input, or give a seed to
 # come back to one. Solve it with eq. 7.12 (or `FourBar`, to check your hand work), then hand
-# each answer to `p.check`: it says at once whether it is right and, if not, what to look at
+# each answer to `mine.check`: it says at once whether it is right and, if not, what to look at
 # (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `fourbar`.
@@ -610,34 +610,32 @@ for circuit, (a3, a4, ab, ang) in (
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("fourbar")
-p
+mine = practice("fourbar")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("alpha4", Q_(-31.4, "rad/s^2"))
+# your answers to the problem above, e.g.:  mine.check("alpha4", Q_(-31.4, "rad/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("fourbar", seed=5)
-p
+example = practice("fourbar", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `FourBar`:
 
 # %%
-p = practice("fourbar", seed=5)
-g = p.given
+example = practice("fourbar", seed=5, show=False)
+g = example.given
 model = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("alpha3", res.alpha3)  # right
-assert not p.check("alpha3", res.alpha4)  # the rocker's, not the coupler's
-assert p.check("A_B_mag", abs(res.A_B).to("m/s^2"))  # right, in other units
+assert example.check("alpha3", res.alpha3)  # right
+assert not example.check("alpha3", res.alpha4)  # the rocker's, not the coupler's
+assert example.check("A_B_mag", abs(res.A_B).to("m/s^2"))  # right, in other units
 
 # %% [markdown]
 # ## Common mistakes

@@ -42,7 +42,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, NotAssemblable, Singular, SliderCrank
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon
@@ -587,7 +587,7 @@ assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
 #
 # Slider-crank problems with instant feedback, for self-study (not graded, and never one of a
 # graded assignment's). Each run of the next cell draws a fresh linkage, or give a seed to come
-# back to one; then hand each answer to `p.check`, which says at once whether it is right and,
+# back to one; then hand each answer to `mine.check`, which says at once whether it is right and,
 # if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `slidercrank`.
@@ -598,35 +598,33 @@ assert abs(fine.magnitude[np.argmax(speed[:3600])] - zero[0]) < 0.2
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("slidercrank")
-p
+mine = practice("slidercrank")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("A_slider", Q_(-1200, "in/s^2"))
+# your answers to the problem above, e.g.:  mine.check("A_slider", Q_(-1200, "in/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("slidercrank", seed=5)
-p
+example = practice("slidercrank", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `SliderCrank`:
 
 # %%
-p = practice("slidercrank", seed=5)
-g = p.given
+example = practice("slidercrank", seed=5, show=False)
+g = example.given
 res = SliderCrank(a=g["a"], b=g["b"], c=g["c"]).solve(
     theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"]
 )
-assert p.check("A_slider", res.d_ddot)  # right
-assert not p.check("A_slider", abs(res.A_A))  # the crank pin's, not the slider's
-assert not p.check("alpha3", -res.alpha3)  # the sign of alpha3 turned
+assert example.check("A_slider", res.d_ddot)  # right
+assert not example.check("A_slider", abs(res.A_A))  # the crank pin's, not the slider's
+assert not example.check("alpha3", -res.alpha3)  # the sign of alpha3 turned
 
 # %% [markdown]
 # ## Common mistakes

@@ -85,7 +85,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, InvertedSliderCrank, SlottedLink
 from accelab.solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon
@@ -908,7 +908,7 @@ stated(stops["omega4"][1], "331.0")
 #
 # Inverted slider-crank problems with their Coriolis term, with instant feedback, for self-study
 # (not graded, and never one of a graded assignment's). Each run of the next cell draws a fresh
-# linkage, or give a seed to come back to one; hand each answer to `p.check`, which says at once
+# linkage, or give a seed to come back to one; hand each answer to `mine.check`, which says at once
 # whether it is right and, if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `coriolis`.
@@ -919,34 +919,33 @@ stated(stops["omega4"][1], "331.0")
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("coriolis")
-p
+mine = practice("coriolis")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("A_cor_mag", Q_(850, "in/s^2"))
+# your answers to the problem above, e.g.:  mine.check("A_cor_mag", Q_(850, "in/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("coriolis", seed=5)
-p
+example = practice("coriolis", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `InvertedSliderCrank`:
 
 # %%
-p = practice("coriolis", seed=5)
-g = p.given
+example = practice("coriolis", seed=5, show=False)
+g = example.given
 model = InvertedSliderCrank(a=g["a"], c=g["c"], d=g["d"], gamma=g["gamma"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("A_cor_mag", abs(res.A_coriolis))  # right
-assert not p.check("A_cor_mag", abs(res.A_coriolis) / 2)  # the factor 2 of eq. 7.19b forgotten
-assert p.check("alpha4", res.alpha4)  # right
+assert example.check("A_cor_mag", abs(res.A_coriolis))  # right
+# the factor 2 of eq. 7.19b forgotten:
+assert not example.check("A_cor_mag", abs(res.A_coriolis) / 2)
+assert example.check("alpha4", res.alpha4)  # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -43,7 +43,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar
 from accelab.solver.graphical import fivebar as fivebar_construction
 from accelab.solver.graphical.draw import draw_linkage
@@ -642,7 +642,7 @@ assert cycle_turns(-2 / 3) == 3
 #
 # Geared fivebar problems with instant feedback, for self-study (not graded, and never one of
 # a graded assignment's). Each run of the next cell draws a fresh linkage, or give a seed to
-# come back to one; hand each answer to `p.check`, which says at once whether it is right and,
+# come back to one; hand each answer to `mine.check`, which says at once whether it is right and,
 # if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `fivebar`.
@@ -653,34 +653,32 @@ assert cycle_turns(-2 / 3) == 3
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("fivebar")
-p
+mine = practice("fivebar")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("alpha3", Q_(-410, "rad/s^2"))
+# your answers to the problem above, e.g.:  mine.check("alpha3", Q_(-410, "rad/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("fivebar", seed=5)
-p
+example = practice("fivebar", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `GearedFiveBar`:
 
 # %%
-p = practice("fivebar", seed=5)
-g = p.given
+example = practice("fivebar", seed=5, show=False)
+g = example.given
 model = GearedFiveBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"], f=g["f"], lam=g["lam"], phi=g["phi"])
 res = model.solve(theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"])
-assert p.check("alpha3", res.alpha3)  # right
-assert not p.check("alpha4", res.alpha3)  # link 3's, not link 4's
-assert p.check("alpha4", res.alpha4)  # right
+assert example.check("alpha3", res.alpha3)  # right
+assert not example.check("alpha4", res.alpha3)  # link 3's, not link 4's
+assert example.check("alpha4", res.alpha4)  # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -40,7 +40,7 @@ from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style, vector
 from accelab.course.renditions import show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar
 
 use_style()
@@ -567,7 +567,7 @@ assert np.all(np.diff(along) > 0)  # grows from A to B
 #
 # Coupler-point problems with instant feedback, for self-study (not graded, and never one of a
 # graded assignment's). Each run of the next cell draws a fresh linkage and point, or give a seed
-# to come back to one; hand each answer to `p.check`, which says at once whether it is right and,
+# to come back to one; hand each answer to `mine.check`, which says at once whether it is right and,
 # if not, what to look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `coupler` (with `fourbar` for
@@ -579,29 +579,27 @@ assert np.all(np.diff(along) > 0)  # grows from A to B
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("coupler")
-p
+mine = practice("coupler")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("A_P_mag", Q_(730, "in/s^2"))
+# your answers to the problem above, e.g.:  mine.check("A_P_mag", Q_(730, "in/s^2"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("coupler", seed=5)
-p
+example = practice("coupler", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `FourBar`:
 
 # %%
-p = practice("coupler", seed=5)
-g = p.given
+example = practice("coupler", seed=5, show=False)
+g = example.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
     theta2=g["theta2"],
     omega2=g["omega2"],
@@ -610,9 +608,10 @@ res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
     p=g["p"],
     delta3=g["delta3"],
 )
-assert p.check("A_P_mag", abs(res.A_P))  # right
-assert not p.check("A_P_mag", abs(res.A_A))  # the pin's acceleration, not the point's
-assert p.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))  # right, a bare number in deg
+assert example.check("A_P_mag", abs(res.A_P))  # right
+assert not example.check("A_P_mag", abs(res.A_A))  # the pin's acceleration, not the point's
+# right, a bare number in deg:
+assert example.check("A_P_ang", np.angle(res.A_P.magnitude, deg=True))
 
 # %% [markdown]
 # ## Common mistakes

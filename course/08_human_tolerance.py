@@ -38,7 +38,7 @@ import numpy as np
 from accelab.course.kit import COLORS, G0, explore, in_g, stated, use_style
 from accelab.course.renditions import show
 from accelab.course.text import num, say, table
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar
 
 use_style()
@@ -562,7 +562,7 @@ stated(floating, "15.7")
 #
 # Amusement-ride problems with instant feedback, for self-study (not graded, and never one of
 # a graded assignment's). Each run of the next cell draws a fresh ride, or give a seed to come
-# back to one; hand each answer to `p.check`, which says at once whether it is right and, if not,
+# back to one; hand each answer to `mine.check`, which says at once whether it is right and, if not,
 # what to look at (the unit, the size).
 #
 # The graded exercise family that practises this notebook is `tolerance`.
@@ -573,22 +573,20 @@ stated(floating, "15.7")
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("tolerance")
-p
+mine = practice("tolerance")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("A_g", Q_(1.2, "standard_gravity"))
+# your answers to the problem above, e.g.:  mine.check("A_g", Q_(1.2, "standard_gravity"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("tolerance", seed=5)
-p
+example = practice("tolerance", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5: the passenger is a point on an arm
@@ -597,11 +595,11 @@ p.answers()
 # %%
 from accelab.solver import RotatingPoint
 
-p = practice("tolerance", seed=5)
-g = p.given
+example = practice("tolerance", seed=5, show=False)
+g = example.given
 A = RotatingPoint(p=g["R"]).solve(theta2="0 deg", omega2=g["omega"], alpha2=g["alpha"]).A
-assert p.check("A_g", abs(A).to("standard_gravity"))  # right
-assert not p.check("A_g", abs(A).to("m/s^2").magnitude)  # m/s^2 handed in where g was asked
+assert example.check("A_g", abs(A).to("standard_gravity"))  # right
+assert not example.check("A_g", abs(A).to("m/s^2").magnitude)  # m/s^2 handed in where g was asked
 
 # %% [markdown]
 # ## Common mistakes

@@ -36,7 +36,7 @@ import numpy as np
 from accelab.course.kit import COLORS, explore, stated, use_style
 from accelab.course.renditions import panels, show
 from accelab.course.text import num, say, sci, table, vec
-from accelab.exercises.practice import practice
+from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
 
 use_style()
@@ -492,13 +492,13 @@ show(
 # the tangent: steep stretches of $\alpha_3$ are where the jerk is large.
 
 # %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "The angular jerk is the slope of the angular acceleration: $\\alpha_3$ over a cycle with the tangent at several crank angles $\\theta_2$."}}
-steady = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0)
+jerk_cycle = fourbar.solve(theta2=theta, omega2="10 rad/s", alpha2=0)
 
 
 def draw(theta2=60):
     i = int(round(theta2))
-    al = steady.alpha3.magnitude
-    phi3 = steady.jerk3.magnitude[i]
+    al = jerk_cycle.alpha3.magnitude
+    phi3 = jerk_cycle.jerk3.magnitude[i]
     slope = phi3 / 10.0 * np.pi / 180  # d(alpha3)/d(theta2) per degree
     fig, ax = plt.subplots(figsize=(4.6, 3.6))
     ax.plot(deg, al, color="black", lw=2)
@@ -622,7 +622,7 @@ stated(min(where, 360 - where), "59")
 #
 # Jerk problems with instant feedback, for self-study (not graded, and never one of a graded
 # assignment's). Each run of the next cell draws a fresh fourbar, or give a seed to come back to
-# one; hand each answer to `p.check`, which says at once whether it is right and, if not, what to
+# one; hand each answer to `mine.check`, which says at once whether it is right and, if not, what to
 # look at (the unit, the sign, the size).
 #
 # The graded exercise family that practises this notebook is `jerk`.
@@ -633,36 +633,34 @@ stated(min(where, 360 - where), "59")
 # every run, so the page shows it, with its answers folded.)
 
 # %% tags=["remove-output"]
-p = practice("jerk")
-p
+mine = practice("jerk")  # a fresh problem, shown by this cell
 
 # %%
-# your answers, e.g.:  p.check("jerk4", Q_(-2.1e4, "rad/s^3"))
+# your answers to the problem above, e.g.:  mine.check("jerk4", Q_(-2.1e4, "rad/s^3"))
 
 # %% [markdown]
 # **A problem to try on this page**, seed 5: work it out on paper (or with the
 # solver), then unfold the answers.
 
 # %%
-p = practice("jerk", seed=5)
-p
+example = practice("jerk", seed=5)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # **What a check looks like**, on the problem of seed 5, modelled with `FourBar` (the input's
 # jerk $\varphi_2$ is zero unless the problem gives one):
 
 # %%
-p = practice("jerk", seed=5)
-g = p.given
+example = practice("jerk", seed=5, show=False)
+g = example.given
 res = FourBar(a=g["a"], b=g["b"], c=g["c"], d=g["d"]).solve(
     theta2=g["theta2"], omega2=g["omega2"], alpha2=g["alpha2"], circuit=g["circuit"]
 )
-assert p.check("jerk4", res.jerk4)  # right
-assert not p.check("jerk4", res.alpha4)  # an angular acceleration, not a jerk
-assert p.check("J_B_mag", abs(res.J_B))  # right
+assert example.check("jerk4", res.jerk4)  # right
+assert not example.check("jerk4", res.alpha4)  # an angular acceleration, not a jerk
+assert example.check("J_B_mag", abs(res.J_B))  # right
 
 # %% [markdown]
 # ## Common mistakes

@@ -8,6 +8,15 @@ Jupyter session. Executed headless (the tests and the site build set
 slider instead, side by side, so a printed or static page still shows what
 moving the slider teaches.
 
+Every control works over its whole range: :func:`range_values` lists the values a
+person reaches by moving each slider to its ends and a few steps in between, and
+:func:`check_ranges` draws them all. With ``ACCELAB_CHECK_WIDGETS`` set to a file
+name (the course tests set it), ``explore`` runs that check before it draws and
+appends what it checked to that file as one JSON line, and :func:`check_explored`
+checks them all again after the notebook's last cell; a failing value raises.
+In a live notebook a value that ``draw`` cannot draw shows a sentence in place
+of the figure, never a traceback.
+
 >>> from accelab.course.kit import explore
 >>> def draw(theta2, omega2):
 ...     fig, ax = plt.subplots()
@@ -17,6 +26,7 @@ moving the slider teaches.
 """
 
 import io
+import json
 import math
 import os
 
@@ -56,6 +66,9 @@ __all__ = [
     "static_values",
     "small_multiples",
     "explore",
+    "range_values",
+    "check_ranges",
+    "check_explored",
     "cartesian",
     "polar",
     "in_g",
@@ -172,6 +185,15 @@ def _description(name, unit):
     return f"{_symbol(name)} [{_unit_text(unit)}]" if unit else _symbol(name)
 
 
+def _description(name, unit):
+    """A slider's label: its name and unit (``"theta2 [deg]"``), or the unit alone
+    when it is the name (``"rpm"``, never ``"rpm [rpm]"``)."""
+    unit = unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
+    if not unit or name.strip().lower() == unit.strip().lower():
+        return name
+    return f"{name} [{unit}]"
+
+
 def _render(fig):
     """The figure as an RGBA array at its own pixel size."""
     buf = io.BytesIO()
@@ -261,6 +283,101 @@ def small_multiples(
     return fig
 
 
+def _is_int_slider(lo, hi, step, default):
+    return all(float(x).is_integer() for x in (lo, hi, step, default))
+
+
+def _on_grid(lo, hi, step, k, integer):
+    """The value of the k-th step from ``lo`` as a slider gives it (clipped to hi)."""
+    if integer:
+        return int(min(lo + k * step, hi))
+    return float(min(lo + k * step, hi))
+
+
+def range_values(**sliders):
+    """The values a person reaches by moving the controls of ``explore``: each
+    slider at its minimum, one and two steps above it, the middle of its range,
+    two and one steps below its maximum and its maximum, the others at their
+    defaults; then every slider at its minimum together, and at its maximum
+    together. A list of ``{name: value}``, each value of the type the slider
+    hands ``draw`` (int for an integer slider), without repeats.
+
+    >>> range_values(theta2=(0, 360, 5, 30, "deg"))[:3]
+    [{'theta2': 0}, {'theta2': 5}, {'theta2': 10}]
+    """
+    specs = {k: _parse(k, v) for k, v in sliders.items()}
+    defaults = {}
+    grids = {}
+    for k, (lo, hi, step, default, _) in specs.items():
+        integer = _is_int_slider(lo, hi, step, default)
+        n = int(math.floor((hi - lo) / step + 1e-9))  # steps from lo to the last one <= hi
+        ks = sorted({0, 1, 2, n // 2, n - 2, n - 1, n} & set(range(n + 1)))
+        grid = [_on_grid(lo, hi, step, j, integer) for j in ks]
+        if not math.isclose(grid[-1], hi):  # the slider's end is not on its step grid
+            grid.append(int(hi) if integer else float(hi))
+        grids[k] = grid
+        defaults[k] = int(default) if integer else float(default)
+    out = []
+    for k, grid in grids.items():
+        out.extend({**defaults, k: v} for v in grid)
+    if len(specs) > 1:
+        out.append({k: g[0] for k, g in grids.items()})
+        out.append({k: g[-1] for k, g in grids.items()})
+    unique = []
+    for values in out:
+        if values not in unique:
+            unique.append(values)
+    return unique
+
+
+def check_ranges(draw, **sliders):
+    """Draw (and render) the figure of every value of :func:`range_values`;
+    raise ``AssertionError`` naming the values where ``draw`` failed and why.
+    Returns how many figures were drawn."""
+    failed = []
+    values = range_values(**sliders)
+    for kw in values:
+        try:
+            fig = _figure_of(draw(**kw))
+            fig.canvas.draw()  # the errors of laying out text and artists too
+            plt.close(fig)
+        except Exception as exc:  # noqa: BLE001 -- reported below, with the values
+            plt.close("all")
+            failed.append(f"{kw}: {type(exc).__name__}: {exc}")
+    if failed:
+        raise AssertionError(
+            f"explore: draw fails at {len(failed)} of {len(values)} values of its controls:\n"
+            + "\n".join(failed)
+        )
+    return len(values)
+
+
+#: the explore() calls of this kernel, kept while ACCELAB_CHECK_WIDGETS is set
+_EXPLORED = []
+
+
+def _log_check(sliders, drawn, when):
+    path = os.environ.get("ACCELAB_CHECK_WIDGETS", "")
+    if not path:
+        return
+    spec = {k: list(v) for k, v in sliders.items()}
+    with open(path, "a") as fh:
+        fh.write(json.dumps({"sliders": spec, "drawn": drawn, "when": when}) + "\n")
+
+
+def check_explored():
+    """Check every control of this kernel's ``explore`` calls again, as a person
+    meets them after Run All: with the notebook's names as the last cells left
+    them (a later cell that rebinds a name ``draw`` reads breaks the slider).
+    Only while ``ACCELAB_CHECK_WIDGETS`` is set; returns how many figures were drawn."""
+    drawn = 0
+    for draw, sliders in _EXPLORED:
+        n = check_ranges(draw, **sliders)
+        _log_check(sliders, n, "after the last cell")
+        drawn += n
+    return drawn
+
+
 def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders):
     """Sliders for ``draw`` in a live notebook; a static small-multiples figure
     when executed headless.
@@ -269,7 +386,8 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
     ----------
     draw : callable
         ``draw(**values)`` makes one figure (return the Figure) for one value
-        of every slider.
+        of every slider. It must draw at every value a slider reaches (its ends
+        included): :func:`check_ranges` tries them.
     frames : int
         Panels of the static figure (values of the first slider, from its
         min to its max on its step grid; a full-turn slider skips 360).
@@ -285,6 +403,9 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
     if not sliders:
         raise ValueError("explore needs at least one slider, e.g. theta2=(0, 360, 5, 30)")
     specs = {k: _parse(k, v) for k, v in sliders.items()}
+    if os.environ.get("ACCELAB_CHECK_WIDGETS", ""):
+        _log_check(sliders, check_ranges(draw, **sliders), "when explore() ran")
+        _EXPLORED.append((draw, dict(sliders)))
     if is_static():
         name, (lo, hi, step, default, unit) = next(iter(specs.items()))
         fixed = {k: s[3] for k, s in list(specs.items())[1:]}
@@ -303,15 +424,11 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
         _show_object(Renditions(png(wide), png(narrow), alt))
         return None
     import ipywidgets as widgets
-    from IPython.display import display
+    from IPython.display import Markdown, display
 
     controls = {}
     for k, (lo, hi, step, default, unit) in specs.items():
-        kind = (
-            widgets.IntSlider
-            if all(float(x).is_integer() for x in (lo, hi, step, default))
-            else widgets.FloatSlider
-        )
+        kind = widgets.IntSlider if _is_int_slider(lo, hi, step, default) else widgets.FloatSlider
         controls[k] = kind(
             min=lo,
             max=hi,
@@ -320,11 +437,17 @@ def explore(draw, *, frames=STATIC_FRAMES, values=None, columns=None, **sliders)
             description=_description(k, unit),
             continuous_update=False,
             style={"description_width": "initial"},
-            layout=widgets.Layout(width="420px"),
+            layout=widgets.Layout(width="420px", max_width="100%"),
         )
 
     def update(**kw):
-        fig = _figure_of(draw(**kw))
+        try:
+            fig = _figure_of(draw(**kw))
+        except Exception as exc:  # noqa: BLE001 -- a sentence in place of the figure
+            plt.close("all")
+            at = ", ".join(_label(k, v, specs[k][4]) for k, v in kw.items())
+            display(Markdown(f"**Nothing to draw at {at}**: {exc}"))
+            return
         _show(fig)
 
     display(widgets.interactive(update, **controls))

@@ -56,8 +56,9 @@ def _code(source, grade_id, **kw):
 
 INSTRUCTIONS = """# {title}
 
-Each student gets their own values: the cell below loads yours from your student id
-({student_hint}), so run it first. `v.given(k)` gives the values of problem k as Quantities,
+Each student gets their own values: the cell below loads yours, the values of the student
+that nbgrader will collect your submission as ({student_hint}), and says whose they are, so
+run it first. `v.given(k)` gives the values of problem k as Quantities,
 ready for the solver (for example `g = v.given(1); FourBar(a=g["a"], b=g["b"], c=g["c"],
 d=g["d"])`).
 
@@ -68,8 +69,9 @@ Quantity. Angles are measured counter-clockwise from +x; omega and alpha are pos
 counter-clockwise.
 
 **How your answers are judged.** The cell after each answer checks now that the variable
-exists and has the right form and dimension. Its value is judged when the assignment is
-graded, outside this notebook, against the exact value for your own values:
+exists and has the right form and dimension, and that this notebook shows your own values;
+so does *Validate*, which therefore passes with wrong numbers too. The values are judged when
+the assignment is graded, outside this notebook, against the exact value for your own values:
 
 - a number is right when it is within {tol} of the exact value (|yours - exact| <= {tol} of
   |exact|), in any unit of the right dimension;
@@ -79,7 +81,8 @@ graded, outside this notebook, against the exact value for your own values:
 """
 
 ANSWER_TEMPLATE = (
-    "# {description} [{unit}]\n### BEGIN SOLUTION\n# the grader computes the key "
+    "# your answer: {name} = ...   ({description} [{unit}])\n"
+    "### BEGIN SOLUTION\n# the grader computes the key "
     "for each student (accelab variant shows the problem)\n### END SOLUTION\n"
 )
 TEST_TEMPLATE = (
@@ -97,7 +100,10 @@ def build_notebook(spec, title=None):
         _md(
             INSTRUCTIONS.format(
                 title=title,
-                student_hint="your JupyterHub user name, or 'self-study' when working alone",
+                student_hint=(
+                    "your JupyterHub user name; without JupyterHub, the account you fetched the "
+                    "assignment from; else the id you set in `ACCELAB_STUDENT`"
+                ),
                 tol=f"{100 * spec['tolerance']:g}%",
                 angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}",
             ),
@@ -106,9 +112,9 @@ def build_notebook(spec, title=None):
     ]
     cells.append(
         _code(
-            "from accelab.exercises.student.runtime import ureg, Q_, load_variant, student_id\n"
+            "from accelab.exercises.student.runtime import ureg, Q_, load_variant\n"
             f"SPEC = {json.dumps(spec, sort_keys=True)}\n"
-            "v = load_variant(SPEC, student_id())\n",
+            "v = load_variant(SPEC)\n",
             "parameters",
             locked=True,
         )

@@ -25,7 +25,7 @@ from .grader.key import key_of
 from .silence import silenced
 from .student.answers import describe
 
-__all__ = ["practice", "Practice"]
+__all__ = ["practice", "Practice", "fresh_seed"]
 
 
 class Practice:
@@ -70,7 +70,7 @@ class Practice:
         for symbol, text in self.problem.given.items():
             try:
                 out[symbol] = Q_(text)
-            except Exception:
+            except Exception:  # noqa: BLE001 -- a word (the circuit) stays text
                 out[symbol] = text
         return out
 
@@ -115,7 +115,7 @@ class Practice:
         try:
             with silenced():
                 return statement_figure(self.problem, shared=False)
-        except Exception:
+        except Exception:  # noqa: BLE001 -- the problem is shown without its figure
             return None
 
     def _repr_markdown_(self):
@@ -131,12 +131,18 @@ class Practice:
             if png
             else ""
         )
-        first = next(iter(self.asked))
         return (
             f"**Practice: {self.problem.title}** (family `{self.family}`, seed "
             f"{self.seed}; not graded)\n\n{self.problem.statement}\n{figure}\n"
             f"| given | value |\n|---|---|\n{rows}\n\n"
             f"| answer | quantity | unit |\n|---|---|---|\n{asked}\n\n"
+            f"{self._how_to_check()}"
+        )
+
+    def _how_to_check(self):
+        """The sentence under the problem that says how to check an answer."""
+        first = next(iter(self.asked))
+        return (
             f"Check an answer with `p.check({first!r}, Q_(..., "
             f"{self.asked[first].unit!r}))`; numbers are right within "
             f"{100 * self.tolerance:g}%, directions within {self.angle_tolerance:g} deg."
@@ -153,9 +159,12 @@ class Practice:
 def practice(family, seed=None, units="US"):
     """A practice problem of ``family`` (a fresh one each call, or the one of
     ``seed``, so you can come back to it)."""
-    if seed is None:
-        seed = random.SystemRandom().randrange(1, 10**6)
-    return Practice(family, seed, units)
+    return Practice(family, fresh_seed() if seed is None else seed, units)
+
+
+def fresh_seed():
+    """The seed of a fresh practice problem."""
+    return random.SystemRandom().randrange(1, 10**6)
 
 
 class _Answers:

@@ -89,6 +89,14 @@ def written_course():
     return _written["dir"]
 
 
+CHECK_AFTER_RUN_ALL = "from accelab.course.kit import check_explored\ncheck_explored()"
+
+
+def widgets_log(notebook):
+    """Where the kernel of ``notebook`` writes the controls its explore() calls checked."""
+    return BUILD / f"{Path(notebook).stem}.widgets.jsonl"
+
+
 def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     """Execute the written ``notebook`` from :data:`RUN` and write the result to
     ``outdir``; returns the executed notebook. Raises :class:`NotebookFailed` on
@@ -98,6 +106,9 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     from nbclient.exceptions import CellExecutionError
 
     nb = nbformat.read(notebook, as_version=4)
+    # after the last cell, every slider again, as a person moves it after Run All (taken out
+    # before the notebook is kept: the docs build's cache matches the notebook's own cells)
+    nb.cells.append(nbformat.v4.new_code_cell(CHECK_AFTER_RUN_ALL))
     RUN.mkdir(parents=True, exist_ok=True)
     outdir.mkdir(parents=True, exist_ok=True)
     target = outdir / Path(notebook).name
@@ -111,14 +122,22 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
         record_timing=False,
         resources={"metadata": {"path": str(RUN)}},
     )
+    env = kernel_env()
+    # every explore() draws each control at its ends and a few steps between (kit.check_ranges)
+    checked = widgets_log(notebook)
+    checked.unlink(missing_ok=True)
+    env["ACCELAB_CHECK_WIDGETS"] = str(checked)
     try:
-        client.execute(env=kernel_env())
+        client.execute(env=env)
     except CellExecutionError as exc:
+        nb.cells.pop()
         nbformat.write(nb, target)
         raise NotebookFailed(f"{Path(notebook).name} failed:\n{exc}") from None
     except Exception as exc:  # a timeout, a dead kernel
+        nb.cells.pop()
         nbformat.write(nb, target)
         raise NotebookFailed(f"{Path(notebook).name} failed: {type(exc).__name__}: {exc}") from None
+    nb.cells.pop()
     found = problems(nb)
     nbformat.write(nb, target)
     if found:
@@ -242,6 +261,13 @@ def test_notebook_executes(source):
             for rendition in ("accelab-wide", "accelab-narrow"):
                 assert f'class="{rendition}"' in html, f"no {rendition} rendition"
             assert len(html) < MAX_ANIMATION * 2, f"an animation of {len(html) / 1e6:.1f} MB"
+    calls = text.count("\nexplore(")
+    if calls:  # each control was drawn at its ends and a few steps between, without an error
+        log = widgets_log(path).read_text().splitlines() if widgets_log(path).exists() else []
+        assert len(log) == 2 * calls, (
+            f"{calls} explore() calls, {len(log)} checks of their range (one as each ran, "
+            "one after the last cell)"
+        )
     if "practice(" in text:
         # the notebook asserts p.check's verdicts; here: each was said, with a reason
         lines = _stdout(nb).splitlines()

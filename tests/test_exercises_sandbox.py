@@ -86,7 +86,7 @@ print("student", sorted(f for f in os.listdir(os.path.dirname(exercises.__file__
     out = text(r)
     assert "uid 0" not in out and "NETWORK" not in out and "no network" in out
     assert "exercises ['__init__.py', 'student']" in out
-    assert "student ['__init__.py', 'answers.py', 'kernel.py', 'runtime.py']" in out
+    assert "student ['__init__.py', 'answers.py', 'identity.py', 'kernel.py', 'runtime.py']" in out
     assert "True" not in out.split("env")[1]  # no test folder, no /etc/shadow, no /root
     env = out.split("env ")[1].split("\n")[0]
     assert "ACCELAB_STUDENT_ID" in env and "SECRET" not in env and "USER" not in env

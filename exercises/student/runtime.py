@@ -6,10 +6,13 @@ value: a student's values are checked for form and dimension (the visible test
 cells), and the grader judges them later, in its own process, against the key
 it computes for the submitter (:mod:`accelab.exercises.grader`).
 
-The student id comes from, in order: ``ACCELAB_STUDENT_ID``, ``JUPYTERHUB_USER``
-(the student's own server), and else the self-study default ``"self-study"``.
-While a submission is graded, the sandbox hands this module the submitter's
-statement before any cell runs, and only that one can be loaded.
+The notebook shows the values of the student that nbgrader will collect its
+submission as (:mod:`.identity`: the JupyterHub user, else the id nbgrader's exchange
+submits this account's work as, else an explicit ``ACCELAB_STUDENT``); with none of
+them it shows the self-study values and says how to set the id, and its checks fail
+until one is set. Its checks (Validate) also fail when the values it shows are not
+the submitter's. While a submission is graded, the sandbox hands this module the
+submitter's statement before any cell runs, and only that one can be loaded.
 """
 
 import os
@@ -17,22 +20,36 @@ import os
 from accelab.solver.units import Q_, ureg
 
 from .answers import MISSING, Asked, describe, read
+from .identity import identify
 
-__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "SELF_STUDY"]
+__all__ = ["ureg", "Q_", "student_id", "load_variant", "check_format", "CheckFailed", "SELF_STUDY"]
+
+
+class CheckFailed(AssertionError):
+    """A visible check that failed: shown in the notebook as its one sentence (what to
+    fix), not as a traceback through this module."""
+
+    def _render_traceback_(self):  # IPython shows these lines in place of a traceback
+        return [f"\x1b[0;31mCheck failed\x1b[0m: {self}"]
+
 
 SELF_STUDY = "self-study"
 #: the sandbox's statement while grading, the loaded variant, the ids a
 #: notebook asked for that it was not given
-_state = {"grading": None, "variant": None, "refused": []}
+_state = {"grading": None, "variant": None, "refused": [], "spec": None}
 
 
-def student_id():
-    """The id whose values this notebook shows."""
-    for var in ("ACCELAB_STUDENT_ID", "JUPYTERHUB_USER"):
-        value = os.environ.get(var, "").strip()
-        if value:
-            return value
-    return SELF_STUDY
+def student_id(spec=None):
+    """The id whose values a notebook of the assignment ``spec`` shows: the student
+    nbgrader will collect its submission as (:func:`.identity.identify`), else
+    ``"self-study"``. While a submission is graded: the id the grader gave."""
+    if _state["grading"] is not None:
+        for var in ("ACCELAB_STUDENT_ID", "JUPYTERHUB_USER"):
+            value = os.environ.get(var, "").strip()
+            if value:
+                return value
+        return SELF_STUDY
+    return identify(spec if spec is not None else _state["spec"]).student or SELF_STUDY
 
 
 class NotebookVariant:
@@ -52,7 +69,7 @@ class NotebookVariant:
         for symbol, text in self.problems[number - 1]["given"].items():
             try:
                 out[symbol] = Q_(text)
-            except Exception:
+            except Exception:  # noqa: BLE001 -- a word (the circuit) stays text
                 out[symbol] = text
         return out
 
@@ -111,9 +128,11 @@ def _tex(symbol):
 
 def load_variant(spec, student=None):
     """The values of ``student`` (default: :func:`student_id`) for the
-    assignment ``spec``, remembered for the visible checks."""
-    student = str(student if student is not None else student_id())
+    assignment ``spec``, remembered for the visible checks. Outside grading it
+    says whose values they are and why (or how to set the student id)."""
+    _state["spec"] = spec
     grading = _state["grading"]
+    student = str(student if student is not None else student_id(spec))
     if grading is not None:
         if student != grading["student"]:
             _state["refused"].append(student)
@@ -124,12 +143,60 @@ def load_variant(spec, student=None):
             )
         statement = grading
     else:
-        from .assignment import statement_of  # not available inside the grading sandbox
+        # the instructor's side draws the variant; it is never reached inside the grading
+        # sandbox (which hands over the statement first), where it is not there at all
+        from ..assignment import statement_of
 
         statement = statement_of(spec, student)
     nv = NotebookVariant(statement)
     _state["variant"] = nv
+    if grading is None:
+        print(_whose(nv.student, identify(spec)))
     return nv
+
+
+def _whose(shown, identity):
+    """The sentence under the parameter cell: whose values the notebook shows."""
+    if identity.student is None:
+        return (
+            "These are the SELF-STUDY values: no student id was found (no JupyterHub user, "
+            "no assignment of this course that nbgrader's exchange released to this account, "
+            "no ACCELAB_STUDENT). If you are a student of the course, set your id and run the "
+            "notebook again from the top: put `%env ACCELAB_STUDENT=your-id` in a cell above "
+            "this one (or start Jupyter with ACCELAB_STUDENT=your-id). Until then its checks "
+            "fail."
+        )
+    if shown != identity.student:
+        return (
+            f"These are the values of student {shown!r}, but this notebook will be collected as "
+            f"student {identity.student!r} ({identity.how}) and graded against "
+            f"{identity.student!r}'s values: run the notebook from the top without changing "
+            f"this cell."
+        )
+    return f"These are the values of student {shown!r} ({identity.how})."
+
+
+def _not_the_submitters():
+    """Why the loaded values are not those of the student the notebook will be
+    collected as, or None when they are (outside grading only)."""
+    nv = _state["variant"]
+    identity = identify(_state["spec"])
+    if identity.student is not None and nv.student == identity.student:
+        return None
+    if identity.student is None:
+        return (
+            "This notebook shows the self-study values, not a student's: no student id was "
+            "found (no JupyterHub user, no assignment of this course released to this account "
+            "by nbgrader's exchange, no ACCELAB_STUDENT). Set your id (`%env "
+            "ACCELAB_STUDENT=your-id` in a cell above the parameter cell) and run the notebook "
+            "from the top."
+        )
+    return (
+        f"This notebook shows the values of student {nv.student!r}, but nbgrader will collect "
+        f"it as student {identity.student!r} ({identity.how}), whose values differ: its "
+        f"answers would be judged against {identity.student!r}'s values. Run the notebook from "
+        f"the top (Restart Kernel and Run All Cells) without changing its parameter cell."
+    )
 
 
 def check_format(name, namespace):
@@ -138,13 +205,17 @@ def check_format(name, namespace):
     value itself: that is judged when the assignment is graded."""
     nv = _state["variant"]
     if nv is None:
-        raise AssertionError("the parameter cell has not run: run the notebook from the top")
+        raise CheckFailed("the parameter cell has not run: run the notebook from the top")
     if name not in nv.asked:
-        raise AssertionError(f"this notebook has no graded answer {name!r}")
+        raise CheckFailed(f"this notebook has no graded answer {name!r}")
+    if _state["grading"] is None:
+        problem = _not_the_submitters()
+        if problem:
+            raise CheckFailed(problem)
     value = namespace.get(name, MISSING) if namespace is not None else MISSING
     reading = read(nv.asked[name], describe(value), ureg)
     if not reading.ok:
-        raise AssertionError(reading.problem)
+        raise CheckFailed(reading.problem)
     print(
         f"{name}: form and dimension are fine (its value is judged when the assignment is graded)"
     )
