@@ -185,15 +185,6 @@ def _description(name, unit):
     return f"{_symbol(name)} [{_unit_text(unit)}]" if unit else _symbol(name)
 
 
-def _description(name, unit):
-    """A slider's label: its name and unit (``"theta2 [deg]"``), or the unit alone
-    when it is the name (``"rpm"``, never ``"rpm [rpm]"``)."""
-    unit = unit.replace("**", "^").replace("^2", "\u00b2").replace("^3", "\u00b3")
-    if not unit or name.strip().lower() == unit.strip().lower():
-        return name
-    return f"{name} [{unit}]"
-
-
 def _render(fig):
     """The figure as an RGBA array at its own pixel size."""
     buf = io.BytesIO()
