@@ -35,7 +35,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
 
 from ..files import WriteError, fault, remove_partial, write_atomic
-from ..nbgrader_course import ensure_path
+from ..nbgrader_course import ensure_path, roster_ids
 from ..notebook import read_spec
 from ..staging import recover
 from .feedback import FeedbackPages, copy_side_files, feedback_folder
@@ -353,6 +353,7 @@ def grade(
     spec = load_spec(course_dir, assignment)
     api, config = api_for(course_dir)
     check_gradebook(config, course_dir)
+    roster_ids(course_dir)  # a damaged roster is said now, not once per submission
     command = command_for(unsafe)  # SandboxUnavailable if the sandbox does not work here
     step = config.JudgeSubmission
     limits = limits or Limits(

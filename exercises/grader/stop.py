@@ -113,8 +113,13 @@ def stoppable():
         HALT.set()
         end_sandboxes()
 
-    # a signal ignored on purpose (nohup) stays ignored
-    old = {s: signal.signal(s, handler) for s in SIGNALS if signal.getsignal(s) != signal.SIG_IGN}
+    # a hangup ignored on purpose (nohup) stays ignored; Ctrl-C and SIGTERM always stop
+    # (a shell starts a background job with SIGINT ignored)
+    old = {
+        s: signal.signal(s, handler)
+        for s in SIGNALS
+        if s != signal.SIGHUP or signal.getsignal(s) != signal.SIG_IGN
+    }
     try:
         yield
     finally:
