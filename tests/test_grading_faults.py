@@ -84,6 +84,29 @@ def run(course, *args, fault=None, tmp, timeout=300):
     )
 
 
+def here(course, *args, fault=None):
+    """``accelab grade`` through accelab's entry point in this process (no
+    interpreter to start), with what a subprocess run gives back."""
+    import contextlib
+    import io
+
+    from accelab.cli import main
+
+    argv = ["grade", "--course", str(course), "--assignment", "A", "--quiet", *args]
+    old = os.environ.pop("ACCELAB_FAULT", None)
+    if fault:
+        os.environ["ACCELAB_FAULT"] = fault
+    out, err = io.StringIO(), io.StringIO()
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            status = main(argv)
+    finally:
+        os.environ.pop("ACCELAB_FAULT", None)
+        if old is not None:
+            os.environ["ACCELAB_FAULT"] = old
+    return subprocess.CompletedProcess(argv, status, out.getvalue(), err.getvalue())
+
+
 def csv_rows(course):
     path = os.path.join(course, "grades_A.csv")
     if not os.path.exists(path):
@@ -304,7 +327,7 @@ def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(refere
         except (OSError, ValueError, KeyError):
             pass
         time.sleep(0.05)
-    second = run(course, tmp=tmp)
+    second = here(course)
     assert second.returncode == 2, second.stderr
     assert "is busy" in second.stderr and f"process {first.pid}" in second.stderr, second.stderr
     assert "accelab grade" in second.stderr and "Traceback" not in second.stderr
@@ -329,7 +352,7 @@ def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(refere
 
 
 def test_new_grades_a_resubmission_by_content_and_one_student_alone(reference, tmp_path):
-    course, tmp = course_from(reference, tmp_path, "graded")
+    course, _ = course_from(reference, tmp_path, "graded")
     path = os.path.join(course, "submitted", "bob", "A", "A.ipynb")
     before = os.stat(path)
     spec = read_spec(course, "A")
@@ -339,7 +362,7 @@ def test_new_grades_a_resubmission_by_content_and_one_student_alone(reference, t
     os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
     stamp = os.path.join(course, "submitted", "bob", "A", "timestamp.txt")
     os.utime(stamp, ns=(before.st_atime_ns, before.st_mtime_ns))
-    proc = run(course, "--new", tmp=tmp)
+    proc = here(course, "--new")
     assert proc.returncode == 0, proc.stderr
     assert "1 submission(s) graded" in proc.stdout, proc.stdout[-800:]
     rows = csv_rows(course)
@@ -347,23 +370,23 @@ def test_new_grades_a_resubmission_by_content_and_one_student_alone(reference, t
     pages = {
         s: os.stat(os.path.join(course, "feedback", s, "A", "A.html")).st_mtime_ns for s in STUDENTS
     }
-    proc = run(course, "--student", "ann", tmp=tmp)
+    proc = here(course, "--student", "ann")
     assert proc.returncode == 0, proc.stderr
     now = {
         s: os.stat(os.path.join(course, "feedback", s, "A", "A.html")).st_mtime_ns for s in STUDENTS
     }
     assert [s for s in STUDENTS if now[s] != pages[s]] == ["ann"]
-    assert "0 submission(s) graded" in run(course, "--new", tmp=tmp).stdout
+    assert "0 submission(s) graded" in here(course, "--new").stdout
 
 
 # ---- a full disk ------------------------------------------------------------------------------
 
 
 def test_a_failed_csv_write_keeps_the_old_csv_whole_and_says_which_file(reference, tmp_path):
-    course, tmp = course_from(reference, tmp_path, "graded")
+    course, _ = course_from(reference, tmp_path, "graded")
     path = os.path.join(course, "grades_A.csv")
     old = open(path, "rb").read()
-    proc = run(course, "--student", "bob", "--jobs", "2", fault="enospc:grades_A.csv", tmp=tmp)
+    proc = here(course, "--student", "bob", "--jobs", "2", fault="enospc:grades_A.csv")
     assert proc.returncode == 2, proc.stderr
     assert path in proc.stderr and "No space left on device" in proc.stderr, proc.stderr
     assert "--new" in proc.stderr and "Traceback" not in proc.stderr
@@ -375,7 +398,7 @@ def test_a_failed_feedback_write_keeps_the_old_pages_and_new_finishes(reference,
     course, tmp = course_from(reference, tmp_path, "graded")
     pages = digest_tree(os.path.join(course, "feedback"))
     csv_before = open(os.path.join(course, "grades_A.csv"), "rb").read()
-    proc = run(course, "--jobs", "2", fault="enospc:/feedback/", tmp=tmp)
+    proc = here(course, "--jobs", "2", fault="enospc:/feedback/")
     assert proc.returncode == 2, proc.stderr
     assert os.path.join(course, "feedback") in proc.stderr, proc.stderr
     assert "No space left on device" in proc.stderr and "--new" in proc.stderr
@@ -383,7 +406,7 @@ def test_a_failed_feedback_write_keeps_the_old_pages_and_new_finishes(reference,
     assert digest_tree(os.path.join(course, "feedback")) == pages
     assert open(os.path.join(course, "grades_A.csv"), "rb").read() == csv_before
     shown_grades_are_true(course, reference)
-    proc = run(course, "--new", tmp=tmp)
+    proc = here(course, "--new")
     assert proc.returncode == 0, proc.stderr
     finished_like_reference(course, reference, tmp)
 
@@ -418,7 +441,7 @@ def test_a_full_disk_keeps_every_file_whole_and_new_finishes(reference, tmp_path
                     fh.flush()
             except OSError:
                 pass
-        proc = run(course, "--jobs", "2", tmp=tmp)
+        proc = here(course, "--jobs", "2")
         assert proc.returncode == 2, (proc.returncode, proc.stdout[-500:], proc.stderr)
         assert "No space left on device" in proc.stderr or "disk is full" in proc.stderr
         assert "--new" in proc.stderr and "Traceback" not in proc.stderr
@@ -429,7 +452,7 @@ def test_a_full_disk_keeps_every_file_whole_and_new_finishes(reference, tmp_path
         }
         shown_grades_are_true(course, reference)
         os.unlink(filler)
-        proc = run(course, "--new", tmp=tmp)
+        proc = here(course, "--new")
         assert proc.returncode == 0, proc.stderr
         finished_like_reference(course, reference, tmp)
     finally:
@@ -475,7 +498,7 @@ def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, t
     assert "Traceback" not in proc.stderr
     assert _snapshot(course) == before
     assert [f for f in os.listdir(os.path.join(course, ".accelab")) if "staging" in f] == []
-    proc = run(course, "--student", "ann", tmp=tmp)
+    proc = here(course, "--student", "ann")
     assert proc.returncode == 0, proc.stderr
     assert csv_rows(course) == reference["rows"]
 

@@ -409,7 +409,11 @@ def classify(result):
     log = f"{result.get('log', '')}\n{result.get('error', '')}"
     last = _last_error(log)
     if DISK_FULL.search(log):
-        return f"the disk is full ({last})", True
+        lines = [line.strip() for line in log.splitlines() if DISK_FULL.search(line)]
+        ours = [line for line in lines if "could not write" in line]  # a WriteError: the path
+        if ours:
+            return "could not write" + ours[0].split("could not write", 1)[1][:300], True
+        return f"the disk is full ({lines[0][:300]})", True
     if GRADEBOOK_ERROR.search(log):
         return (
             f"the gradebook could not be written ({last}); it is not the student's doing: "
@@ -510,7 +514,8 @@ class _Run:
         return (
             f"{what}. Grading stopped: {done} of {len(self.chosen)} submission(s) were graded "
             f"completely before it; nothing partial is kept as a grade, and the CSV was not "
-            f"written. Once that is fixed, run: {resume_command(self.course_dir, self.assignment)}"
+            f"rewritten (the old one is kept). Once that is fixed, run: "
+            f"{resume_command(self.course_dir, self.assignment)}"
         )
 
     def stopped(self, csv):
@@ -612,9 +617,14 @@ def _judged_digest(course_dir, assignment, student):
 
 
 def _last_error(log):
-    """The exception nbgrader's log ends its traceback with."""
+    """The exception nbgrader's log ends its traceback with (not nbgrader's own
+    "see the traceback above")."""
     lines = [line.strip() for line in str(log).splitlines()]
-    found = [line for line in lines if re.match(r"^[A-Za-z_.]*(Error|Exception)\b.*:", line)]
+    found = [
+        line
+        for line in lines
+        if re.match(r"^[A-Za-z_.]*(Error|Exception)\b.*:", line) and "NbGraderException" not in line
+    ]
     return (found[-1] if found else "nbgrader could not autograde it")[:300]
 
 
