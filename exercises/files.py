@@ -83,6 +83,7 @@ def write_atomic(path, data, mode=None, stage="write"):
     :class:`WriteError` (the old file unchanged, nothing left beside it).
     ``stage`` names the write for :func:`fault` (``STAGE-unrenamed``: written
     beside, not yet renamed)."""
+    path = os.fspath(path)
     if isinstance(data, str):
         data = data.encode("utf-8")
     folder = os.path.dirname(os.path.abspath(path))
