@@ -354,6 +354,7 @@ def grade(
     api, config = api_for(course_dir)
     check_gradebook(config, course_dir)
     roster_ids(course_dir)  # a damaged roster is said now, not once per submission
+    _question_names(course_dir, assignment)  # and a damaged released notebook
     command = command_for(unsafe)  # SandboxUnavailable if the sandbox does not work here
     step = config.JudgeSubmission
     limits = limits or Limits(
@@ -384,6 +385,12 @@ def grade(
         if received() is not None:
             raise run.stopped(csv=True)
     return subs, path, rows, time.monotonic() - start, timings
+
+
+def _question_names(course_dir, assignment):
+    from .gradetable import question_names
+
+    return question_names(course_dir, assignment)
 
 
 def _export(course_dir, assignment, csv_path):
@@ -532,21 +539,35 @@ class _Run:
             128 + int(signum or 2),
         )
 
-    def _feedback(self, student):
+    def _feedback(self, sub):
+        """Write ``sub``'s feedback page; False (with the problem said) if it could
+        not be made for another reason than a write error (which ends the run)."""
         if self.pages is None:
             self.pages = FeedbackPages(self.api)
         t0 = time.monotonic()
         fault("feedback-begun")
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            self.pages.write(self.course_dir, self.assignment, student)
-        self.spent["feedback"] += time.monotonic() - t0
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                self.pages.write(self.course_dir, self.assignment, sub.student)
+        except WriteError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - nbconvert's, said to the instructor
+            sub.failed = True
+            sub.problem = (
+                f"graded, but its feedback page could not be made ({type(exc).__name__}: "
+                f"{str(exc)[:200]}); make it with: accelab grade --new"
+            )
+            return False
+        finally:
+            self.spent["feedback"] += time.monotonic() - t0
+        return True
 
     def feedback_only(self, sub):
         """A submission graded before whose feedback page is missing."""
-        self._feedback(sub.student)
-        write_state(self.course_dir, self.assignment, sub.student, sub.digest, "done")
-        sub.graded = True
+        if self._feedback(sub):
+            write_state(self.course_dir, self.assignment, sub.student, sub.digest, "done")
+            sub.graded = True
         return sub
 
     def finish(self, sub):
@@ -600,9 +621,9 @@ class _Run:
             return
         write_state(course_dir, assignment, student, sub.digest, "scored")
         fault("scored")
-        self._feedback(student)
-        write_state(course_dir, assignment, student, sub.digest, "done")
-        sub.graded = True
+        if self._feedback(sub):
+            write_state(course_dir, assignment, student, sub.digest, "done")
+            sub.graded = True
 
 
 def _judged_digest(course_dir, assignment, student):

@@ -21,7 +21,16 @@ from .state import grading_status
 def question_names(course_dir, assignment):
     """Graded quantity names, in notebook order (from the released notebook)."""
     path = os.path.join(course_dir, "release", assignment, f"{assignment}.ipynb")
-    nb = nbformat.read(path, as_version=4)
+    try:
+        nb = nbformat.read(path, as_version=4)
+    except FileNotFoundError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - any damage of the file: said with its name
+        raise ValueError(
+            f"the released notebook {path} cannot be read ({type(exc).__name__}); make it "
+            f"again with: nbgrader generate_assignment {assignment} --force (in the course "
+            f"folder)"
+        ) from None
     names = []
     for cell in nb.cells:
         meta = cell.metadata.get("nbgrader", {})
