@@ -77,12 +77,16 @@ def _mode_for(path, default=0o644):
         return default
 
 
-def write_atomic(path, data, mode=None, stage="write"):
+def write_atomic(path, data, mode=None, stage="write", durable=True):
     """Replace ``path`` with ``data`` (str, written as UTF-8, or bytes) in one
     step: written beside it, fsynced, renamed over it. Raises
     :class:`WriteError` (the old file unchanged, nothing left beside it).
-    ``stage`` names the write for :func:`fault` (``STAGE-unrenamed``: written
-    beside, not yet renamed)."""
+
+    ``durable=False`` skips the fsync, for a record whose reader takes a
+    damaged file for none (a power cut may leave it empty; a killed process
+    never does). The folder is not fsynced: after a power cut a rename may be
+    lost, leaving the old file, whole. ``stage`` names the write for
+    :func:`fault` (``STAGE-unrenamed``: written beside, not yet renamed)."""
     path = os.fspath(path)
     if isinstance(data, str):
         data = data.encode("utf-8")
@@ -95,7 +99,8 @@ def write_atomic(path, data, mode=None, stage="write"):
             fault("write", path)
             fh.write(data)
             fh.flush()
-            os.fsync(fh.fileno())
+            if durable:
+                os.fsync(fh.fileno())
         os.chmod(tmp, mode if mode is not None else _mode_for(path))
         fault(f"{stage}-unrenamed")
         os.replace(tmp, path)
@@ -108,28 +113,20 @@ def write_atomic(path, data, mode=None, stage="write"):
                 os.unlink(tmp)
             except OSError:
                 pass
-    sync_folder(folder)
-
-
-def sync_folder(folder):
-    """Make a rename in ``folder`` durable (best effort: not every file system can)."""
-    try:
-        fd = os.open(folder, os.O_RDONLY)
-    except OSError:
-        return
-    try:
-        os.fsync(fd)
-    except OSError:
-        pass
-    finally:
-        os.close(fd)
 
 
 def copy_atomic(src, dest):
-    """Replace ``dest`` with a copy of the regular file ``src`` (never through a link)."""
+    """Replace ``dest`` with a copy of the regular file ``src`` (never through a
+    link), unless it holds the same bytes already."""
     fd = os.open(src, os.O_RDONLY | os.O_NOFOLLOW)
     with os.fdopen(fd, "rb") as fh:
         data = fh.read()
+    try:
+        with open(dest, "rb") as fh:
+            if fh.read(len(data) + 1) == data:
+                return
+    except OSError:
+        pass
     write_atomic(dest, data)
 
 

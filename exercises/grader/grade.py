@@ -492,7 +492,16 @@ class _Run:
                     if sub.stopped:
                         break
                     self.subs[sub.student] = sub
-                    self.finish(sub)
+                    try:
+                        self.finish(sub)
+                    except (WriteError, GradingFailed):
+                        raise
+                    except Exception as exc:  # noqa: BLE001 - this submission's, said below
+                        sub.failed = True
+                        sub.problem = (
+                            f"it could not be graded ({type(exc).__name__}: {str(exc)[:200]}); "
+                            f"it is not the student's doing: grade it again with --new"
+                        )
                     n += 1
                     self._progress(n)
         except WriteError as exc:

@@ -104,6 +104,7 @@ def write_state(course_dir, assignment, student, digest, stage, problem=""):
         state_path(course_dir, assignment, student),
         json.dumps(record, indent=1),
         stage=f"state-{stage}",
+        durable=False,  # a record lost to a power cut is read as none: graded again
     )
 
 
