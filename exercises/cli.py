@@ -271,7 +271,11 @@ def run_grade(args):
         names = [n for n in rows[0] if n not in _NOT_QUESTIONS] if rows else []
     print(format_table(rows, names))
     spent = ", ".join(f"{k} {v:.1f} s" for k, v in timings.items())
-    print(f"\n{len(subs)} submission(s) graded in {seconds:.1f} s ({spent}); CSV: {path}")
+    failed = [s for s in subs if s.failed]
+    done = f"{len(subs) - len(failed)} submission(s) graded" + (
+        f", {len(failed)} not graded (see below)" if failed else ""
+    )
+    print(f"\n{done} in {seconds:.1f} s ({spent}); CSV: {path}")
     for sub in subs:  # what the instructor must do about a submission that is not graded
         if sub.failed:
             print(f"accelab: student {sub.student}: not graded: {sub.problem}", file=sys.stderr)

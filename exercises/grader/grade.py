@@ -409,7 +409,7 @@ DISK_FULL = re.compile(
 GRADEBOOK_ERROR = re.compile(r"sqlalchemy|sqlite3|database is locked|OperationalError")
 
 
-def classify(result):
+def classify(result, assignment="A", student="ID"):
     """Why nbgrader's autograde did not succeed: (problem for the instructor,
     fatal). Fatal (a full disk) ends the run; anything else leaves this one
     submission ungraded (never a 0: it is not the student's doing)."""
@@ -429,8 +429,8 @@ def classify(result):
         )
     return (
         f"nbgrader could not autograde it ({last}); it is not the student's doing: look at "
-        f"it with `nbgrader autograde A --student ID --force` or in formgrader, then grade it "
-        f"again with --new",
+        f"it with `nbgrader autograde {assignment} --student {student} --force` (in the course "
+        f"folder) or in formgrader, then grade it again with --new",
         False,
     )
 
@@ -589,14 +589,15 @@ class _Run:
         write_state(course_dir, assignment, student, sub.digest, "grading")
         fault("grading-begun")
         _, notes = submission_time(course_dir, assignment, student)
-        sub.notes += notes
         if not sub.readable:
             try:
                 zero_and_explain(self.api, course_dir, assignment, student, sub.problem, sub.digest)
             except WriteError:
                 raise
             except Exception as exc:  # noqa: BLE001 - the gradebook's error, said below
-                problem, fatal = classify({"error": f"{type(exc).__module__}.{exc!r}"})
+                problem, fatal = classify(
+                    {"error": f"{type(exc).__module__}.{exc!r}"}, assignment, student
+                )
                 if fatal:
                     message = self._failed_message(f"student {student}: {problem}")
                     raise GradingFailed(message) from None
@@ -612,9 +613,14 @@ class _Run:
             if HALT.is_set():  # stopped while it ran: nothing of it is a grade
                 sub.stopped = True
                 return
-            problem, fatal = classify(result)
+            problem, fatal = classify(result, assignment, student)
             if fatal:
                 raise GradingFailed(self._failed_message(f"student {student}: {problem}"))
+            if notes:  # nbgrader stops at a submission time it cannot read
+                problem = (
+                    f"nbgrader could not autograde it: {'; '.join(notes)}; it is not the "
+                    f"student's doing: mend the file, then grade it again with --new"
+                )
             sub.failed, sub.problem = True, problem
             write_state(course_dir, assignment, student, sub.digest, "failed", problem)
             return
@@ -628,6 +634,7 @@ class _Run:
             )
             write_state(course_dir, assignment, student, judged or sub.digest, "grading")
             return
+        sub.notes += notes
         write_state(course_dir, assignment, student, sub.digest, "scored")
         fault("scored")
         if self._feedback(sub):
