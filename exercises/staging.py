@@ -240,6 +240,8 @@ class Staging:
         elif kind == "gradebook":
             if os.path.exists(aside):
                 copy_gradebook(aside, real)
+            elif os.path.exists(real):  # the course had none
+                os.unlink(real)
         elif os.path.exists(aside):
             with open(aside, "rb") as fh:
                 write_atomic(real, fh.read())
