@@ -87,19 +87,25 @@ def run(course, *args, fault=None, tmp, timeout=300):
 def here(course, *args, fault=None):
     """``accelab grade`` through accelab's entry point in this process (no
     interpreter to start), with what a subprocess run gives back."""
+    return accelab_here(
+        "grade", "--course", str(course), "--assignment", "A", "--quiet", *args, fault=fault
+    )
+
+
+def accelab_here(*argv, fault=None):
+    """``accelab ARGV`` in this process; a CompletedProcess."""
     import contextlib
     import io
 
     from accelab.cli import main
 
-    argv = ["grade", "--course", str(course), "--assignment", "A", "--quiet", *args]
     old = os.environ.pop("ACCELAB_FAULT", None)
     if fault:
         os.environ["ACCELAB_FAULT"] = fault
     out, err = io.StringIO(), io.StringIO()
     try:
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            status = main(argv)
+            status = main(list(argv))
     finally:
         os.environ.pop("ACCELAB_FAULT", None)
         if old is not None:
@@ -260,7 +266,7 @@ def test_a_kill_at_any_stage_is_finished_by_running_again(reference, tmp_path):
     assert "Traceback" not in proc.stderr
     finished_like_reference(course, reference, tmp)
     assert digest_tree(os.path.join(course, "submitted")) == submitted
-    proc = run(course, "--new", tmp=tmp)
+    proc = here(course, "--new")
     assert "0 submission(s) graded" in proc.stdout
 
 
@@ -300,7 +306,7 @@ def test_ctrl_c_stops_at_once_keeps_nothing_partial_and_says_how_to_finish(refer
     for s in STUDENTS:  # no "submit again" page because the instructor interrupted
         page = os.path.join(course, "feedback", s, "A", "A.html")
         assert not os.path.exists(page) or "could not be graded" not in open(page).read()
-    proc = run(course, "--new", tmp=tmp)
+    proc = here(course, "--new")
     assert proc.returncode == 0, proc.stderr
     finished_like_reference(course, reference, tmp)
 
@@ -331,10 +337,8 @@ def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(refere
     assert second.returncode == 2, second.stderr
     assert "is busy" in second.stderr and f"process {first.pid}" in second.stderr, second.stderr
     assert "accelab grade" in second.stderr and "Traceback" not in second.stderr
-    again = subprocess.run(
-        [*ACCELAB, "assign", "--course", course, "--assignment", "B", "--families", "rotation"],
-        capture_output=True,
-        text=True,
+    again = accelab_here(
+        "assign", "--course", course, "--assignment", "B", "--families", "rotation"
     )
     assert again.returncode == 2 and "is busy" in again.stderr, again.stderr
     export = subprocess.run(
@@ -477,21 +481,16 @@ def _snapshot(course):
 def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, tmp_path):
     course, tmp = course_from(reference, tmp_path, "graded")
     before = _snapshot(course)
-    proc = subprocess.run(
-        [
-            *ACCELAB,
-            "assign",
-            "--course",
-            course,
-            "--assignment",
-            "A",
-            "--families",
-            "rotation,fourbar",
-            "--force",
-            "--release",
-        ],
-        capture_output=True,
-        text=True,
+    proc = accelab_here(
+        "assign",
+        "--course",
+        course,
+        "--assignment",
+        "A",
+        "--families",
+        "rotation,fourbar",
+        "--force",
+        "--release",
     )
     assert proc.returncode == 2, proc.stderr
     assert "Nothing was changed" in proc.stderr and "nbgrader db assignment remove" in proc.stderr
