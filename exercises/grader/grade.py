@@ -435,6 +435,9 @@ def classify(result, assignment="A", student="ID"):
     )
 
 
+CHANGED = "the submission changed while it was graded (collected again?); grade it again with --new"
+
+
 class _Run:
     """One grading run: the submissions it grades, in the order their sandboxed
     runs end, each carried through its stages (state.py) in this thread."""
@@ -590,6 +593,10 @@ class _Run:
         fault("grading-begun")
         _, notes = submission_time(course_dir, assignment, student)
         if not sub.readable:
+            if submission_hash(course_dir, assignment, student) != sub.digest:
+                sub.failed = True  # collect was writing it: no 0 for a file half copied
+                sub.problem = CHANGED
+                return
             try:
                 zero_and_explain(self.api, course_dir, assignment, student, sub.problem, sub.digest)
             except WriteError:
@@ -627,11 +634,7 @@ class _Run:
         fault("autograded")
         judged = _judged_digest(course_dir, assignment, student)
         if judged != sub.digest:  # collect replaced it while it was graded
-            sub.failed = True
-            sub.problem = (
-                "the submission changed while it was graded (collected again?); grade it again "
-                "with --new"
-            )
+            sub.failed, sub.problem = True, CHANGED
             write_state(course_dir, assignment, student, judged or sub.digest, "grading")
             return
         sub.notes += notes
