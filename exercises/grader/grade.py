@@ -472,18 +472,18 @@ class _Run:
         try:
             with warnings.catch_warnings():  # for the worker threads too (silence.py)
                 warnings.simplefilter("ignore")
-                for s in [s for s in chosen if todo[s] == "feedback"]:
+                args = (self.config, course_dir, assignment, self.spec)
+                futures = {
+                    pool.submit(prepare, *args, s, self.command, self.limits, slots): s
+                    for s in chosen
+                    if todo[s] == "grade"
+                }
+                for s in [s for s in chosen if todo[s] == "feedback"]:  # while those run
                     if HALT.is_set():
                         break
                     self.subs[s] = self.feedback_only(Submission(s, digest=digests[s]))
                     n += 1
                     self._progress(n)
-                args = (self.config, course_dir, assignment, self.spec)
-                futures = {
-                    pool.submit(prepare, *args, s, self.command, self.limits, slots): s
-                    for s in chosen
-                    if todo[s] == "grade" and not HALT.is_set()
-                }
                 for fut in as_completed(futures):
                     if HALT.is_set():
                         break
