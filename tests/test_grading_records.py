@@ -141,15 +141,18 @@ def test_a_stop_ends_every_sandbox_and_starts_none(tmp_path):
             return argv
 
     command = stop.Interruptible(Builder())
-    child = subprocess.Popen(["sleep", "60"], start_new_session=True)
+    other = subprocess.Popen(["cat"], stdin=subprocess.PIPE, start_new_session=True)
     with stop.stoppable():
-        assert command.command(["x"]) == ["x"]
+        argv = command.command(["sleep", "60"])
+        child = subprocess.Popen(argv, start_new_session=True)  # as the supervisor starts it
         stop.HALT.set()
         with pytest.raises(OSError):
-            command.command(["x"])
+            command.command(["sleep", "60"])
         stop.end_sandboxes()
         assert child.wait(timeout=10) == -9
     assert not stop.HALT.is_set()  # cleared when the run ends
+    assert other.poll() is None  # a child that is no sandbox is left alone
+    other.communicate(b"")
 
 
 # ---- the roster -------------------------------------------------------------------------------

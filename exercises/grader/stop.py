@@ -49,14 +49,22 @@ class Interruptible:
     def command(self, argv, slot=0, env=None, limits=None):
         if HALT.is_set():
             raise SandboxRefused(errno.ECANCELED, "grading was stopped")
-        return self.inner.command(argv, slot=slot, env=env, limits=limits)
+        full = self.inner.command(argv, slot=slot, env=env, limits=limits)
+        _PROGRAMS.add(os.fsencode(full[0]))
+        if os.path.basename(full[0]) == "env":  # no sandbox: env becomes the kernel's program
+            _PROGRAMS.add(os.fsencode(argv[0]))
+        return full
 
     def __getattr__(self, name):
         return getattr(self.inner, name)
 
 
+#: the programs sandboxes were started with (bwrap; ``env`` without a sandbox)
+_PROGRAMS = set()
+
+
 def children():
-    """(pid, process group) of this process's children."""
+    """(pid, process group, program) of this process's children."""
     me = os.getpid()
     found = []
     for entry in os.listdir("/proc"):
@@ -65,19 +73,22 @@ def children():
         try:
             with open(f"/proc/{entry}/stat", "rb") as fh:
                 fields = fh.read().rsplit(b")", 1)[1].split()
-        except (OSError, IndexError):
+            if int(fields[1]) != me:
+                continue
+            with open(f"/proc/{entry}/cmdline", "rb") as fh:
+                program = fh.read().split(b"\0")[0]
+        except (OSError, IndexError, ValueError):
             continue
-        if int(fields[1]) == me:
-            found.append((int(entry), int(fields[2])))
+        found.append((int(entry), int(fields[2]), program))
     return found
 
 
 def end_sandboxes():
-    """SIGKILL every sandbox this process started, with every process in it
-    (each sandbox leads its own process group; bubblewrap's PID namespace and
-    ``--die-with-parent`` take the rest)."""
-    for pid, group in children():
-        if group == pid:
+    """SIGKILL every sandbox this process started, with every process in it:
+    each leads its own process group (bubblewrap's PID namespace and
+    ``--die-with-parent`` take the rest). Other children are left alone."""
+    for pid, group, program in children():
+        if group == pid and program in _PROGRAMS:
             try:
                 os.killpg(group, signal.SIGKILL)
             except OSError:
