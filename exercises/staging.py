@@ -42,15 +42,21 @@ def copy_gradebook(src, dest):
     """Copy the SQLite database ``src`` into ``dest`` with SQLite's backup: one
     transaction on ``dest``, consistent with writers of ``src``, and seen by
     every connection that has ``dest`` open (a formgrader's)."""
-    source = sqlite3.connect(src, timeout=60)
     try:
-        target = sqlite3.connect(dest, timeout=60)
+        source = sqlite3.connect(f"file:{src}?mode=ro", uri=True, timeout=60)
         try:
-            source.backup(target)
+            target = sqlite3.connect(dest, timeout=60)
+            try:
+                source.backup(target)
+            finally:
+                target.close()
         finally:
-            target.close()
-    finally:
-        source.close()
+            source.close()
+    except sqlite3.Error as exc:
+        raise ValueError(
+            f"could not copy the gradebook {src} to {dest} ({exc}); nothing was changed. If "
+            f"the disk is full, free some space; if {src} is damaged, restore it from a backup"
+        ) from None
 
 
 def _nbgrader_error(args, proc):
