@@ -20,6 +20,7 @@ import os
 import shutil
 import sqlite3
 import tempfile
+from urllib.parse import quote
 
 from .files import fault, write_atomic
 from .nbgrader_course import nbgrader
@@ -43,7 +44,7 @@ def copy_gradebook(src, dest):
     transaction on ``dest``, consistent with writers of ``src``, and seen by
     every connection that has ``dest`` open (a formgrader's)."""
     try:
-        source = sqlite3.connect(f"file:{src}?mode=ro", uri=True, timeout=60)
+        source = sqlite3.connect(f"file:{quote(src)}?mode=ro", uri=True, timeout=60)
         try:
             target = sqlite3.connect(dest, timeout=60)
             try:

@@ -174,6 +174,7 @@ def check_gradebook(config, course_dir):
     gradebook is missing or is no database; nbgrader would otherwise make a new,
     empty one, or fail on every submission."""
     import sqlite3
+    from urllib.parse import quote
 
     url = str(config.CourseDirectory.db_url or "")
     if not url.startswith("sqlite:///"):
@@ -185,7 +186,7 @@ def check_gradebook(config, course_dir):
             f"grades are in it), or make a new, empty one with accelab assign --force"
         )
     try:
-        db = sqlite3.connect(f"file:{path}?mode=ro", uri=True, timeout=30)
+        db = sqlite3.connect(f"file:{quote(path)}?mode=ro", uri=True, timeout=30)
         try:
             db.execute("select count(*) from sqlite_master").fetchone()
         finally:
