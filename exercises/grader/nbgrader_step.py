@@ -24,24 +24,21 @@ import nbformat
 from nbgrader.preprocessors import NbGraderPreprocessor
 from traitlets import Bool, Float, Integer
 
+from ..files import fault, write_atomic
 from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
 from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
+from .state import outcome_path, submission_hash
+from .stop import HALT, Interruptible, Stopped
 from .supervisor import Limits, run_plan
 
 #: runs made ahead of nbgrader: (course, assignment, student, fingerprint) -> RunResult
 PREPARED = {}
 _KEYS = {}
 _LOCK = threading.Lock()
-
-
-def outcome_path(course_dir, assignment, student):
-    """Where the grader keeps a submission's outcome (notes, verdicts): in the
-    course folder, which no sandbox sees, and never released."""
-    return os.path.join(course_dir, ".accelab", "outcomes", assignment, f"{student}.json")
 
 
 def cached_key(spec, student):
@@ -127,7 +124,7 @@ def submitted_notebook(course_dir, assignment, student, notebook):
     path = os.path.join(course_dir, "submitted", student, assignment, f"{notebook}.ipynb")
     try:
         return read_submission(path)
-    except Exception:
+    except Exception:  # noqa: BLE001 - only its shown ids are read from it: none then
         return None
 
 
@@ -161,6 +158,8 @@ class JudgeSubmission(NbGraderPreprocessor):
             run = run_plan(
                 steps, key.variant.statement(), command_for(self.unsafe_no_sandbox), limits_of(self)
             )
+            if HALT.is_set():  # cut short by Ctrl-C: no grade, and nbgrader keeps nothing
+                raise Stopped(f"grading of {student} was stopped")
         submitted = submitted_notebook(
             course_dir, assignment, student, info.get("notebook", assignment)
         )
@@ -168,26 +167,34 @@ class JudgeSubmission(NbGraderPreprocessor):
         outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
         outcome.notes += notes_of(course_dir, assignment, student)  # who and when
         write_notebook(nb, steps, run, outcome)
-        save_outcome(course_dir, assignment, outcome)
+        digest = submission_hash(course_dir, assignment, student)
+        save_outcome(course_dir, assignment, outcome, digest)
+        fault("outcome-saved")
         return nb, resources
 
 
 def command_for(unsafe):
-    """The sandbox command builder, or the explicitly unsafe one."""
+    """The sandbox command builder, or the explicitly unsafe one; either starts
+    no sandbox once grading is stopping (:class:`~.stop.Interruptible`)."""
     from .sandbox import sandbox
 
     if unsafe:
         from .unsandboxed import UnsandboxedCommand
 
-        return UnsandboxedCommand()
-    return sandbox()
+        return Interruptible(UnsandboxedCommand())
+    return Interruptible(sandbox())
 
 
-def save_outcome(course_dir, assignment, outcome):
-    path = outcome_path(course_dir, assignment, outcome.student)
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as fh:
-        json.dump(outcome.to_dict(), fh, indent=1)
+def save_outcome(course_dir, assignment, outcome, digest=None):
+    """Write the outcome (replaced whole), with ``digest``, the content hash of
+    the submission it judged (:func:`~.state.content_hash`)."""
+    data = outcome.to_dict()
+    data["submission"] = digest
+    write_atomic(
+        outcome_path(course_dir, assignment, outcome.student),
+        json.dumps(data, indent=1),
+        stage="outcome",
+    )
 
 
 class DropDuplicateIds(NbGraderPreprocessor):
