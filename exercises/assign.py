@@ -129,10 +129,12 @@ def assign(
 
     accounts = accounts_of(roster, ids)
     layout = {"exchange": exchange}
+    upgraded = []  # said once the new version is in
 
     def build(root, nbgrader_run):
         """Everything of the assignment, written into ``root``."""
-        upgrade_config(root, say)  # an older course's configuration (the staged copy)
+        config = os.path.join(course_dir, "nbgrader_config.py")
+        upgrade_config(root, upgraded.append, named=config)  # an older course's (staged copy)
         create_course(
             root,
             course_id,
@@ -185,6 +187,8 @@ def assign(
                 with open(spec_path, "rb") as fh:
                     write_atomic(keep, fh.read())
             staging.swap(release)
+        for message in upgraded:
+            say(message)
         if keep:
             say(
                 f"replaced assignment {assignment!r} with {len(taken)} submission(s); old "

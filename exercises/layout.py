@@ -311,15 +311,24 @@ def course_config(course_dir):
     none yet."""
     from traitlets.config.loader import PyFileConfigLoader
 
-    if not os.path.exists(os.path.join(course_dir, "nbgrader_config.py")):
+    path = os.path.join(course_dir, "nbgrader_config.py")
+    if not os.path.exists(path):
         return None
-    return PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
+    try:
+        return PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
+    except Exception as exc:  # noqa: BLE001 - it is Python: any error of the instructor's
+        where = f" (line {exc.lineno})" if getattr(exc, "lineno", None) else ""
+        raise LayoutError(
+            f"{path} cannot be loaded{where}: {type(exc).__name__}: {str(exc)[:300]}; fix it, "
+            "or restore it from a backup"
+        ) from None
 
 
-def upgrade_config(course_dir, say=print):
+def upgrade_config(course_dir, say=print, named=None):
     """Add accelab's collect and formgrader templates (:data:`CONFIG_ADDED`) to a
-    course configuration that predates them (the file replaced whole); says so.
-    Nothing is done to a configuration that has them, or to none."""
+    course configuration that predates them (the file replaced whole); says so,
+    naming the file as ``named`` (default its path: a staged copy is named as the
+    course's own). Nothing is done to a configuration that has them, or to none."""
     from .files import write_atomic
 
     config = course_config(course_dir)
@@ -330,7 +339,7 @@ def upgrade_config(course_dir, say=print):
         text = fh.read()
     write_atomic(path, text + CONFIG_ADDED)
     say(
-        f"{path} did not use accelab's collect (who handed in and when, from what a "
+        f"{named or path} did not use accelab's collect (who handed in and when, from what a "
         "student cannot forge) nor escape ids in formgrader's pages: both added at its end"
     )
 

@@ -355,7 +355,15 @@ def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(refere
 # ---- a resubmission collected with its submit-time mtime; one student regraded ---------------
 
 
-def test_new_grades_a_resubmission_by_content_and_one_student_alone(reference, tmp_path):
+def test_new_grades_a_resubmission_by_content_and_one_student_alone(
+    reference, tmp_path, monkeypatch
+):
+    from accelab.exercises.grader import nbgrader_step
+
+    ran = []  # plans JudgeSubmission runs itself: none, each is handed over (PreparedRuns)
+    real = nbgrader_step.run_plan
+    monkeypatch.setattr(nbgrader_step, "run_plan", lambda *a, **k: ran.append(a) or real(*a, **k))
+    assert not hasattr(nbgrader_step, "PREPARED")  # no run passes through a module's state
     course, _ = course_from(reference, tmp_path, "graded")
     path = os.path.join(course, "submitted", "bob", "A", "A.ipynb")
     before = os.stat(path)
@@ -381,6 +389,7 @@ def test_new_grades_a_resubmission_by_content_and_one_student_alone(reference, t
     }
     assert [s for s in STUDENTS if now[s] != pages[s]] == ["ann"]
     assert "0 submission(s) graded" in here(course, "--new").stdout
+    assert ran == []
 
 
 # ---- a full disk ------------------------------------------------------------------------------

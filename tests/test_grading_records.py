@@ -258,3 +258,77 @@ def test_passwd_folders_of_graders_that_are_gone_are_removed(tmp_path, monkeypat
     folder = proc.stdout.strip()
     assert os.path.basename(folder).startswith(sandbox.ETC_PREFIX)
     assert folder.startswith(str(tmp_path)) and not os.path.exists(folder)  # removed at exit
+
+
+def test_working_folders_without_a_sandbox_are_removed(tmp_path, monkeypatch):
+    """``--unsafe-no-sandbox``: the kernels' working folders are in one folder of the
+    grading process, removed when it ends; a killed one's by the next grader."""
+    from accelab.exercises.grader import unsandboxed
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    dead = subprocess.Popen(["true"])
+    dead.wait()
+    gone = tmp_path / f"{unsandboxed.PREFIX}{dead.pid}-abc"
+    gone.mkdir()
+    builder = unsandboxed.UnsandboxedCommand()
+    first = builder.command(["python"], slot=0)
+    second = builder.command(["python"], slot=1)
+    work = [a.split("=", 1)[1] for cmd in (first, second) for a in cmd if a.startswith("HOME=")]
+    assert len(set(work)) == 2 and os.path.dirname(work[0]) == os.path.dirname(work[1])
+    assert os.path.basename(os.path.dirname(work[0])).startswith(
+        f"{unsandboxed.PREFIX}{os.getpid()}-"
+    )
+    assert not gone.exists()
+    code = (
+        "from accelab.exercises.grader.unsandboxed import UnsandboxedCommand\n"
+        "cmd = UnsandboxedCommand().command(['python'])\n"
+        "print(next(a for a in cmd if a.startswith('HOME=')).split('=', 1)[1])\n"
+    )
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    folder = proc.stdout.strip()
+    assert folder.startswith(str(tmp_path)) and os.path.basename(
+        os.path.dirname(folder)
+    ).startswith(unsandboxed.PREFIX)
+    assert not os.path.exists(os.path.dirname(folder))  # removed at exit
+
+
+@pytest.mark.parametrize(
+    "sid",
+    [
+        "ann",
+        "zoë",
+        "ann@uni.edu",
+        "o.k_1-2",
+        "",
+        "a+b",
+        "a b",
+        "../x",
+        "-x",
+        ".x",
+        "~x",
+        "a[1]",
+        "a?",
+        "x#y",
+        "<b>",
+        "self-study",
+        "preview",
+        "x" * 65,
+        "\u202eevil",
+        "a:b",
+        "a=b",
+        "l'x",
+    ],
+)
+def test_the_roster_and_the_grader_agree_on_what_an_id_is(sid):
+    """One rule (accelab.exercises.ids): an id the roster refuses is a folder name the
+    grader refuses, and the other way round."""
+    from accelab.exercises.grader import intake
+
+    try:
+        check_ids([("row 2", sid)])
+        roster_ok = True
+    except ValueError:
+        roster_ok = False
+    assert roster_ok == (intake.id_problem(sid, None) is None), sid
+    assert roster_ok == (intake.id_problem(sid, [sid]) is None), sid

@@ -2,13 +2,16 @@
 outside it, scored into nbgrader's gradebook, given feedback, and tabled in a
 per-question CSV over the whole roster.
 
+0. What a submission is (:mod:`.intake`, :func:`take_in`): links and special
+   files set aside, its time read (:func:`submission_time`).
 1. Each submission is sanitized by nbgrader's own preprocessors (locked and test
    cells restored from the source notebook), turned into a plan, and run in its
    sandbox, ``jobs`` at a time (:mod:`.supervisor`).
 2. ``nbgrader autograde`` runs in this process, on each submission as soon as
    its run is done (while the next ones run); its execution step,
-   :class:`~.nbgrader_step.JudgeSubmission`, takes each prepared run (or runs the
-   plan itself if the notebook differs), judges it against the submitter's key
+   :class:`~.nbgrader_step.JudgeSubmission`, takes each prepared run (handed to
+   it in the API's configuration, :class:`~.nbgrader_step.PreparedRuns`; it runs
+   the plan itself if the notebook differs), judges it against the submitter's key
    and lets nbgrader score the test cells and write the gradebook. Then the
    submission's feedback page is written (:mod:`.feedback`).
 3. A notebook that cannot be read gets 0 in the gradebook, with the reason in
@@ -42,17 +45,16 @@ from . import intake
 from .feedback import FeedbackPages, feedback_folder
 from .lock import course_lock
 from .nbgrader_step import (
-    _LOCK,
-    PREPARED,
     NotebookTooLarge,
     NotebookUnreadable,
+    PreparedRuns,
     cached_key,
     command_for,
     read_submission,
     save_outcome,
 )
 from .outcome import Outcome
-from .plan import fingerprint, plan_of
+from .plan import plan_of
 from .state import submission_hash, to_do, write_state
 from .stop import HALT, NAMES, received, stoppable, wait_for
 from .supervisor import Limits, run_plan
@@ -140,12 +142,16 @@ def load_config(course_dir):
     return config
 
 
-def api_for(course_dir):
+def api_for(course_dir, prepared=None):
+    """nbgrader's API on the course, and the course's configuration; ``prepared``
+    (a :class:`~.nbgrader_step.PreparedRuns`) is handed to its JudgeSubmission."""
     from nbgrader.apps import NbGraderAPI
     from nbgrader.coursedir import CourseDirectory
 
     ensure_path()
     config = load_config(course_dir)
+    if prepared is not None:
+        config.JudgeSubmission.prepared = prepared
     return NbGraderAPI(CourseDirectory(config=config), config=config), config
 
 
@@ -248,9 +254,10 @@ def sanitize(config, course_dir, assignment, student, nb):
     return nb
 
 
-def prepare(config, course_dir, assignment, spec, student, command, limits, slots):
+def prepare(config, course_dir, assignment, spec, student, command, limits, slots, runs):
     """Read, sanitize, plan and run one submission in its sandbox (a worker
-    thread). A run cut short by a stop is dropped."""
+    thread); the run goes into ``runs`` (:class:`~.nbgrader_step.PreparedRuns`),
+    for JudgeSubmission. A run cut short by a stop is dropped."""
     sub = Submission(student)
     if HALT.is_set():
         sub.stopped = True
@@ -282,8 +289,7 @@ def prepare(config, course_dir, assignment, spec, student, command, limits, slot
     if HALT.is_set():  # its sandbox may have been killed under it
         sub.stopped = True
         return sub
-    with _LOCK:
-        PREPARED[(course_dir, assignment, student, fingerprint(steps))] = run
+    runs.put(assignment, student, steps, run)
     sub.prepared, sub.seconds = True, run.seconds
     return sub
 
@@ -356,7 +362,8 @@ def grade(
     course_dir = os.path.abspath(course_dir)
     jobs = _jobs(jobs)
     spec = load_spec(course_dir, assignment)
-    api, config = api_for(course_dir)
+    runs = PreparedRuns()  # made in the workers, taken by JudgeSubmission in autograde
+    api, config = api_for(course_dir, runs)
     check_gradebook(config, course_dir)
     roster_ids(course_dir)  # a damaged roster is said now, not once per submission
     _question_names(course_dir, assignment)  # and a damaged released notebook
@@ -373,10 +380,16 @@ def grade(
         remove_partial(os.path.join(course_dir, "feedback"))
         if csv_path:
             remove_partial(os.path.dirname(os.path.abspath(csv_path)), False)
-        run = _Run(course_dir, assignment, spec, api, config, command, limits, show_progress)
+        run = _Run(course_dir, assignment, spec, api, config, command, limits, show_progress, runs)
         try:
             chosen = choose(course_dir, assignment, students)
-            take_in(course_dir, assignment, chosen)  # before contents are hashed: --new
+            try:
+                take_in(course_dir, assignment, chosen)  # before contents are hashed: --new
+            except WriteError as exc:
+                raise GradingFailed(
+                    f"{exc}. Nothing was graded; once that is fixed, run: "
+                    f"{resume_command(course_dir, assignment)}"
+                ) from None
             subs, timings = run.go(chosen, only_new, jobs)
             t0 = time.monotonic()
             try:
@@ -449,9 +462,10 @@ class _Run:
     """One grading run: the submissions it grades, in the order their sandboxed
     runs end, each carried through its stages (state.py) in this thread."""
 
-    def __init__(self, course_dir, assignment, spec, api, config, command, limits, show):
+    def __init__(self, course_dir, assignment, spec, api, config, command, limits, show, runs):
         self.course_dir, self.assignment, self.spec = course_dir, assignment, spec
         self.api, self.config, self.command, self.limits = api, config, command, limits
+        self.runs = runs  # PreparedRuns: the workers put, JudgeSubmission (in api) takes
         self.show = show
         self.subs = {}
         self.chosen = []
@@ -481,7 +495,7 @@ class _Run:
                 warnings.simplefilter("ignore")
                 args = (self.config, course_dir, assignment, self.spec)
                 futures = {
-                    pool.submit(prepare, *args, s, self.command, self.limits, slots): s
+                    pool.submit(prepare, *args, s, self.command, self.limits, slots, self.runs): s
                     for s in chosen
                     if todo[s] == "grade"
                 }
@@ -520,9 +534,7 @@ class _Run:
             HALT.set()  # no sandbox starts now; one that runs is ended
             pool.shutdown(wait=False, cancel_futures=True)
             wait_for(lambda: any(not f.done() for f in futures))
-            with _LOCK:
-                for token in [t for t in PREPARED if t[0] == course_dir and t[1] == assignment]:
-                    PREPARED.pop(token, None)
+            self.runs.clear()  # runs never judged (a stop, a failure) are not kept
             if self.show and n < len(chosen):
                 sys.stderr.write("\n")
                 sys.stderr.flush()

@@ -19,7 +19,7 @@ Everything a student hands in can be forged: the folder's name (the id nbgrader'
   link, a hard link to someone else's file or a special file is never followed
   or read; in ``submitted/`` the grader sets such entries aside before nbgrader
   sees them (:func:`prepare`), and a feedback folder keeps only what the grader
-  wrote (:func:`clean_feedback`).
+  wrote (:func:`clean_feedback_of`, after each feedback page).
 
 What collect learnt of a submission (and what grading adds) is kept in a record,
 ``.accelab/intake/<assignment>/<student>.json``: its notes reach the grade table
@@ -492,16 +492,6 @@ def _move_aside(path, aside, relname):
                 os.unlink(path)
         except OSError:
             pass
-
-
-def clean_feedback(course_dir, assignment, students):
-    """Each student's feedback folder holds only what the grader wrote (see
-    :func:`clean_feedback_of`); a folder that cannot be cleaned is left as it is."""
-    for student in students:
-        try:
-            clean_feedback_of(course_dir, assignment, student)
-        except OSError:
-            pass  # the page is there or not; release_feedback says which
 
 
 def clean_feedback_of(course_dir, assignment, student):

@@ -3,7 +3,8 @@
 * :class:`JudgeSubmission` takes the place of nbgrader's ``Execute`` in
   ``nbgrader autograde`` (and so in formgrader's autograde button): it runs the
   sanitized notebook in the sandbox (or takes the run ``accelab grade`` already
-  made of the very same plan), judges every answer against the submitter's key
+  made of the very same plan, handed to it in its configuration:
+  :class:`PreparedRuns`), judges every answer against the submitter's key
   in this process, and writes outputs and verdicts into the notebook. nbgrader's
   own ``SaveAutoGrades`` then scores the test cells and writes the gradebook:
   after the sandbox is gone, from the grader's process.
@@ -22,7 +23,7 @@ import threading
 
 import nbformat
 from nbgrader.preprocessors import NbGraderPreprocessor
-from traitlets import Bool, Float, Integer
+from traitlets import Bool, Float, Instance, Integer
 
 from ..files import fault, write_atomic
 from ..nbgrader_course import roster_ids
@@ -35,10 +36,45 @@ from .state import outcome_path, submission_hash
 from .stop import HALT, Interruptible, Stopped
 from .supervisor import Limits, run_plan
 
-#: runs made ahead of nbgrader: (course, assignment, student, fingerprint) -> RunResult
-PREPARED = {}
 _KEYS = {}
 _LOCK = threading.Lock()
+
+
+class PreparedRuns:
+    """The sandboxed runs one ``accelab grade`` made ahead of nbgrader's autograde,
+    handed to :class:`JudgeSubmission` explicitly: through the configuration of
+    the grading run's own nbgrader API (``JudgeSubmission.prepared``), never
+    through a module's state. A run is keyed by the submission and the
+    fingerprint of its plan, and taken once (a notebook that differs is run
+    again). traitlets copies configuration values; this handle is shared, not
+    copied."""
+
+    def __init__(self):
+        self._runs = {}
+        self._lock = threading.Lock()
+
+    def put(self, assignment, student, steps, run):
+        with self._lock:
+            self._runs[(assignment, student, fingerprint(steps))] = run
+
+    def take(self, assignment, student, steps):
+        """The run made of exactly this plan, or None."""
+        with self._lock:
+            return self._runs.pop((assignment, student, fingerprint(steps)), None)
+
+    def clear(self):
+        with self._lock:
+            self._runs.clear()
+
+    def __len__(self):
+        with self._lock:
+            return len(self._runs)
+
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
 
 
 def cached_key(spec, student):
@@ -143,6 +179,12 @@ class JudgeSubmission(NbGraderPreprocessor):
         "then read the course (keys, hidden tests, gradebook) and change "
         "other students' grades",
     ).tag(config=True)
+    prepared = Instance(
+        PreparedRuns,
+        allow_none=True,
+        help="The runs accelab grade made ahead of this step (set by accelab grade for its "
+        "own autograde calls; none in nbgrader's own commands)",
+    ).tag(config=True)
 
     def preprocess(self, nb, resources):
         info = resources["nbgrader"]
@@ -150,9 +192,7 @@ class JudgeSubmission(NbGraderPreprocessor):
         course_dir = os.path.abspath(self.config.CourseDirectory.root or ".")
         spec = read_spec(course_dir, assignment)
         steps = plan_of(nb)
-        token = (course_dir, assignment, student, fingerprint(steps))
-        with _LOCK:
-            run = PREPARED.pop(token, None)
+        run = self.prepared.take(assignment, student, steps) if self.prepared is not None else None
         key = cached_key(spec, student)
         if run is None:
             run = run_plan(

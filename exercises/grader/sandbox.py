@@ -71,15 +71,22 @@ def remove_stale_etc():
     """Remove the passwd folders that grading processes which no longer run left
     in the temporary directory (a process killed with SIGKILL runs no exit
     handler); only this user's, only of processes that are gone."""
+    remove_left_behind(ETC_PREFIX)
+
+
+def remove_left_behind(prefix):
+    """Remove the temporary folders ``PREFIX<pid>-*`` of grading processes that no
+    longer run (a process killed with SIGKILL runs no exit handler); only this
+    user's, only of processes that are gone, never through a link."""
     root = tempfile.gettempdir()
     try:
         names = os.listdir(root)
     except OSError:
         return
     for name in names:
-        if not name.startswith(ETC_PREFIX):
+        if not name.startswith(prefix):
             continue
-        pid = name[len(ETC_PREFIX) :].split("-")[0]
+        pid = name[len(prefix) :].split("-")[0]
         path = os.path.join(root, name)
         try:
             info = os.lstat(path)
