@@ -21,6 +21,16 @@ def _families(text):
     return names
 
 
+def _positive(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number of at least 1")
+    return value
+
+
 def register(subparsers):
     fmt = argparse.RawDescriptionHelpFormatter
     p = subparsers.add_parser(
@@ -139,9 +149,10 @@ def register(subparsers):
     p.add_argument(
         "--new",
         action="store_true",
-        help="grade only submissions not graded since they were submitted",
+        help="grade only what is not completely graded yet, or was handed in again since "
+        "(compared by content); also finishes an interrupted run",
     )
-    p.add_argument("--jobs", type=int, default=2, help="submissions run at a time")
+    p.add_argument("--jobs", type=_positive, default=2, help="submissions run at a time")
     p.add_argument("--csv", default=None, help="CSV path (default COURSE/grades_A.csv)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument(
@@ -169,8 +180,12 @@ def register(subparsers):
         help="folder for the demo course: created by the demo, or one it created "
         "before (any other existing folder is refused)",
     )
-    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--jobs", type=_positive, default=2)
     p.set_defaults(func=run_demo)
+
+
+def _note(message):
+    print(f"accelab: note: {message}", file=sys.stderr)
 
 
 def _fail(message):
@@ -198,7 +213,7 @@ def run_assign(args):
 
     try:
         ranges = json.loads(args.ranges) if args.ranges else None
-        roster = read_roster(args.roster) if args.roster else ()
+        roster = read_roster(args.roster, say=_note) if args.roster else ()
         path = assign(
             args.course,
             args.assignment,
@@ -238,7 +253,7 @@ def run_variant(args):
 
 
 def run_grade(args):
-    from .grader.grade import grade
+    from .grader.grade import GradingStopped, grade
     from .grader.gradetable import format_table, question_names
     from .grader.intake import refusals
     from .grader.sandbox import SandboxUnavailable
@@ -268,14 +283,33 @@ def run_grade(args):
             "source notebooks and the gradebook and change other students' grades; "
             "to grade anyway, only notebooks you trust, pass --unsafe-no-sandbox"
         )
+    except GradingStopped as exc:
+        print(f"accelab: {exc}", file=sys.stderr)
+        return exc.status
     except (ValueError, OSError, RuntimeError) as exc:
         return _fail(str(exc))
     for line in refusals(args.course, args.assignment):
         _say(line)
-    print(format_table(rows, question_names(args.course, args.assignment)))
+    try:
+        names = question_names(args.course, args.assignment)
+    except (OSError, ValueError):
+        names = [n for n in rows[0] if n not in _NOT_QUESTIONS] if rows else []
+    print(format_table(rows, names))
     spent = ", ".join(f"{k} {v:.1f} s" for k, v in timings.items())
-    print(f"\n{len(subs)} submission(s) graded in {seconds:.1f} s ({spent}); CSV: {path}")
+    failed = [s for s in subs if s.failed]
+    done = f"{len(subs) - len(failed)} submission(s) graded" + (
+        f", {len(failed)} not graded (see below)" if failed else ""
+    )
+    print(f"\n{done} in {seconds:.1f} s ({spent}); CSV: {path}")
+    for sub in subs:  # what the instructor must do about a submission that is not graded
+        if sub.failed:
+            print(f"accelab: student {sub.student}: not graded: {sub.problem}", file=sys.stderr)
+        for note in sub.notes:
+            print(f"accelab: student {sub.student}: {note}", file=sys.stderr)
     return 0 if all(s.graded for s in subs) else 1
+
+
+_NOT_QUESTIONS = ("student", "score", "late_penalty", "total", "max", "notes")
 
 
 def run_demo(args):

@@ -100,12 +100,19 @@ def students_in_group(gid, accounts):
     return found
 
 
-def private_course(course_dir, accounts=(), say=print):
+def private_course(course_dir, accounts=(), say=print, create=True):
     """Make the course folder private to the instructor (and a graders' group with
-    no student in it). Creates it (mode 700) when missing. Says what it changed;
-    raises :class:`LayoutError` when it is not the instructor's."""
+    no student in it). Creates it (mode 700) when missing, unless ``create`` is
+    false (a new course built aside and renamed into place with mode 700: only
+    the folders above it are checked). Says what it changed; raises
+    :class:`LayoutError` when it is not the instructor's."""
     course_dir = os.path.abspath(course_dir)
     if not os.path.lexists(course_dir):
+        if not create:
+            problem = _ancestors_problem(course_dir)
+            if problem:
+                raise LayoutError(problem)
+            return course_dir
         os.makedirs(course_dir, mode=0o700)
         os.chmod(course_dir, 0o700)
     if os.path.islink(course_dir):
@@ -304,29 +311,53 @@ def course_config(course_dir):
     none yet."""
     from traitlets.config.loader import PyFileConfigLoader
 
-    if not os.path.exists(os.path.join(course_dir, "nbgrader_config.py")):
+    path = os.path.join(course_dir, "nbgrader_config.py")
+    if not os.path.exists(path):
         return None
-    return PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
+    try:
+        return PyFileConfigLoader("nbgrader_config.py", path=course_dir).load_config()
+    except Exception as exc:  # noqa: BLE001 - it is Python: any error of the instructor's
+        where = f" (line {exc.lineno})" if getattr(exc, "lineno", None) else ""
+        raise LayoutError(
+            f"{path} cannot be loaded{where}: {type(exc).__name__}: {str(exc)[:300]}; fix it, "
+            "or restore it from a backup"
+        ) from None
 
 
-def prepare(course_dir, course_id, exchange=None, accounts=(), say=print):
-    """The layout of a course, created or repaired before ``accelab assign`` writes
-    anything: the course folder private (:func:`private_course`), the exchange
-    outside it (:func:`prepare_exchange`). ``exchange`` is the exchange of a new
-    course (default: a folder ``exchange`` beside the course folder); an existing
-    course keeps the one its configuration names. Returns the exchange's path."""
-    course_dir = private_course(course_dir, accounts, say)
+def upgrade_config(course_dir, say=print, named=None):
+    """Add accelab's collect and formgrader templates (:data:`CONFIG_ADDED`) to a
+    course configuration that predates them (the file replaced whole); says so,
+    naming the file as ``named`` (default its path: a staged copy is named as the
+    course's own). Nothing is done to a configuration that has them, or to none."""
+    from .files import write_atomic
+
     config = course_config(course_dir)
-    if config is not None and "accelab" not in str(
-        config.get("ExchangeFactory", {}).get("collect")
-    ):
-        path = os.path.join(course_dir, "nbgrader_config.py")
-        with open(path, "a", encoding="utf-8") as fh:
-            fh.write(CONFIG_ADDED)
-        say(
-            f"{path} did not use accelab's collect (who handed in and when, from what a "
-            "student cannot forge) nor escape ids in formgrader's pages: both added at its end"
-        )
+    if config is None or "accelab" in str(config.get("ExchangeFactory", {}).get("collect")):
+        return
+    path = os.path.join(course_dir, "nbgrader_config.py")
+    with open(path, encoding="utf-8") as fh:
+        text = fh.read()
+    write_atomic(path, text + CONFIG_ADDED)
+    say(
+        f"{named or path} did not use accelab's collect (who handed in and when, from what a "
+        "student cannot forge) nor escape ids in formgrader's pages: both added at its end"
+    )
+
+
+def prepare(course_dir, course_id, exchange=None, accounts=(), say=print, new=False, upgrade=True):
+    """The layout of a course, created or repaired before ``accelab assign`` writes
+    anything: the course folder private (:func:`private_course`), an older
+    configuration given accelab's collect (:func:`upgrade_config`; ``upgrade``
+    false leaves that to the caller, which does it in its staged copy), the
+    exchange outside the course (:func:`prepare_exchange`). ``exchange`` is the
+    exchange of a new course (default: a folder ``exchange`` beside the course
+    folder); an existing course keeps the one its configuration names. ``new``:
+    the course folder is not made here (it is built aside and renamed into
+    place). Returns the exchange's path."""
+    course_dir = private_course(course_dir, accounts, say, create=not new)
+    if upgrade:
+        upgrade_config(course_dir, say)
+    config = course_config(course_dir)
     if config is not None:
         configured = exchange_of(config)
         if exchange and os.path.realpath(exchange) != os.path.realpath(configured):

@@ -15,6 +15,8 @@ import os
 import subprocess
 import sys
 
+from .ids import RULE, id_problem
+
 #: a Jupyter data folder for ``JUPYTER_PATH``: nbconvert's ``mathjax`` macro that loads MathJax
 #: from the Jupyter server itself (jupyter-server-mathjax), so that formgrader and the feedback
 #: pages typeset their equations offline (nbgrader's templates otherwise fetch it from a CDN)
@@ -107,12 +109,72 @@ def nbgrader(course_dir, *args, check=True):
     return proc
 
 
-def read_roster(path):
-    """Students from a CSV with a column ``id`` (and optional first_name, last_name, email)."""
-    with open(path, newline="") as fh:
-        rows = list(csv.DictReader(fh))
-    if rows and "id" not in rows[0]:
-        raise ValueError(f"{path}: the roster needs a column 'id' (got {list(rows[0])})")
+def check_ids(ids, where="the roster"):
+    """ValueError naming every id of ``ids`` (a list of (row label, id)) that
+    cannot be a student id (:func:`accelab.exercises.ids.id_problem`, the rule
+    collect and grade hold submitted ids to), and every two that are equal but
+    for letter case."""
+    problems = [
+        f"{label}: " + (f"{sid!r} {why}" if sid else "the id is empty")
+        for label, sid in ids
+        if (why := id_problem(sid))
+    ]
+    seen = {}
+    for label, sid in ids:
+        key = sid.casefold()
+        if key in seen:
+            first_label, first = seen[key]
+            same = "the same id" if first == sid else "ids equal but for letter case"
+            problems.append(f"{first_label} and {label}: {same} ({first!r}, {sid!r})")
+        else:
+            seen[key] = (label, sid)
+    if problems:
+        raise ValueError(
+            f"{where} cannot be used: "
+            + "; ".join(problems[:10])
+            + (f"; and {len(problems) - 10} more" if len(problems) > 10 else "")
+            + f". {RULE[0].upper()}{RULE[1:]}, and each student is on it once; fix the file and "
+            "run again"
+        )
+
+
+def read_roster(path, say=None):
+    """Students from a CSV with a column ``id`` (and optional first_name,
+    last_name, email); a UTF-8 byte order mark is read as none.
+
+    Ids padded with spaces are taken without them (``say`` is told). Raises
+    ValueError naming the rows of ids that cannot be student ids (see
+    :func:`check_ids`), and for a roster without an ``id`` column or without
+    students.
+    """
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as fh:
+            reader = csv.DictReader(fh)
+            fields = [str(f).strip() for f in (reader.fieldnames or [])]
+            reader.fieldnames = fields
+            rows = list(reader)
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: the roster is not text in UTF-8; save it as UTF-8 CSV") from None
+    except csv.Error as exc:
+        raise ValueError(f"{path}: the roster is not a CSV file ({exc})") from None
+    if "id" not in fields:
+        raise ValueError(
+            f"{path}: the roster needs a column 'id' (got {fields or 'no header'}); its first "
+            f"line must name the columns, e.g. id,first_name,last_name,email"
+        )
+    labelled, padded = [], []
+    for k, row in enumerate(rows, start=2):
+        raw = row.get("id") or ""
+        sid = raw.strip()
+        if sid != raw and sid:
+            padded.append(f"row {k}: {raw!r} taken as {sid!r}")
+        row["id"] = sid
+        labelled.append((f"row {k}", sid))
+    if not rows:
+        raise ValueError(f"{path}: the roster has no students (only a header, or nothing)")
+    check_ids(labelled, where=f"the roster {path}")
+    if padded and say:
+        say(f"{path}: spaces around ids removed: {'; '.join(padded[:10])}")
     return rows
 
 
@@ -161,19 +223,29 @@ def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=6
 
 
 def roster_ids(root):
-    """The ids on the course's roster (in the order they were added)."""
+    """The ids on the course's roster (in the order they were added). Raises
+    ValueError naming the file if it is damaged."""
     path = os.path.join(root, ".accelab", "roster.json")
     if not os.path.exists(path):
         return []
-    with open(path) as fh:
-        return [str(s) for s in json.load(fh)]
+    try:
+        with open(path, encoding="utf-8") as fh:
+            ids = json.load(fh)
+        if not isinstance(ids, list):
+            raise ValueError("not a list of ids")
+    except (OSError, ValueError) as exc:
+        raise ValueError(
+            f"the course's roster {path} is damaged ({exc}); restore it from a backup, or "
+            f'write it again: a JSON list of the student ids, e.g. ["ann", "bob"]'
+        ) from None
+    return [str(s) for s in ids]
 
 
 def write_roster(root, ids):
+    from .files import write_atomic
+
     path = os.path.join(root, ".accelab", "roster.json")
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as fh:
-        json.dump(list(dict.fromkeys(ids)), fh, indent=1)
+    write_atomic(path, json.dumps(list(dict.fromkeys(ids)), indent=1))
 
 
 def course_id_of(root):

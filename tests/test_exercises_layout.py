@@ -170,3 +170,38 @@ def test_an_older_courses_configuration_gets_accelabs_collect(tmp_path):
     config.write_text(config.read_text() + f"c.Exchange.root = {str(course / 'exchange')!r}\n")
     with pytest.raises(LayoutError, match="inside the course folder"):
         prepare(str(course), "old", None, (), said.append)
+
+
+def test_assign_upgrades_an_older_configuration_all_or_nothing(tmp_path, monkeypatch):
+    """accelab assign gives an older course's configuration accelab's collect in its
+    staged copy: swapped in with the new assignment, and not at all when the
+    assignment fails; a new course is built private (mode 700), with no exchange
+    inside it, and the roster's account names are kept with the roster."""
+    from accelab.exercises.assign import assign
+    from accelab.exercises.layout import course_config
+
+    course = str(tmp_path / "course")
+    assign(course, "A", ["rotation"], roster=["ann"], generate=False, say=print)
+    assert mode(course) == 0o700 and not os.path.exists(os.path.join(course, "exchange"))
+    path = os.path.join(course, "nbgrader_config.py")
+    with open(path) as fh:
+        old = "".join(line for line in fh if "Collect" not in line and "HTMLExporter" not in line)
+    with open(path, "w") as fh:
+        fh.write(old)
+    import accelab.exercises.assign as assign_module
+
+    def full_disk(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    with monkeypatch.context() as patched:  # fails inside the build, after the upgrade
+        patched.setattr(assign_module, "write_source", full_disk)
+        with pytest.raises(OSError):
+            assign(course, "B", ["rotation"], generate=False, say=print)
+    assert open(path).read() == old and not os.path.exists(os.path.join(course, "source", "B"))
+    said = []
+    roster = [{"id": "bob", "account": "bob1"}]
+    assign(course, "B", ["rotation"], roster=roster, generate=False, say=said.append)
+    assert "AccelabCollect" in str(course_config(course).ExchangeFactory.collect)
+    assert any(m.startswith(f"{path} did not use accelab's collect") for m in said), said
+    assert intake.id_of_account(course, "bob1") == "bob"
+    assert not [f for f in os.listdir(os.path.join(course, ".accelab")) if "staging" in f]

@@ -5,22 +5,33 @@ from the grading (whose values a notebook showed, cells that failed, damage).
 """
 
 import csv
-import json
+import io
 import os
 import warnings
 
 import nbformat
 
+from ..files import write_atomic
 from ..nbgrader_course import course_id_of, gradebook, roster_ids
 from . import intake
-from .nbgrader_step import outcome_path, read_submission
+from .nbgrader_step import read_submission
 from .plan import TEST_PREFIX
+from .state import grading_status
 
 
 def question_names(course_dir, assignment):
     """Graded quantity names, in notebook order (from the released notebook)."""
     path = os.path.join(course_dir, "release", assignment, f"{assignment}.ipynb")
-    nb = nbformat.read(path, as_version=4)
+    try:
+        nb = nbformat.read(path, as_version=4)
+    except FileNotFoundError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - any damage of the file: said with its name
+        raise ValueError(
+            f"the released notebook {path} cannot be read ({type(exc).__name__}); make it "
+            f"again with: nbgrader generate_assignment {assignment} --force (in the course "
+            f"folder)"
+        ) from None
     names = []
     for cell in nb.cells:
         meta = cell.metadata.get("nbgrader", {})
@@ -37,7 +48,7 @@ def damage(course_dir, assignment, student):
     try:
         nb = read_submission(path)
         ref = nbformat.read(release, as_version=4)
-    except Exception:
+    except Exception:  # noqa: BLE001 - a notebook that cannot be read has its own note
         return []
     seen, notes, forged = {}, [], []
     for cell in nb.cells:
@@ -95,14 +106,6 @@ def _role(cell):
     )
 
 
-def read_outcome(course_dir, assignment, student):
-    path = outcome_path(course_dir, assignment, student)
-    if not os.path.exists(path):
-        return None
-    with open(path) as fh:
-        return json.load(fh)
-
-
 def rows_of(course_dir, assignment):
     """The table rows (dicts), roster first, then other submitters."""
     names = question_names(course_dir, assignment)
@@ -114,7 +117,7 @@ def rows_of(course_dir, assignment):
         warnings.simplefilter("ignore")
         for student in students:
             row = {n: 0.0 for n in names}
-            notes, penalty = [], 0.0
+            notes, penalty, graded = [], 0.0, True
             if student not in submitters:
                 notes.append("no submission")
             else:
@@ -122,11 +125,15 @@ def rows_of(course_dir, assignment):
                     notes.append("not on the roster")
                 try:
                     sub = gb.find_submission(assignment, student)
-                except Exception:
+                except Exception:  # noqa: BLE001 - MissingEntry or worse: "not graded yet"
                     sub = None
-                outcome = read_outcome(course_dir, assignment, student)
-                if sub is None or outcome is None:
-                    notes.append("not graded yet")
+                outcome, status = grading_status(course_dir, assignment, student)
+                if sub is None and outcome is not None:
+                    outcome, status = None, "not graded yet: not in the gradebook"
+                if status:
+                    notes.append(status)
+                if outcome is None:  # never a number the grader cannot vouch for
+                    row, graded = {n: None for n in names}, False
                 else:
                     for nb in sub.notebooks:
                         for g in nb.grades:
@@ -143,19 +150,19 @@ def rows_of(course_dir, assignment):
                             f"late by {_duration(sub.total_seconds_late)}"
                             + (f": penalty {penalty:g}" if penalty else ": no penalty")
                         )
-                    notes += outcome.get("notes", [])
-                notes += [
+                    notes += [str(n) for n in outcome.get("notes", [])]
+                notes += [  # who and when (intake), said whether or not it is graded yet
                     n for n in intake.notes_of(course_dir, assignment, student) if n not in notes
                 ]
                 notes += damage(course_dir, assignment, student)
-            score = sum(row.values())
+            score = sum(row.values()) if graded else None
             rows.append(
                 {
                     "student": student,
                     **row,
                     "score": score,
-                    "late_penalty": penalty,
-                    "total": max(0.0, score - penalty),
+                    "late_penalty": penalty if graded else None,
+                    "total": max(0.0, score - penalty) if graded else None,
                     "max": float(len(names)),
                     "notes": "; ".join(notes),
                 }
@@ -185,15 +192,17 @@ def _duration(seconds):
 
 
 def export_csv(course_dir, assignment, path=None):
-    """Write the CSV; returns (path, rows)."""
+    """Write the CSV (replaced whole: a failed write keeps the old one); returns
+    (path, rows). A submission that is not graded has empty score cells."""
     path = path or os.path.join(course_dir, f"grades_{assignment}.csv")
     names, rows = rows_of(course_dir, assignment)
-    with open(path, "w", newline="") as fh:
-        writer = csv.DictWriter(
-            fh, fieldnames=["student", *names, "score", "late_penalty", "total", "max", "notes"]
-        )
-        writer.writeheader()
-        writer.writerows({k: _cell_text(v) for k, v in row.items()} for row in rows)
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(
+        text, fieldnames=["student", *names, "score", "late_penalty", "total", "max", "notes"]
+    )
+    writer.writeheader()
+    writer.writerows({k: _cell_text(v) for k, v in row.items()} for row in rows)
+    write_atomic(path, text.getvalue(), stage="csv")
     return path, rows
 
 
@@ -203,7 +212,7 @@ def _cell_text(value):
     gets a leading apostrophe; numbers are written as they are."""
     if isinstance(value, str) and value[:1] in ("=", "+", "-", "@", "\t", "\r"):
         return "'" + value
-    return value
+    return "" if value is None else value
 
 
 def format_table(rows, names):
@@ -211,9 +220,10 @@ def format_table(rows, names):
     head = f"{'student':<12} " + " ".join(f"{n[:11]:>11}" for n in names) + f" {'total':>7}  notes"
     lines = [head, "-" * len(head)]
     for r in rows:
+        total = "-" if r["total"] is None else f"{r['total']:g}"
         lines.append(
             f"{r['student']:<12} "
-            + " ".join(f"{r[n]:>11g}" for n in names)
-            + f" {r['total']:>4g}/{r['max']:g}  {r['notes']}"
+            + " ".join(f"{'-' if r[n] is None else format(r[n], 'g'):>11}" for n in names)
+            + f" {total:>4}/{r['max']:g}  {r['notes']}"
         )
     return "\n".join(lines)

@@ -19,7 +19,7 @@ Everything a student hands in can be forged: the folder's name (the id nbgrader'
   link, a hard link to someone else's file or a special file is never followed
   or read; in ``submitted/`` the grader sets such entries aside before nbgrader
   sees them (:func:`prepare`), and a feedback folder keeps only what the grader
-  wrote (:func:`clean_feedback`).
+  wrote (:func:`clean_feedback_of`, after each feedback page).
 
 What collect learnt of a submission (and what grading adds) is kept in a record,
 ``.accelab/intake/<assignment>/<student>.json``: its notes reach the grade table
@@ -35,15 +35,13 @@ import os
 import secrets
 import shutil
 import stat
-import unicodedata
 
+from ..files import WriteError
+from ..files import write_atomic as _write_whole
+from ..ids import id_problem as name_problem
+from ..ids import shown
 from ..nbgrader_course import roster_ids
 
-#: longest student id [characters]
-MAX_ID = 64
-#: characters an id never holds: markup, quotes, and what a URL or a shell reads
-#: specially (formgrader puts ids into links and pages; nbgrader refuses ``+`` and ``*``)
-NOT_IN_IDS = set("<>&\"'`\\/?#%+*")
 #: how far timestamp.txt may be from the exchange's record before it is noted [s]
 TIME_SLACK = 600.0
 #: how far in the future a timestamp may be (clocks differ a little) [s]
@@ -64,63 +62,17 @@ def id_problem(name, roster=None):
     """Why ``name`` (a folder name or a claimed id, str or bytes) cannot be a student
     id, as words for a note, or None when it can.
 
-    An id is a name: valid UTF-8, 1 to :data:`MAX_ID` characters, no spaces or
-    control characters, nothing of a path (``/``, a backslash, a leading ``.``,
-    ``-`` or ``~``), no markup, quotes or backquotes (``<``, ``>``, ``&``), nothing
-    nbgrader's exchange or a URL reads specially (``+ * ? # %``); and, when the
-    course has a roster, on it.
+    An id is a name (:func:`accelab.exercises.ids.id_problem`, the one rule the
+    roster is checked by too): valid UTF-8, 1 to 64 letters, digits
+    and ``_ . @ -``, nothing of a path, markup or what nbgrader's exchange or a
+    URL reads specially; and, when the course has a roster, on it.
     """
-    if isinstance(name, bytes):
-        try:
-            name = name.decode("utf-8")
-        except UnicodeDecodeError:
-            return "is not valid UTF-8"
-    if not isinstance(name, str):
-        return "is not a name"
-    try:
-        name.encode("utf-8")
-    except UnicodeEncodeError:  # a folder name of bytes that are not UTF-8
-        return "is not valid UTF-8"
-    if not name:
-        return "is empty"
-    if len(name) > MAX_ID:
-        return f"is longer than {MAX_ID} characters"
-    if name in (".", "..") or name[0] in ".-~" or "/" in name or "\\" in name:
-        return "looks like a path, not a name"
-    if any(ch in NOT_IN_IDS for ch in name):
-        bad = "".join(sorted({ch for ch in name if ch in NOT_IN_IDS}))
-        return f"holds characters a student id never has ({shown(bad)})"
-    if any(ch.isspace() or unicodedata.category(ch)[0] in "CZ" for ch in name):
-        return "holds spaces or control characters"
-    if roster and name not in roster:
+    problem = name_problem(name)
+    if problem:
+        return problem
+    if roster and (name.decode("utf-8") if isinstance(name, bytes) else name) not in roster:
         return "is not on the roster"
     return None
-
-
-def shown(name, limit=MAX_ID):
-    """A name as a note shows it, safe anywhere it is printed (a terminal, a CSV, a
-    web page): printable ASCII, with markup, quotes, backslashes, control and
-    non-ASCII characters and bytes that are not UTF-8 written as escapes
-    (``\\x3c``, ``\\xff``), cut to ``limit`` characters."""
-    if isinstance(name, bytes):
-        text = name.decode("utf-8", "backslashreplace")
-    else:
-        try:
-            text = str(name).encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
-        except UnicodeEncodeError:
-            text = str(name).encode("utf-8", "backslashreplace").decode("ascii")
-    out = []
-    for ch in text:  # (a backslash stays: the escapes backslashreplace wrote)
-        if " " <= ch <= "~" and ch not in "<>&\"'`":
-            out.append(ch)
-        elif ord(ch) < 0x100:
-            out.append(f"\\x{ord(ch):02x}")
-        elif ord(ch) < 0x10000:
-            out.append(f"\\u{ord(ch):04x}")
-        else:
-            out.append(f"\\U{ord(ch):08x}")
-    text = "".join(out)
-    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 # ---- accounts --------------------------------------------------------------------------------
@@ -286,22 +238,10 @@ def sane_secret(text):
 
 
 def write_atomic(path, text):
-    """Write ``text`` beside ``path``, flush it to disk, then rename it over ``path``."""
-    folder = os.path.dirname(path)
-    os.makedirs(folder, exist_ok=True)
-    tmp = os.path.join(folder, f".{os.path.basename(path)}.{secrets.token_hex(4)}.tmp")
-    try:
-        with open(tmp, "w", encoding="utf-8") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    """Replace ``path`` with ``text`` whole (:func:`accelab.exercises.files.write_atomic`:
+    written beside, flushed to disk, renamed over it); a failure raises its
+    :class:`~accelab.exercises.files.WriteError`, which names the file."""
+    _write_whole(path, text)
 
 
 def sha256_of(path):
@@ -456,9 +396,12 @@ def prepare(course_dir, assignment, student, now=None):
     followed; the time is the exchange's record when collect made one for this
     very notebook, else ``timestamp.txt`` if it is sound (a malformed, missing or
     future one is set aside, and the submission graded as on time, with a note).
-    Returns the notes (a folder that cannot be checked is said, never raised)."""
+    Returns the notes (a folder that cannot be checked is said, never raised; a
+    record that cannot be written raises its WriteError)."""
     try:
         return _prepare(course_dir, assignment, student, now)
+    except WriteError:
+        raise  # a record of the grader's own that cannot be written (a full disk): said
     except OSError as exc:
         return [f"the submission's folder could not be checked ({exc.strerror or exc})"]
 
@@ -551,26 +494,23 @@ def _move_aside(path, aside, relname):
             pass
 
 
-def clean_feedback(course_dir, assignment, students):
-    """Each student's feedback folder holds only what the grader wrote: the
+def clean_feedback_of(course_dir, assignment, student):
+    """``student``'s feedback folder holds only what the grader wrote: the
     feedback page, and the ``timestamp.txt`` and ``submission_secret.txt`` that
     ``nbgrader release_feedback`` reads, written here (never a student's file,
-    nor anything a link in a submission pointed to)."""
-    for student in students:
-        try:
-            _clean_feedback(course_dir, assignment, student)
-        except OSError:
-            pass  # the page is there or not; release_feedback says which
-
-
-def _clean_feedback(course_dir, assignment, student):
+    nor anything a link in a submission pointed to). Each file is replaced whole,
+    and only when it changes; a write that fails raises its WriteError."""
     keep = f"{assignment}.html"
     folder = os.path.join(course_dir, "feedback", student, assignment)
     if not os.path.isdir(folder) or os.path.islink(folder):
         return
+    ours = {"timestamp.txt", "submission_secret.txt"}
     for name in os.listdir(folder):
         path = os.path.join(folder, name)
-        if name == keep and not os.path.islink(path):
+        try:
+            if name in ({keep} | ours) and stat.S_ISREG(os.lstat(path).st_mode):
+                continue
+        except OSError:
             continue
         try:
             if os.path.isdir(path) and not os.path.islink(path):
@@ -583,9 +523,17 @@ def _clean_feedback(course_dir, assignment, student):
         return
     record = read_record(course_dir, assignment, student) or {}
     when = parse_time(str(record.get("time") or "")) or utcnow()
-    write_atomic(os.path.join(folder, "timestamp.txt"), format_time(when))
+    _write_changed(os.path.join(folder, "timestamp.txt"), format_time(when))
     text, _ = read_small(
         os.path.join(course_dir, "submitted", student, assignment, "submission_secret.txt")
     )
-    secret = sane_secret(text) or secrets.token_hex(64)
-    write_atomic(os.path.join(folder, "submission_secret.txt"), secret)
+    kept, _ = read_small(os.path.join(folder, "submission_secret.txt"))
+    secret = sane_secret(text) or sane_secret(kept) or secrets.token_hex(64)
+    _write_changed(os.path.join(folder, "submission_secret.txt"), secret)
+
+
+def _write_changed(path, text):
+    """Write ``text`` to ``path`` (whole) unless it holds it already."""
+    old, _ = read_small(path)
+    if old != text:
+        write_atomic(path, text)

@@ -3,7 +3,8 @@
 * :class:`JudgeSubmission` takes the place of nbgrader's ``Execute`` in
   ``nbgrader autograde`` (and so in formgrader's autograde button): it runs the
   sanitized notebook in the sandbox (or takes the run ``accelab grade`` already
-  made of the very same plan), judges every answer against the submitter's key
+  made of the very same plan, handed to it in its configuration:
+  :class:`PreparedRuns`), judges every answer against the submitter's key
   in this process, and writes outputs and verdicts into the notebook. nbgrader's
   own ``SaveAutoGrades`` then scores the test cells and writes the gradebook:
   after the sandbox is gone, from the grader's process.
@@ -22,26 +23,58 @@ import threading
 
 import nbformat
 from nbgrader.preprocessors import NbGraderPreprocessor
-from traitlets import Bool, Float, Integer
+from traitlets import Bool, Float, Instance, Integer
 
+from ..files import fault, write_atomic
 from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
 from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
+from .state import outcome_path, submission_hash
+from .stop import HALT, Interruptible, Stopped
 from .supervisor import Limits, run_plan
 
-#: runs made ahead of nbgrader: (course, assignment, student, fingerprint) -> RunResult
-PREPARED = {}
 _KEYS = {}
 _LOCK = threading.Lock()
 
 
-def outcome_path(course_dir, assignment, student):
-    """Where the grader keeps a submission's outcome (notes, verdicts): in the
-    course folder, which no sandbox sees, and never released."""
-    return os.path.join(course_dir, ".accelab", "outcomes", assignment, f"{student}.json")
+class PreparedRuns:
+    """The sandboxed runs one ``accelab grade`` made ahead of nbgrader's autograde,
+    handed to :class:`JudgeSubmission` explicitly: through the configuration of
+    the grading run's own nbgrader API (``JudgeSubmission.prepared``), never
+    through a module's state. A run is keyed by the submission and the
+    fingerprint of its plan, and taken once (a notebook that differs is run
+    again). traitlets copies configuration values; this handle is shared, not
+    copied."""
+
+    def __init__(self):
+        self._runs = {}
+        self._lock = threading.Lock()
+
+    def put(self, assignment, student, steps, run):
+        with self._lock:
+            self._runs[(assignment, student, fingerprint(steps))] = run
+
+    def take(self, assignment, student, steps):
+        """The run made of exactly this plan, or None."""
+        with self._lock:
+            return self._runs.pop((assignment, student, fingerprint(steps)), None)
+
+    def clear(self):
+        with self._lock:
+            self._runs.clear()
+
+    def __len__(self):
+        with self._lock:
+            return len(self._runs)
+
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
 
 
 def cached_key(spec, student):
@@ -127,7 +160,7 @@ def submitted_notebook(course_dir, assignment, student, notebook):
     path = os.path.join(course_dir, "submitted", student, assignment, f"{notebook}.ipynb")
     try:
         return read_submission(path)
-    except Exception:
+    except Exception:  # noqa: BLE001 - only its shown ids are read from it: none then
         return None
 
 
@@ -146,6 +179,12 @@ class JudgeSubmission(NbGraderPreprocessor):
         "then read the course (keys, hidden tests, gradebook) and change "
         "other students' grades",
     ).tag(config=True)
+    prepared = Instance(
+        PreparedRuns,
+        allow_none=True,
+        help="The runs accelab grade made ahead of this step (set by accelab grade for its "
+        "own autograde calls; none in nbgrader's own commands)",
+    ).tag(config=True)
 
     def preprocess(self, nb, resources):
         info = resources["nbgrader"]
@@ -153,14 +192,14 @@ class JudgeSubmission(NbGraderPreprocessor):
         course_dir = os.path.abspath(self.config.CourseDirectory.root or ".")
         spec = read_spec(course_dir, assignment)
         steps = plan_of(nb)
-        token = (course_dir, assignment, student, fingerprint(steps))
-        with _LOCK:
-            run = PREPARED.pop(token, None)
+        run = self.prepared.take(assignment, student, steps) if self.prepared is not None else None
         key = cached_key(spec, student)
         if run is None:
             run = run_plan(
                 steps, key.variant.statement(), command_for(self.unsafe_no_sandbox), limits_of(self)
             )
+            if HALT.is_set():  # cut short by Ctrl-C: no grade, and nbgrader keeps nothing
+                raise Stopped(f"grading of {student} was stopped")
         submitted = submitted_notebook(
             course_dir, assignment, student, info.get("notebook", assignment)
         )
@@ -168,26 +207,34 @@ class JudgeSubmission(NbGraderPreprocessor):
         outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
         outcome.notes += notes_of(course_dir, assignment, student)  # who and when
         write_notebook(nb, steps, run, outcome)
-        save_outcome(course_dir, assignment, outcome)
+        digest = submission_hash(course_dir, assignment, student)
+        save_outcome(course_dir, assignment, outcome, digest)
+        fault("outcome-saved")
         return nb, resources
 
 
 def command_for(unsafe):
-    """The sandbox command builder, or the explicitly unsafe one."""
+    """The sandbox command builder, or the explicitly unsafe one; either starts
+    no sandbox once grading is stopping (:class:`~.stop.Interruptible`)."""
     from .sandbox import sandbox
 
     if unsafe:
         from .unsandboxed import UnsandboxedCommand
 
-        return UnsandboxedCommand()
-    return sandbox()
+        return Interruptible(UnsandboxedCommand())
+    return Interruptible(sandbox())
 
 
-def save_outcome(course_dir, assignment, outcome):
-    path = outcome_path(course_dir, assignment, outcome.student)
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as fh:
-        json.dump(outcome.to_dict(), fh, indent=1)
+def save_outcome(course_dir, assignment, outcome, digest=None):
+    """Write the outcome (replaced whole), with ``digest``, the content hash of
+    the submission it judged (:func:`~.state.content_hash`)."""
+    data = outcome.to_dict()
+    data["submission"] = digest
+    write_atomic(
+        outcome_path(course_dir, assignment, outcome.student),
+        json.dumps(data, indent=1),
+        stage="outcome",
+    )
 
 
 class DropDuplicateIds(NbGraderPreprocessor):

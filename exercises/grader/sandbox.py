@@ -21,6 +21,7 @@ uses an unprivileged user namespace and the sandbox runs as ``nobody`` inside
 it (the instructor's own uid outside).
 """
 
+import atexit
 import functools
 import importlib
 import os
@@ -62,6 +63,42 @@ def close_fds(cmd):
             pass
 
 
+#: the temporary folders of the sandbox's passwd and group: PREFIX<pid>-<random>
+ETC_PREFIX = "accelab-etc-"
+
+
+def remove_stale_etc():
+    """Remove the passwd folders that grading processes which no longer run left
+    in the temporary directory (a process killed with SIGKILL runs no exit
+    handler); only this user's, only of processes that are gone."""
+    remove_left_behind(ETC_PREFIX)
+
+
+def remove_left_behind(prefix):
+    """Remove the temporary folders ``PREFIX<pid>-*`` of grading processes that no
+    longer run (a process killed with SIGKILL runs no exit handler); only this
+    user's, only of processes that are gone, never through a link."""
+    root = tempfile.gettempdir()
+    try:
+        names = os.listdir(root)
+    except OSError:
+        return
+    for name in names:
+        if not name.startswith(prefix):
+            continue
+        pid = name[len(prefix) :].split("-")[0]
+        path = os.path.join(root, name)
+        try:
+            info = os.lstat(path)
+        except OSError:
+            continue
+        if info.st_uid != os.geteuid() or not os.path.isdir(path) or os.path.islink(path):
+            continue
+        if pid.isdigit() and os.path.exists(f"/proc/{pid}"):
+            continue  # its process still runs
+        shutil.rmtree(path, ignore_errors=True)
+
+
 class SandboxUnavailable(RuntimeError):
     """No working sandbox on this machine; the message says how to get one."""
 
@@ -87,9 +124,14 @@ class SandboxCommand:
         self._etc = None
 
     def _etc_files(self):
-        """A passwd and group that name the sandbox's user (getpass and friends)."""
+        """A passwd and group that name the sandbox's user (getpass and friends),
+        in a temporary folder removed when this process ends (and, if it was
+        killed, by the next one: :func:`remove_stale_etc`); made again if
+        something removed it from the shared temporary directory."""
         if self._etc is None or not os.path.isfile(os.path.join(self._etc, "group")):
-            folder = tempfile.mkdtemp(prefix="accelab-etc-")
+            remove_stale_etc()
+            folder = tempfile.mkdtemp(prefix=f"{ETC_PREFIX}{os.getpid()}-")
+            atexit.register(shutil.rmtree, folder, True)
             with open(os.path.join(folder, "passwd"), "w") as fh:
                 fh.write(
                     "root:x:0:0::/:/usr/sbin/nologin\n"
