@@ -25,6 +25,7 @@ from nbgrader.preprocessors import NbGraderPreprocessor
 from traitlets import Bool, Float, Integer
 
 from ..notebook import read_spec
+from .construction import records_of
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
@@ -168,7 +169,8 @@ class JudgeSubmission(NbGraderPreprocessor):
             course_dir, assignment, student, info.get("notebook", assignment)
         )
         shown = shown_ids(submitted) if submitted is not None else []
-        outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
+        records = records_of(submitted) if submitted is not None else {}
+        outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown, records)
         write_notebook(nb, steps, run, outcome)
         save_outcome(course_dir, assignment, outcome)
         return nb, resources

@@ -286,10 +286,6 @@ def task_of_case(case):
     )
 
 
-def _cw(omega):
-    return "counter-clockwise" if omega > 0 else "clockwise"
-
-
 def _fourbar(v, pts):
     A, B, O4 = pts["A"], pts["B"], pts["O4"]
     R_BA, R_BO4 = B - A, B - O4
@@ -749,7 +745,7 @@ def _inverted(v, pts, con):
                 True,
                 "the inverted slider-crank needs the Coriolis term A_cor = 2 omega4 V_slip, "
                 "perpendicular to the slide: V_slip turned 90 deg in the sense of omega4 "
-                f"(here {_cw(w4)}, eq. 7.19)",
+                "(eq. 7.19)",
                 "2 omega4 V_slip",
             ),
             Term(
