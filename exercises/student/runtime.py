@@ -124,7 +124,9 @@ def load_variant(spec, student=None):
             )
         statement = grading
     else:
-        from .assignment import statement_of  # not available inside the grading sandbox
+        # the instructor's side draws the variant; it is never reached inside the grading
+        # sandbox (which hands over the statement first), where it is not there at all
+        from ..assignment import statement_of
 
         statement = statement_of(spec, student)
     nv = NotebookVariant(statement)
