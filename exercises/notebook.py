@@ -90,7 +90,7 @@ TEST_TEMPLATE = (
 #: in this cell's output when the notebook is saved) and the visible check of each polygon
 BUILDER_TEMPLATE = (
     "from accelab.exercises.student.polygon import PolygonBuilder\n"
-    "PolygonBuilder.for_assignment(v, {k})\n"
+    "PolygonBuilder.for_assignment(v, {k}).show()\n"
 )
 CONSTRUCTION_TEST = (
     "from accelab.exercises.student.polygon import check_construction\n"

@@ -19,6 +19,7 @@ right. The feedback shows the student's drawing with each wrong step marked
 import base64
 import json
 import re
+import textwrap
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -32,6 +33,8 @@ from .judge import Verdict
 BUILDER_ID = re.compile(r"^polygon(\d{1,3})$")
 #: most outputs of a builder cell the grader looks through
 MAX_OUTPUTS = 50
+#: the feedback's text is wrapped at this width (it reads on a phone)
+WIDTH = 72
 
 
 @dataclass(frozen=True)
@@ -101,6 +104,13 @@ def problem_of(variant, name):
     raise KeyError(name)
 
 
+def _wrapped(mark, text):
+    """A numbered explanation, wrapped for a narrow feedback page."""
+    return textwrap.fill(
+        text, WIDTH, initial_indent=f"  {mark} ", subsequent_indent=" " * (len(mark) + 3)
+    )
+
+
 def judge_construction(name, key, record):
     """``(Verdict, outputs, note)`` of one construction answer: ``record`` is a
     Record, a refusal message, or None (no builder cell); ``outputs`` are the
@@ -129,18 +139,23 @@ def judge_construction(name, key, record):
             continue
         if result.index is not None:
             wrong[result.index] = len(wrong) + 1
-            lines.append(f"  ({wrong[result.index]}) {result.message}")
+            lines.append(_wrapped(f"({wrong[result.index]})", result.message))
         else:
-            lines.append(f"  (-) {result.message}")
-    lines += [f"  (note) {n}" for n in j.notes]
+            lines.append(_wrapped("(-)", result.message))
+    lines += [_wrapped("(note)", n) for n in j.notes]
     total = len(j.results)
     head = f"{name}: {j.right} of {total} steps of the {phase.title.lower()} right"
     if j.right == total:
         message = f"{head}."
     else:
         message = (
-            f"{head} (credit {j.credit:.3g} of 1). Wrong or missing steps, numbered as on "
-            "your drawing:\n" + "\n".join(lines)
+            textwrap.fill(
+                f"{head} (credit {j.credit:.3g} of 1). Wrong or missing steps, numbered as "
+                "on your drawing:",
+                WIDTH,
+            )
+            + "\n"
+            + "\n".join(lines)
         )
     outputs = []
     if steps:

@@ -33,6 +33,10 @@ def mathtext(name):
     return rf"$\mathbf{{{m.group(1)}}}_{{{sub}}}{sup}$"
 
 
+def _dot(u, v):
+    return u.real * v.real + u.imag * v.imag
+
+
 def _kinds(phase):
     return {t.name: t.kind for t in phase.terms + phase.resultants}
 
@@ -103,8 +107,12 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
         va="top",
         fontsize=FONT - 2,
         color="#333333",
+        zorder=9,
+        bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
     )
     badges = []
+    drawn = [z * f for st in steps for z in (st.tail, st.tip, st.at) if z is not None]
+    centre = sum(drawn, 0j) / len(drawn) if drawn else 0j
     for st in steps:
         bad = st.index in wrong
         colour = WRONG if bad else None
@@ -142,7 +150,9 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
                 )
                 mid = (a + b) / 2
                 n = 1j * (b - a) / abs(b - a)
-                lab = mid + n * 0.035 * span
+                if _dot(n, mid - centre) < 0:  # the label outside the polygon
+                    n = -n
+                lab = mid + n * 0.045 * span
                 ax.text(
                     lab.real,
                     lab.imag,
@@ -152,8 +162,9 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
                     ha="center",
                     va="center",
                     zorder=9,
+                    bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
                 )
-                badges.append((st.index, mid - n * 0.035 * span))
+                badges.append((st.index, mid - n * 0.04 * span))
         elif st.op == "point":
             ax.plot(
                 [st.at.real * f],
@@ -182,17 +193,7 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
                 zorder=11,
             )
     unit = phase.unit.replace("^2", "$^2$")
-    ax.set_title(title or phase.title, fontsize=FONT + 1)
-    ax.text(
-        0.01,
-        0.01,
-        f"1 square = {phase.scale:g} {unit}",
-        transform=ax.transAxes,
-        fontsize=FONT - 2,
-        color="#333333",
-        ha="left",
-        va="bottom",
-    )
+    ax.set_title(f"{title or phase.title}\n1 square = {phase.scale:g} {unit}", fontsize=FONT)
 
 
 def construction_png(task, steps=None, phase=None, title=None, wrong=None, dpi=100):

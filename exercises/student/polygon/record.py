@@ -151,7 +151,7 @@ def _text(value, what, limit=MAX_ID):
 def read_step(step, index):
     """One step of a record as a :class:`Drawn`; raises RecordError."""
     where = f"step {index + 1}"
-    if type(step) is not dict:
+    if not isinstance(step, dict):  # a dict, or nbformat's NotebookNode
         raise RecordError(f"{where} is not a step")
     op = step.get("op")
     if type(op) is not str or op not in OPS:
@@ -207,7 +207,7 @@ def read_steps(steps):
 def read_record(data):
     """The :class:`Record` in ``data`` (a record as saved with the notebook);
     raises RecordError with what is wrong."""
-    if type(data) is not dict:
+    if not isinstance(data, dict):
         raise RecordError("it is not a construction record")
     if not set(data) <= TOP or data.get("format") != FORMAT:
         raise RecordError("it is not a construction record of this builder")

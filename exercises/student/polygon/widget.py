@@ -328,7 +328,7 @@ class PolygonBuilder(_Base):
             display(self._record_bundle(), raw=True, display_id=self._display_id)
 
     def _ipython_display_(self):
-        from IPython.display import Image, Markdown, display
+        from IPython.display import Image, display
 
         if live():
             data = self._repr_mimebundle_()
@@ -338,14 +338,19 @@ class PolygonBuilder(_Base):
             self._show_record()
             return
         if self.mode == "assignment":
-            display(
-                Markdown(
-                    f"*{self.problem.get('title', 'Polygon builder')}: the polygon builder "
-                    "draws in a live notebook (JupyterLab or Jupyter Notebook).*"
-                )
+            text = (
+                f"{self.problem.get('title', 'Polygon builder')}: the polygon builder draws in "
+                "a live notebook (JupyterLab or Jupyter Notebook)."
             )
+            display({"text/plain": text, "text/markdown": f"*{text}*"}, raw=True)
             return
         display(Image(self.figure(finished=not self._drawn)))
+
+    def show(self):
+        """Display the builder (a notebook cell can end with ``builder.show()``)."""
+        from IPython.display import display
+
+        display(self)
 
     def __repr__(self):
         n = len(self._drawn)
