@@ -71,6 +71,11 @@ function unitText(u) {
   return esc(u).replace(/\^2/g, "<sup>2</sup>");
 }
 
+// a unit as plain text (an <option> holds no markup)
+function unitPlain(u) {
+  return String(u).replace(/\^2/g, "\u00b2");
+}
+
 function angleOf(x, y) {
   let a = (Math.atan2(y, x) * 180) / Math.PI;
   return a < 0 ? a + 360 : a;
@@ -151,8 +156,8 @@ function render({ model, el }) {
   const message = h("div", { class: "apb-message", "data-testid": "message", "aria-live": "polite" });
   const summary = h("div", { class: "apb-summary", "data-testid": "summary" });
   const list = h("ol", { class: "apb-steps", "data-testid": "steps" });
-  feedback.append(message, summary, list);
-  root.append(header, tabs, main, tools, panel, feedback);
+  feedback.append(summary, list);
+  root.append(header, tabs, main, message, tools, panel, feedback);
 
   // ---------------------------------------------------------------- data helpers
   const steps = () => model.get("steps") || [];
@@ -433,6 +438,20 @@ function render({ model, el }) {
       const [bx, by] = toScreen(...disp(st.through));
       if (bad) badge(marks, bx + 12, by - 12, numbers[i]);
     }
+    // labels go on the side of each vector away from the drawing's middle
+    let mx = 0;
+    let my = 0;
+    let count = 0;
+    for (const [st] of phaseSteps()) {
+      for (const k of ["tail", "tip", "at"]) {
+        if (!st[k]) continue;
+        const [qx, qy] = toScreen(...disp(st[k]));
+        mx += qx;
+        my += qy;
+        count += 1;
+      }
+    }
+    if (count) { mx /= count; my /= count; }
     for (const [st, i] of phaseSteps()) {
       if (st.op !== "vector") continue;
       const kind = (ph.vectors.find((x) => x.name === st.name) || {}).kind || "known";
@@ -444,10 +463,12 @@ function render({ model, el }) {
       const [ax, ay] = toScreen(...disp(st.tail));
       const [bx, by] = toScreen(...disp(st.tip));
       const len = Math.hypot(bx - ax, by - ay) || 1;
-      const nx = -(by - ay) / len;
-      const ny = (bx - ax) / len;
-      label(layer, st.name, (ax + bx) / 2 + nx * 14 - 8, (ay + by) / 2 + ny * 14 + 4,
+      let nx = -(by - ay) / len;
+      let ny = (bx - ax) / len;
+      if (nx * ((ax + bx) / 2 - mx) + ny * ((ay + by) / 2 - my) < 0) { nx = -nx; ny = -ny; }
+      const lt = label(layer, st.name, (ax + bx) / 2 + nx * 16, (ay + by) / 2 + ny * 16 + 5,
         bad ? WRONG : null);
+      lt.setAttribute("text-anchor", "middle");
       if (bad) badge(marks, (ax + bx) / 2 - nx * 14, (ay + by) / 2 - ny * 14, numbers[i]);
     }
     for (const [st, i] of phaseSteps()) {
@@ -857,7 +878,7 @@ function render({ model, el }) {
       const len = h("input", { type: "number", step: "any", min: "0", "data-testid": "length",
         "aria-label": "Length", class: "apb-num" });
       const lenUnit = h("select", { "data-testid": "length-unit", "aria-label": "Length unit" }, [
-        h("option", { value: "unit", html: unitText(ph.unit) }),
+        h("option", { value: "unit", text: unitPlain(ph.unit) }),
         h("option", { value: "squares", text: "squares" }),
       ]);
       const dir = directionInputs(true);
@@ -980,6 +1001,7 @@ function render({ model, el }) {
   // ---------------------------------------------------------------- model events
   let lastCount = steps().length;
   const onSteps = () => {
+    readout.textContent = "";
     buildPanel();
     buildList();
     drawCanvas();
