@@ -130,7 +130,7 @@ def browser(width=1366, height=1000):
         options=options, service=Service(shutil.which("chromedriver") or CHROMEDRIVER)
     )
     driver.set_page_load_timeout(90)
-    driver.set_script_timeout(90)
+    driver.set_script_timeout(180)
     if width < 500:
         driver.execute_cdp_cmd(
             "Emulation.setDeviceMetricsOverride",
@@ -144,7 +144,7 @@ def browser(width=1366, height=1000):
         shutil.rmtree(profile, ignore_errors=True)
 
 
-def wait(driver, script, timeout=90, poll=0.25, what="the page"):
+def wait(driver, script, timeout=180, poll=0.25, what="the page"):
     """Run ``script`` (returns a value) until it is truthy; returns it."""
     deadline = time.monotonic() + timeout
     last = None
@@ -159,29 +159,31 @@ def wait(driver, script, timeout=90, poll=0.25, what="the page"):
     raise TimeoutError(f"waited {timeout} s for {what}; last: {last!r}")
 
 
-#: the open notebook panel (JupyterLab 4), as a page script expression
-PANEL = (
-    "(window.jupyterapp && Array.from(window.jupyterapp.shell.widgets('main'))"
-    ".find((w) => w.sessionContext && w.content && w.content.widgets))"
-)
-
-
 def open_notebook(driver, base, token, path):
-    """Open ``path`` (relative to the server's folder) in JupyterLab and wait
-    until its kernel is idle."""
-    driver.get(f"{base}/lab/tree/{path}?token={token}")
+    """Open ``path`` (relative to the server's folder) in JupyterLab, in a fresh
+    workspace (nothing of an earlier session restored), and wait until its
+    kernel is idle."""
+    import uuid
+
+    space = f"t{uuid.uuid4().hex[:10]}"
+    driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
+    panel = (
+        "(window.jupyterapp && Array.from(window.jupyterapp.shell.widgets('main'))"
+        f".find((w) => w.sessionContext && w.context && w.context.path === {path!r}))"
+    )
     wait(
         driver,
-        f"const p = {PANEL}; return !!(p && p.sessionContext.session "
+        f"const p = {panel}; return !!(p && p.sessionContext.session "
         "&& p.sessionContext.session.kernel);",
         what="the notebook and its kernel",
     )
     wait(
         driver,
-        f"const k = {PANEL}.sessionContext.session.kernel;"
+        f"const k = {panel}.sessionContext.session.kernel;"
         "return k.status === 'idle' && k.connectionStatus === 'connected';",
         what="an idle kernel",
     )
+    driver.execute_script(f"window.jupyterapp.shell.activateById({panel}.id);")
     if driver.execute_script("return window.innerWidth") < 700:
         # a phone: the notebook alone, as a student on one would set it (the side panels
         # closed, one document at a time)
@@ -192,8 +194,12 @@ def open_notebook(driver, base, token, path):
         time.sleep(0.5)
 
 
-def command(driver, name):
-    """Run a JupyterLab command (e.g. ``notebook:run-all-cells``)."""
+def command(driver, name, wait_for_it=True):
+    """Run a JupyterLab command (e.g. ``docmanager:save``); ``wait_for_it=False``
+    starts it and returns (``notebook:run-all-cells`` resolves only when every cell ran)."""
+    if not wait_for_it:
+        driver.execute_script("window.jupyterapp.commands.execute(arguments[0]);", name)
+        return
     driver.execute_async_script(
         "const done = arguments[arguments.length - 1];"
         "window.jupyterapp.commands.execute(arguments[0]).then(() => done(true),"

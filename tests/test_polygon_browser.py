@@ -97,17 +97,18 @@ def shot(driver, name):
 
 def start(driver, base, token, path):
     open_notebook(driver, base, token, path)
-    command(driver, "notebook:run-all-cells")
+    command(driver, "notebook:run-all-cells", wait_for_it=False)
     wait(
         driver,
         "return document.querySelector("
         "'[data-testid=polygon-builder] .apb-canvas [data-testid=pole]')",
+        timeout=180,
         what="the builder",
     )
     time.sleep(0.5)
 
 
-def judged(driver, n, timeout=30):
+def judged(driver, n, timeout=60):
     """Wait for the n-th step of the polygon's list to be judged; its mark and message."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
@@ -182,10 +183,11 @@ def marks(driver):
     )
 
 
-def test_practice_right_then_each_classic_mistake_with_a_mouse(folder):
+def test_practice_right_then_each_classic_mistake_with_a_mouse(server):
+    base, token = server
     task = task_of_case(EXAMPLE_7_1)
     vel, acc = task.phase("velocity"), task.phase("acceleration")
-    with lab(folder) as (base, token), browser(1366) as d:
+    with browser(1366) as d:
         start(d, base, token, "practice.ipynb")
         assert "Directions are right within 1" in find(d, "polygon-builder").text
         assert "1 square = 5 in/s" in find(d, "scale").text
@@ -208,6 +210,7 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(folder):
         An = acc.term("A_A^n").vector
         choose(d, "vector-name", "A_A^n")
         drag(d, tip, tip - An)  # pointing away from O2: the wrong sense
+        assert judged(d, 2)[0] == "bad"
         cls, text = message(d)
         assert "bad" in cls and "has the wrong sense" in text and "toward O2" in text, text
         assert d.find_elements("css selector", "[data-testid=canvas] .apb-badge")
@@ -225,6 +228,7 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(folder):
         choose(d, "line-name", "A_BA^t")
         end = tip + An + A_BA_n
         drag(d, end, end - 0.4 * A_BA_n)
+        assert judged(d, 4)[0] == "bad"
         cls, text = message(d)
         assert "bad" in cls and "perpendicular to AB, not along it" in text, text
         shot(d, "practice-tangential-along-the-link-1366")
@@ -239,9 +243,10 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(folder):
         assert not [e for e in console_errors(d) if "polygon" in e.lower()]
 
 
-def test_practice_on_a_phone_with_a_finger(folder):
+def test_practice_on_a_phone_with_a_finger(server):
+    base, token = server
     task = task_of_case(EXAMPLE_7_1)
-    with lab(folder) as (base, token), browser(390) as d:
+    with browser(390) as d:
         start(d, base, token, "practice.ipynb")
         root = find(d, "polygon-builder")
         assert "narrow" in root.get_attribute("class")
@@ -264,6 +269,14 @@ def test_practice_on_a_phone_with_a_finger(folder):
 
 
 @pytest.fixture(scope="module")
+def server(folder, course):
+    """One JupyterLab for the module; its kernels know the student as ann (as
+    JupyterHub would tell them)."""
+    with lab(folder, env={"ACCELAB_STUDENT_ID": "ann"}) as (base, token):
+        yield base, token
+
+
+@pytest.fixture(scope="module")
 def course(tmp_path_factory, folder):
     reason = check_sandbox()
     assert reason is None, f"the sandbox must work in CI: {reason}"
@@ -282,11 +295,12 @@ def course(tmp_path_factory, folder):
     return course
 
 
-def test_an_assignment_drawn_saved_and_graded(folder, course):
+def test_an_assignment_drawn_saved_and_graded(folder, course, server):
+    base, token = server
     key = key_for(read_spec(course, "A"), "ann")
     task = key.values["velocity_polygon"].task
     vel, acc = task.phase("velocity"), task.phase("acceleration")
-    with lab(folder, env={"ACCELAB_STUDENT_ID": "ann"}) as (base, token), browser(1366) as d:
+    with browser(1366) as d:
         start(d, base, token, "ann/A/A.ipynb")
         assert "judged when the assignment is graded" in find(d, "polygon-builder").text
         last = velocity_by_pointer(d, vel, touch=False, check=False)

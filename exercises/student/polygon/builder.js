@@ -164,9 +164,13 @@ function render({ model, el }) {
   const phaseSteps = () => steps().map((st, i) => [st, i]).filter(([st]) => st.phase === state.phase);
   const keyOf = (st) => (st.op === "point" ? "point:X" : `${st.op}:${st.name}`);
 
+  // the verdicts on screen are those of the steps on screen: none while Python judges a change
+  const verdictsNow = () => (state.pending ? [] : model.get("verdicts") || []);
+
   function commit(next) {
     state.history.push(steps());
     if (state.history.length > 200) state.history.shift();
+    state.pending = true;
     model.set("steps", next);
     model.save_changes();
   }
@@ -187,8 +191,10 @@ function render({ model, el }) {
 
   function undo() {
     if (!state.history.length) return;
+    state.pending = true;
     model.set("steps", state.history.pop());
     model.save_changes();
+    say("The last step is undone.", null);
   }
 
   function clearPhase() {
@@ -423,7 +429,7 @@ function render({ model, el }) {
     }
     scaleNote.innerHTML = `1 square = ${fmt(step)} ${unitText(ph.unit)}` +
       (step !== ph.scale ? " (zoomed out)" : "");
-    const verdicts = model.get("verdicts") || [];
+    const verdicts = verdictsNow();
     const layer = s("g", {}, canvas);
     const marks = s("g", {}, canvas);
     let n = 0;
@@ -964,7 +970,7 @@ function render({ model, el }) {
   }
 
   function buildList() {
-    const verdicts = model.get("verdicts") || [];
+    const verdicts = verdictsNow();
     list.replaceChildren();
     let n = 0;
     for (const [st, i] of phaseSteps()) {
@@ -1006,7 +1012,9 @@ function render({ model, el }) {
     buildList();
     drawCanvas();
   };
-  const onVerdicts = () => {
+  // `judged` counts Python's judgements: each one ends the wait for the steps on screen
+  const onJudged = () => {
+    state.pending = false;
     const verdicts = model.get("verdicts") || [];
     const all = steps();
     if (all.length && all.length >= lastCount && verdicts.length === all.length) {
@@ -1028,7 +1036,7 @@ function render({ model, el }) {
   };
   const onStatus = () => { const t = model.get("status"); if (t) say(t, false); };
   model.on("change:steps", onSteps);
-  model.on("change:verdicts", onVerdicts);
+  model.on("change:judged", onJudged);
   model.on("change:summary", buildTabs);
   model.on("change:hint", onHint);
   model.on("change:status", onStatus);
@@ -1045,7 +1053,7 @@ function render({ model, el }) {
   return () => {
     resize.disconnect();
     model.off("change:steps", onSteps);
-    model.off("change:verdicts", onVerdicts);
+    model.off("change:judged", onJudged);
     model.off("change:summary", buildTabs);
     model.off("change:hint", onHint);
     model.off("change:status", onStatus);

@@ -92,6 +92,8 @@ class PolygonBuilder(_Base):
     summary = traitlets.Dict().tag(sync=True)
     hint = traitlets.Dict().tag(sync=True)
     status = traitlets.Unicode("").tag(sync=True)
+    #: how many times the steps were judged (the browser waits for the next one)
+    judged = traitlets.Int(0).tag(sync=True)
 
     def __init__(
         self,
@@ -240,6 +242,15 @@ class PolygonBuilder(_Base):
         self._save()
 
     def _update(self):
+        if hasattr(self, "hold_sync"):
+            with self.hold_sync():
+                self._judge_all()
+        else:
+            self._judge_all()
+        if self._shown:
+            self._show_record(update=True)
+
+    def _judge_all(self):
         self._drawn = read_steps(self.steps)
         if self.mode == "practice":
             self.verdicts = step_feedback(self.task, self._drawn) if self._drawn else []
@@ -254,8 +265,7 @@ class PolygonBuilder(_Base):
                 ph: {"drawn": len({s.key for s in self._drawn if s.phase == ph})}
                 for ph in self.task.phases
             }
-        if self._shown:
-            self._show_record(update=True)
+        self.judged += 1
 
     def _on_msg(self, widget, content, buffers):
         if not isinstance(content, dict):
