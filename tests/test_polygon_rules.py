@@ -441,3 +441,15 @@ def test_headless_a_practice_builder_shows_the_finished_construction(monkeypatch
     b._ipython_display_()
     assert shown and shown[0].data[:4] == b"\x89PNG"
     assert shell is not None
+
+
+def test_the_course_table_of_classic_mistakes_says_each_rule():
+    from accelab.course.polygons import classic_mistakes
+
+    fourbar = str(classic_mistakes(EXAMPLE_7_1))
+    assert "has the wrong sense" in fourbar and "not along it" in fourbar
+    assert "check the polygon's scale" in fourbar and "start it at the pole" in fourbar
+    coriolis = str(classic_mistakes(INVERTED_SLIDER_CRANK))
+    assert "needs the Coriolis term" in coriolis and "perpendicular to the slide" in coriolis
+    assert "doubled or a halved" in coriolis
+    assert fourbar.count("\n|") >= 5 and "$\\mathbf{A}^{n}_{A}$" in fourbar

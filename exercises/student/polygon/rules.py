@@ -227,21 +227,25 @@ def _factor_hint(ratio, phase, others=()):
     for factor, text in FACTORS:
         for r in (factor, 1.0 / factor):
             if abs(ratio - r) <= 0.03 * r:
-                return f" (it is off by a factor of about {factor:g}: {text})"
+                return f"; it is off by a factor of about {factor:g}: {text}"
     scales = [phase.scale] + [p.scale for p in others if p is not phase]
     for s in scales:
         for r in (s, 1.0 / s):
             if r != 1.0 and abs(ratio - r) <= 0.03 * r:
                 return (
-                    f" (check the polygon's scale: 1 square = {phase.scale:g} {phase.unit}, "
-                    "and lengths typed in squares or in units)"
+                    f"; check the polygon's scale (1 square = {phase.scale:g} {phase.unit}) "
+                    "and whether the length was typed in squares or in units"
                 )
     for a in others:
         if a is not phase:
             r = phase.scale / a.scale
             if abs(ratio - r) <= 0.03 * r or abs(ratio - 1 / r) <= 0.03 / r:
-                return " (check the scale: each polygon has its own)"
+                return "; check the scale: each polygon has its own"
     return ""
+
+
+#: where the chapter gives the size of a known term
+SIZE_EQUATION = {"normal": "eq. 7.6", "tangential": "eq. 7.6", "coriolis": "eq. 7.19"}
 
 
 def length_problem(term, drawn, phase, others=()):
@@ -252,7 +256,9 @@ def length_problem(term, drawn, phase, others=()):
     how = "too long" if got > want else "too short"
     hint = _factor_hint(got / want if want else 0.0, phase, others)
     if term.known and term.size:
-        return f"{term.name} is {how}: its length is {term.size} (eq. 7.6){hint}"
+        cite = SIZE_EQUATION.get(term.kind)
+        size = f"{term.size} ({cite})" if cite else term.size
+        return f"{term.name} is {how}: its length is {size}{hint}"
     return f"{term.name} is {how}{hint}"
 
 

@@ -80,7 +80,7 @@ class Term:
 class Read:
     """An unknown read off a finished polygon: ``value`` [SI] comes from the
     term ``source``: an angular rate (``about`` the link vector R: value =
-    (R x V) / |R|^2, counter-clockwise positive) or a slip or slider rate
+    ``(R x V) / |R|^2``, counter-clockwise positive) or a slip or slider rate
     (``along`` a unit vector: value = V . e)."""
 
     name: str
