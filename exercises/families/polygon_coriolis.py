@@ -1,7 +1,7 @@
 """The inverted slider-crank's polygons by construction, with the Coriolis
 component (section 7.3, eqs. 7.19 and 7.21, Figure 7-8): the block slides on the
 turning link 4, so its polygon needs 2 omega4 V_slip perpendicular to the slide
-(see :mod:`.polygon`)."""
+(see :mod:`accelab.exercises.families.polygon`)."""
 
 from . import coriolis
 from .common import UNITS, draw_value, fmt, ranges_for

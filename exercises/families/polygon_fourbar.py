@@ -1,6 +1,6 @@
 """The fourbar's polygons by construction (section 7.2, Example 7-1, Figure 7-4):
 the student builds the velocity and acceleration polygons in the polygon builder;
-the construction is the answer (see :mod:`.polygon`)."""
+the construction is the answer (see :mod:`accelab.exercises.families.polygon`)."""
 
 from .common import FOURBAR_DEFAULTS, UNITS, fourbar_case, ranges_for
 from .polygon import generate

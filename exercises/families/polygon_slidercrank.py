@@ -1,6 +1,6 @@
 """The slider-crank's polygons by construction (section 7.2 applied to the
 slider-crank of section 7.3): the slider's acceleration lies along the slide, the
-rod's tangential component across the rod (see :mod:`.polygon`)."""
+rod's tangential component across the rod (see :mod:`accelab.exercises.families.polygon`)."""
 
 from . import slidercrank
 from .common import UNITS, draw_value, fmt, ranges_for

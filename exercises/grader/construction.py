@@ -175,7 +175,8 @@ def judge_construction(name, key, record):
 
 def judge_constructions(key, records):
     """``(verdicts, outputs, notes)`` of every construction answer of the
-    submitter's ``key`` (:class:`~.key.Key`), from ``records`` (:func:`records_of`)."""
+    submitter's ``key`` (:class:`~accelab.exercises.grader.key.Key`), from
+    ``records`` (:func:`records_of`)."""
     verdicts, outputs, notes = {}, {}, []
     seen = set()
     for name, answer in key.variant.answers.items():

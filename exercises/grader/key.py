@@ -19,7 +19,7 @@ from ..silence import silenced
 class Key:
     """The expected value of every answer of one student's variant: an SI float
     (numbers, angles in rad), the right word (choices), or the construction to
-    judge a drawing against (:class:`~.construction.ConstructionKey`)."""
+    judge a drawing against (:class:`~accelab.exercises.grader.construction.ConstructionKey`)."""
 
     student: str
     variant: Variant

@@ -59,7 +59,8 @@ def judge_run(key, steps, run, others=None, shown=(), constructions=None):
     ``others`` maps another student id -> that student's Key (to tell whose values
     a wrong answer holds); ``shown`` are the ids the submitted notebook's stored
     outputs say it showed; ``constructions`` are the polygon builders' records of
-    the submitted notebook (:func:`.construction.records_of`), which construction
+    the submitted notebook
+    (:func:`accelab.exercises.grader.construction.records_of`), which construction
     answers are judged from (they are not in the kernel).
     """
     variant = key.variant

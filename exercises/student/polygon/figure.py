@@ -98,21 +98,22 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
     for side in ax.spines.values():
         side.set_color("#bbbbbb")
     ax.plot([0], [0], "o", ms=7, mfc="white", mec="black", zorder=8)
+    badges = []
+    drawn = [z * f for st in steps for z in (st.tail, st.tip, st.at) if z is not None]
+    centre = sum(drawn, 0j) / len(drawn) if drawn else 0j
+    away = -centre / abs(centre) if abs(centre) else -1 - 1j  # the pole's label: off the drawing
     ax.annotate(
         "pole",
         (0, 0),
-        xytext=(-6, -6),
+        xytext=(12 * away.real, 12 * away.imag),
         textcoords="offset points",
-        ha="right",
-        va="top",
+        ha="right" if away.real < 0 else "left",
+        va="top" if away.imag < 0 else "bottom",
         fontsize=FONT - 2,
         color="#333333",
         zorder=9,
         bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
     )
-    badges = []
-    drawn = [z * f for st in steps for z in (st.tail, st.tip, st.at) if z is not None]
-    centre = sum(drawn, 0j) / len(drawn) if drawn else 0j
     for st in steps:
         bad = st.index in wrong
         colour = WRONG if bad else None

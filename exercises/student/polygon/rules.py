@@ -1,9 +1,10 @@
 """The rules a polygon is checked by: the one place they are written.
 
 The builder's instant feedback (practice) and the grader (an assignment) both
-call :func:`judge_phase` on a student's steps and a :class:`~.task.Phase`
-(the exact construction, from :mod:`accelab.solver.graphical`), so a step is
-judged the same way wherever it is judged. The browser draws; it judges nothing.
+call :func:`judge_phase` on a student's steps and a
+:class:`~accelab.exercises.student.polygon.task.Phase` (the exact construction,
+from :mod:`accelab.solver.graphical`), so a step is judged the same way
+wherever it is judged. The browser draws; it judges nothing.
 
 A step is right when, within the phase's tolerances (directions within
 ``band`` degrees, by default 1 deg; lengths and points within ``tol``, 2% of the

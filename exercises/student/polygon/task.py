@@ -16,9 +16,10 @@ sides laid tip to tail from the pole:
   to it and from it, and the unknowns (omega, alpha, slip) are read off.
 
 The phase lists these as :attr:`Phase.steps`, in the order the chapter takes
-them; the checking rules (:mod:`.rules`) judge a student's drawing step by step
-against them. Everything is in SI (m/s, m/s^2, rad/s, rad/s^2); the drawing
-shows the case's own units (in/s and in/s^2, or m/s and m/s^2).
+them; the checking rules (:mod:`accelab.exercises.student.polygon.rules`) judge a
+student's drawing step by step against them. Everything is in SI (m/s, m/s^2,
+rad/s, rad/s^2); the drawing shows the case's own units (in/s and in/s^2, or
+m/s and m/s^2).
 """
 
 import cmath

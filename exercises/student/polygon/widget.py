@@ -5,13 +5,13 @@ velocity and acceleration polygons of one position.
 The browser side (``builder.js``) draws the linkage to scale and a polygon
 canvas with its scale, and turns pointer input (mouse, touchpad, touch) or
 typed input into steps; it judges nothing. This side reads every step with the
-one reader (:mod:`.record`), checks it with the one set of rules
-(:mod:`.rules`) when the builder is for practice, and keeps the construction
-with the notebook: an output of the builder's own cell (mimetype
-:data:`~.record.MIMETYPE`) that is updated at each step, so that saving the
-notebook saves it, and nbgrader's submit and collect carry it. A copy in
-``.accelab-polygons.json`` beside the notebook brings it back when the cell is
-run again in a new session.
+one reader (:mod:`accelab.exercises.student.polygon.record`), checks it with the one
+set of rules (:mod:`accelab.exercises.student.polygon.rules`) when the builder is for
+practice, and keeps the construction with the notebook: an output of the
+builder's own cell (mimetype :data:`~accelab.exercises.student.polygon.record.MIMETYPE`)
+that is updated at each step, so that saving the notebook saves it, and
+nbgrader's submit and collect carry it. A copy in ``.accelab-polygons.json``
+beside the notebook brings it back when the cell is run again in a new session.
 
 Two modes:
 
@@ -283,8 +283,9 @@ class PolygonBuilder(_Base):
 
     # ------------------------------------------------------------ Python API
     def judge(self, phase):
-        """The :class:`~.rules.Judgement` of the drawing's ``phase`` (practice only:
-        an assignment's construction is judged when it is graded)."""
+        """The :class:`~accelab.exercises.student.polygon.rules.Judgement` of the drawing's
+        ``phase`` (practice only: an assignment's construction is judged when it is
+        graded)."""
         if self.mode != "practice":
             raise RuntimeError("an assignment's construction is judged when it is graded")
         others = list(self.task.phases.values())
