@@ -453,3 +453,75 @@ def test_the_course_table_of_classic_mistakes_says_each_rule():
     assert "needs the Coriolis term" in coriolis and "perpendicular to the slide" in coriolis
     assert "doubled or a halved" in coriolis
     assert fourbar.count("\n|") >= 5 and "$\\mathbf{A}^{n}_{A}$" in fourbar
+
+
+# ---- every family's variants, drawn exactly and drawn by a careful hand --------------------
+
+
+def careful(phase, rng, error):
+    """A student's drawing with every known vector off by up to ``error`` (a
+    fraction of its length) and every direction by up to 0.4 deg, each laid from
+    the tip of the last; the lines through the student's own chain ends; the
+    crossing where those lines cross; the unknowns drawn to it; the values read
+    off the student's own vectors (as the builder's snapping and Measure do)."""
+    steps, ends, lines, drawn = [], {"L": 0j, "R": 0j}, {}, {}
+
+    def xy(z):
+        return [z.real, z.imag]
+
+    for t in phase.terms:
+        if t.known:
+            turn = cmath.exp(1j * math.radians(rng.uniform(-0.4, 0.4)))
+            v = t.vector * (1 + rng.uniform(-error, error)) * turn
+            tail = ends[t.side]
+            ends[t.side] = tail + v
+            steps.append({"op": "vector", "phase": phase.name, "name": t.name,
+                          "tail": xy(tail), "tip": xy(tail + v)})  # fmt: skip
+    for t in phase.unknowns:
+        first = t is [x for x in phase.side(t.side) if not x.known][0]
+        through = ends[t.side] if first else ends["L" if t.side == "R" else "R"]
+        angle = math.degrees(cmath.phase(t.vector)) + rng.uniform(-0.4, 0.4)
+        lines[t.name] = (through, cmath.exp(1j * math.radians(angle)))
+        steps.append({"op": "line", "phase": phase.name, "name": t.name,
+                      "through": xy(through), "angle": angle})  # fmt: skip
+    (p1, u1), (p2, u2) = (lines[t.name] for t in phase.unknowns)
+    w = p2 - p1
+    X = p1 + (w.real * u2.imag - w.imag * u2.real) / (u1.conjugate() * u2).imag * u1
+    steps.append({"op": "point", "phase": phase.name,
+                  "lines": [t.name for t in phase.unknowns], "at": xy(X)})  # fmt: skip
+    for t in phase.unknowns:
+        first = t is [x for x in phase.side(t.side) if not x.known][0]
+        tail, tip = (ends[t.side], X) if first else (X, ends["L" if t.side == "R" else "R"])
+        drawn[t.name] = tip - tail
+        steps.append({"op": "vector", "phase": phase.name, "name": t.name,
+                      "tail": xy(tail), "tip": xy(tip)})  # fmt: skip
+    for t in phase.resultants:
+        drawn[t.name] = X
+        steps.append({"op": "vector", "phase": phase.name, "name": t.name,
+                      "tail": [0, 0], "tip": xy(X)})  # fmt: skip
+    for r in phase.reads:
+        steps.append({"op": "read", "phase": phase.name, "name": r.name,
+                      "value": r.of(drawn[r.source])})  # fmt: skip
+    return steps
+
+
+def test_every_familys_constructions_are_judged_right_exact_and_by_a_careful_hand():
+    import random
+
+    from accelab.exercises.families import generate
+    from accelab.exercises.grader.key import key_value
+
+    rng = random.Random(7)
+    sloppy_wrong = 0
+    for family in ("polygon_fourbar", "polygon_slidercrank", "polygon_coriolis"):
+        for units in ("US", "SI"):
+            for seed in range(12):
+                key = key_value(generate(family, seed, units=units).answers[0])
+                for phase in key.task.phases.values():
+                    exact = judge_phase(phase, read_steps(ideal_steps(phase)))
+                    assert exact.credit == 1.0, (family, seed, phase.name)
+                    hand = judge_phase(phase, read_steps(careful(phase, rng, 0.004)))
+                    assert hand.credit == 1.0, [r.message for r in hand.results if not r.ok]
+                    sloppy = judge_phase(phase, read_steps(careful(phase, rng, 0.15)))
+                    sloppy_wrong += sloppy.credit < 1.0
+    assert sloppy_wrong >= 60  # 15% off is caught nearly everywhere (of 72 polygons)

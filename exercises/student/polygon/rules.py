@@ -342,21 +342,32 @@ def judge_point(phase, drawing, step, line_results):
 
 
 def judge_unknown(phase, drawing, term, step, x_student, point_ok):
+    """An unknown term (or a resultant) drawn to close the polygon: right when it
+    runs between the student's own right points (follow-through: its direction
+    and length are then as right as the drawing), or between the exact points
+    with its exact direction and length."""
+    if abs(step.vector) == 0.0:
+        return [f"{term.name} has no length"]
+    mine = {
+        end: _student_anchor(phase, drawing, term, end, x_student if point_ok else None)
+        for end in ("tail", "tip")
+    }
+    if point_ok and all(
+        _near(z, mine[e], phase.tol) for e, z in (("tail", step.tail), ("tip", step.tip))
+    ):
+        return []
+    ends = {
+        e: _near(z, phase.anchor(term, e), phase.tol) or _near(z, mine[e], phase.tol)
+        for e, z in (("tail", step.tail), ("tip", step.tip))
+    }
     problems = []
-    ends = {}
-    for end, z in (("tail", step.tail), ("tip", step.tip)):
-        true = phase.anchor(term, end)
-        mine = _student_anchor(phase, drawing, term, end, x_student if point_ok else None)
-        ends[end] = _near(z, true, phase.tol) or _near(z, mine, phase.tol)
     if not (ends["tail"] and ends["tip"]):
         problems.append(
             f"{term.name} runs from {_describe_anchor(phase, term, 'tail')} to "
             f"{_describe_anchor(phase, term, 'tip')}"
         )
-    d = _wrap(_deg(step.vector) - _deg(term.vector)) if abs(step.vector) else 180.0
-    if abs(step.vector) == 0.0:
-        problems.append(f"{term.name} has no length")
-    elif abs(180.0 - abs(d)) <= phase.band and ends["tail"] is False:
+    d = _wrap(_deg(step.vector) - _deg(term.vector))
+    if abs(180.0 - abs(d)) <= phase.band and not ends["tail"]:
         pass  # drawn backwards: the message above says where it runs
     elif abs(d) > phase.band:
         p = direction_problem(term, step.vector, phase.band)
@@ -367,7 +378,7 @@ def judge_unknown(phase, drawing, term, step, x_student, point_ok):
                 f"{_describe_anchor(phase, term, 'tip')}"
             )
         problems.append(p)
-    if not problems and not (ends["tail"] and ends["tip"] and point_ok):
+    if not problems:
         p = length_problem(term, step.vector, phase)
         if p:
             problems.append(p)
