@@ -413,8 +413,8 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 #   vectors to it, and measure them with **Measure**.
 # - **Read off**: type $\omega_3$, $\omega_4$ (then $\alpha_3$, $\alpha_4$), counter-clockwise
 #   positive.
-# - **Undo**, **Clear**, and zoom: +, −, fit, the mouse wheel or a touchpad, a pinch on a
-#   touch screen.
+# - **Undo**, **Clear**, and zoom: +, −, fit, Ctrl and the mouse wheel, or a pinch on a
+#   touchpad or a touch screen.
 #
 # Each step is checked as you make it: a direction is right within 1°, a length within 2% of
 # the polygon's largest vector. A wrong step turns red with a number, and the builder says

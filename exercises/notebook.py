@@ -88,15 +88,15 @@ TEST_TEMPLATE = (
 )
 #: problem k of a polygon family: the builder (its construction is the answer, kept
 #: in this cell's output when the notebook is saved) and the visible check of each polygon
-BUILDER_TEMPLATE = (
+_BUILDER_CELL = (
     "from accelab.exercises.student.polygon import PolygonBuilder\n"
     "PolygonBuilder.for_assignment(v, {k}).show()\n"
 )
-CONSTRUCTION_TEST = (
+_CONSTRUCTION_CHECK = (
     "from accelab.exercises.student.polygon import check_construction\n"
     "check_construction({name!r})\n"
 )
-CONSTRUCTION_RULE = """- a construction (a polygon drawn in the polygon builder) earns the
+_CONSTRUCTION_RULE = """- a construction (a polygon drawn in the polygon builder) earns the
   fraction of its steps that are right: a direction within {angle_tol} deg, a length or a
   point within 2% of the polygon's largest vector, a value read off within what the drawing
   allows. It is read from the notebook as you saved it: **save the notebook before you
@@ -117,7 +117,7 @@ def build_notebook(spec, title=None):
         angle_tol=angle_tol,
     )
     if any(a.kind == "construction" for p in preview.problems for a in p.answers):
-        instructions += CONSTRUCTION_RULE.format(angle_tol=f"{DEFAULT_ANGLE_TOLERANCE:g}")
+        instructions += _CONSTRUCTION_RULE.format(angle_tol=f"{DEFAULT_ANGLE_TOLERANCE:g}")
     cells = [_md(instructions, "instructions")]
     cells.append(
         _code(
@@ -148,12 +148,12 @@ def build_notebook(spec, title=None):
         cells.append(_md(text, f"problem{k}", attachments={f"figure{k}.png": {"image/png": png}}))
         cells.append(_code(f"v.show({k})", f"given{k}", locked=True))
         if any(a.kind == "construction" for a in problem.answers):
-            cells.append(_code(BUILDER_TEMPLATE.format(k=k), f"polygon{k}", locked=True))
+            cells.append(_code(_BUILDER_CELL.format(k=k), f"polygon{k}", locked=True))
         for a in problem.answers:
             if a.kind == "construction":
                 cells.append(
                     _code(
-                        CONSTRUCTION_TEST.format(name=a.name),
+                        _CONSTRUCTION_CHECK.format(name=a.name),
                         f"test_{a.name}",
                         grade=True,
                         locked=True,

@@ -138,7 +138,7 @@ function render({ model, el }) {
   const given = h("div", { class: "apb-given" });
   const canvas = s("svg", { class: "apb-canvas", "data-testid": "canvas" });
   const zoomBar = h("div", { class: "apb-zoom" }, [
-    h("button", { type: "button", "aria-label": "Zoom in", "data-testid": "zoom-in",
+    h("button", { type: "button", "aria-label": "Zoom in", title: "Zoom in (or Ctrl + wheel, or a pinch)", "data-testid": "zoom-in",
       text: "+", onclick: () => zoomBy(1.25) }),
     h("button", { type: "button", "aria-label": "Zoom out", "data-testid": "zoom-out",
       text: "\u2212", onclick: () => zoomBy(0.8) }),
@@ -647,11 +647,13 @@ function render({ model, el }) {
   }
   canvas.addEventListener("pointerup", (ev) => endPointer(ev, false));
   canvas.addEventListener("pointercancel", (ev) => endPointer(ev, true));
+  // zoom: Ctrl (or Cmd) and the wheel, or a pinch on a touchpad (the browser sends it as
+  // a wheel event with ctrlKey); a plain wheel scrolls the notebook as usual
   canvas.addEventListener("wheel", (ev) => {
+    if (!(ev.ctrlKey || ev.metaKey)) return;
     ev.preventDefault();
     const p = local(ev);
-    const k = Math.exp(-ev.deltaY * (ev.ctrlKey ? 0.01 : 0.0015));
-    zoomBy(k, p[0], p[1]);
+    zoomBy(Math.exp(-ev.deltaY * 0.01), p[0], p[1]);
   }, { passive: false });
 
   function tap(p) {

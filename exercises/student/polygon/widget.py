@@ -45,7 +45,7 @@ except ImportError:  # pragma: no cover - anywidget is a dependency of accelab
     anywidget = None
     _Base = traitlets.HasTraits
 
-HERE = pathlib.Path(__file__).resolve().parent
+_HERE = pathlib.Path(__file__).resolve().parent
 #: the file beside the notebook that keeps constructions between sessions
 STORE = ".accelab-polygons.json"
 #: largest store file read back [bytes]
@@ -83,8 +83,8 @@ class PolygonBuilder(_Base):
     notebook) or :meth:`accelab.exercises.practice.Practice.builder`.
     """
 
-    _esm = HERE / "builder.js"
-    _css = HERE / "builder.css"
+    _esm = _HERE / "builder.js"
+    _css = _HERE / "builder.css"
 
     problem = traitlets.Dict().tag(sync=True)
     steps = traitlets.List().tag(sync=True)
