@@ -46,6 +46,14 @@ from _polygon_lab import (
     type_into,
     wait,
 )
+
+pytest.importorskip("selenium", reason="selenium is not installed (pip install -e '.[test]')")
+
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions import interaction
+from selenium.webdriver.common.actions.action_builder import ActionBuilder
+from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 from accelab.exercises.grader.key import key_for
@@ -176,6 +184,11 @@ def velocity_by_pointer(driver, phase, touch, check=True):
     return judged(driver, 8)
 
 
+def zoom(driver):
+    """The polygon canvas's zoom [CSS px per display unit]."""
+    return json.loads(find(driver, "canvas").get_attribute("data-view"))["z"]
+
+
 def marks(driver):
     return driver.execute_script(
         "return Array.from(document.querySelectorAll("
@@ -240,6 +253,17 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(server):
         cls, text = message(d)
         assert "info" in cls and "Lay A" in text, text
         shot(d, "practice-next-step-1366")
+        # zoom with Ctrl and the wheel (a touchpad's pinch arrives the same way); a plain
+        # wheel is left to scroll the notebook
+        canvas = find(d, "canvas")
+        before = zoom(d)
+        ActionChains(d).scroll_from_origin(ScrollOrigin.from_element(canvas), 0, 120).perform()
+        assert zoom(d) == before
+        ActionChains(d).key_down(Keys.CONTROL).scroll_from_origin(
+            ScrollOrigin.from_element(canvas), 0, -120
+        ).key_up(Keys.CONTROL).perform()
+        time.sleep(0.3)
+        assert zoom(d) > 1.5 * before
         assert not [e for e in console_errors(d) if "polygon" in e.lower()]
 
 
@@ -262,7 +286,25 @@ def test_practice_on_a_phone_with_a_finger(server):
         velocity_by_pointer(d, task.phase("velocity"), touch=True)
         assert marks(d) == ["ok"] * 8, [message(d)]
         shot(d, "practice-velocity-390")
-        # pinch-free zoom by the buttons and the fit button keep the drawing
+        # two fingers spread apart zoom in; the fit button brings the drawing back
+        canvas = find(d, "canvas")
+        before = zoom(d)
+        pinch = ActionBuilder(d)
+        one = pinch.add_pointer_input(interaction.POINTER_TOUCH, "one")
+        two = pinch.add_pointer_input(interaction.POINTER_TOUCH, "two")
+        one.create_pointer_move(origin=canvas, x=-20, y=0)
+        two.create_pointer_move(origin=canvas, x=20, y=0)
+        one.create_pointer_down()
+        two.create_pointer_down()
+        for k in range(1, 6):
+            one.create_pointer_move(origin=canvas, x=-20 - 8 * k, y=0, duration=30)
+            two.create_pointer_move(origin=canvas, x=20 + 8 * k, y=0, duration=30)
+        one.create_pointer_up(0)
+        two.create_pointer_up(0)
+        pinch.perform()
+        time.sleep(0.3)
+        assert zoom(d) == pytest.approx(3 * before, rel=0.1)
+        assert marks(d) == ["ok"] * 8  # a pinch draws nothing
         click(d, "zoom-fit")
         time.sleep(0.3)
         shot(d, "practice-velocity-fit-390")
