@@ -61,6 +61,7 @@ from accelab.exercises.grader.sandbox import check_sandbox
 from accelab.exercises.notebook import read_spec
 from accelab.exercises.student.polygon.record import MIMETYPE
 from accelab.exercises.student.polygon.task import task_of_case
+from accelab.exercises.student.polygon.widget import STORE
 from accelab.solver.graphical.gallery import EXAMPLE_7_1
 
 pytestmark = pytest.mark.slow
@@ -196,8 +197,9 @@ def marks(driver):
     )
 
 
-def test_practice_right_then_each_classic_mistake_with_a_mouse(server):
+def test_practice_right_then_each_classic_mistake_with_a_mouse(server, folder):
     base, token = server
+    (folder / STORE).unlink(missing_ok=True)  # a fresh start, not an earlier session's steps
     task = task_of_case(EXAMPLE_7_1)
     vel, acc = task.phase("velocity"), task.phase("acceleration")
     with browser(1366) as d:
@@ -267,13 +269,15 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(server):
         assert not [e for e in console_errors(d) if "polygon" in e.lower()]
 
 
-def test_practice_on_a_phone_with_a_finger(server):
+def test_practice_on_a_phone_with_a_finger(server, folder):
     base, token = server
+    (folder / STORE).unlink(missing_ok=True)
     task = task_of_case(EXAMPLE_7_1)
     with browser(390) as d:
         start(d, base, token, "practice.ipynb")
         root = find(d, "polygon-builder")
         assert "narrow" in root.get_attribute("class")
+        assert "0/8" in find(d, "tab-velocity").text  # nothing kept from another session
         width = d.execute_script(
             "const r = arguments[0]; return [r.scrollWidth, r.clientWidth, "
             "r.getBoundingClientRect().width];",

@@ -525,3 +525,26 @@ def test_every_familys_constructions_are_judged_right_exact_and_by_a_careful_han
                     sloppy = judge_phase(phase, read_steps(careful(phase, rng, 0.15)))
                     sloppy_wrong += sloppy.credit < 1.0
     assert sloppy_wrong >= 60  # 15% off is caught nearly everywhere (of 72 polygons)
+
+
+def test_a_construction_is_kept_beside_the_notebook_between_sessions(tmp_path, monkeypatch):
+    """In a live kernel the builder keeps its steps in .accelab-polygons.json (the
+    notebook's folder) and a new builder of the same problem takes them back; a
+    file that is not the builder's own is not read."""
+    from accelab.exercises.student.polygon import widget
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(widget, "live", lambda: True)
+    first = PolygonBuilder.from_case(EXAMPLE_7_1)
+    first.steps = steps_of(first.task, "velocity")[:3]
+    store = json.loads((tmp_path / widget.STORE).read_text())
+    assert len(store) == 1 and len(next(iter(store.values()))["steps"]) == 3
+    again = PolygonBuilder.from_case(EXAMPLE_7_1)
+    assert [s["name"] for s in again.steps] == ["V_A", "V_BA", "V_B"]
+    assert again.verdicts[0]["ok"] is True
+    key = next(iter(store))
+    (tmp_path / widget.STORE).write_text(json.dumps({key: {"format": "x", "steps": [[[]]]}}))
+    forged = PolygonBuilder.from_case(EXAMPLE_7_1)
+    assert forged.steps == [] and "could not be read" in forged.status
+    (tmp_path / widget.STORE).write_text("[" * 100_000)  # not even JSON a parser takes
+    assert PolygonBuilder.from_case(EXAMPLE_7_1).steps == []
