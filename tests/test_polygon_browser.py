@@ -370,6 +370,14 @@ def test_an_assignment_drawn_saved_and_graded(folder, course, server):
         shot(d, "assignment-1366")
         command(d, "docmanager:save")
         time.sleep(2)
+        # the next day: the notebook opened and run again brings the construction back
+        start(d, base, token, "ann/A/A.ipynb")
+        wait(
+            d,
+            "return document.querySelectorAll("
+            "'[data-testid=polygon-builder] [data-testid=steps] li').length === 8",
+            what="the velocity polygon's 8 steps, kept from the last session",
+        )
     saved = nbformat.read(folder / "ann" / "A" / "A.ipynb", as_version=4)
     cell = next(c for c in saved.cells if c.metadata["nbgrader"]["grade_id"] == "polygon1")
     data = [o["data"][MIMETYPE] for o in cell.outputs if MIMETYPE in o.get("data", {})]
