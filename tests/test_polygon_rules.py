@@ -548,3 +548,41 @@ def test_a_construction_is_kept_beside_the_notebook_between_sessions(tmp_path, m
     assert forged.steps == [] and "could not be read" in forged.status
     (tmp_path / widget.STORE).write_text("[" * 100_000)  # not even JSON a parser takes
     assert PolygonBuilder.from_case(EXAMPLE_7_1).steps == []
+
+
+def test_no_drawing_however_odd_makes_the_rules_fail(tasks):
+    """Random steps (zero-length vectors, parallel lines, crossings of lines not
+    drawn, names of other polygons, huge numbers): every one is judged, none raises."""
+    import random
+
+    rng = random.Random(3)
+
+    def pt():
+        c = rng.choice([0.0, 1.0, -1.0, 1e-12, 1e11, rng.uniform(-50, 50)])
+        return [c, rng.choice([0.0, c, rng.uniform(-50, 50)])]
+
+    for _ in range(600):
+        t = rng.choice(list(tasks.values()))
+        steps = []
+        for _ in range(rng.randint(0, 25)):
+            ph = rng.choice(list(t.phases.values()))
+            names = [x.name for x in ph.terms + ph.resultants] + [r.name for r in ph.reads]
+            names += ["X", "Zz"]
+            op = rng.choice(["vector", "line", "point", "read"])
+            step = {"op": op, "phase": ph.name}
+            if op == "vector":
+                step.update(name=rng.choice(names), tail=pt(), tip=pt())
+            elif op == "line":
+                step.update(name=rng.choice(names), through=pt(), angle=rng.uniform(-720, 720))
+            elif op == "point":
+                step.update(lines=[rng.choice(names), rng.choice(names)], at=pt())
+            else:
+                step.update(name=rng.choice(names), value=rng.choice([0.0, 1e11, rng.random()]))
+            steps.append(step)
+        drawn = read_steps(steps)
+        feedback = step_feedback(t, drawn)
+        assert len(feedback) == len(drawn)
+        assert all(isinstance(f["message"], str) and f["message"] for f in feedback)
+        for ph in t.phases.values():
+            next_step(ph, drawn)
+            next_step(ph, drawn, numbers=False)
