@@ -398,5 +398,6 @@ def test_an_assignment_drawn_saved_and_graded(folder, course, server):
         row = next(csv.DictReader(fh))
     assert float(row["velocity_polygon"]) == 1.0, row
     assert float(row["acceleration_polygon"]) == pytest.approx(4 / 12, abs=1e-3), row
+    assert "exact one" not in row["notes"]  # drawn by hand, not written in
     outcome = json.load(open(os.path.join(course, ".accelab", "outcomes", "A", "ann.json")))
     assert "4 of 12 steps" in outcome["verdicts"]["acceleration_polygon"]["message"]

@@ -188,6 +188,8 @@ def test_a_right_construction_gets_full_marks(graded):
     s = scores(graded, "right")
     assert len(s) == 6 and all(v == 1.0 for v in s.values()), s
     assert float(graded["rows"]["right"]["total"]) == 6.0
+    # written into the notebook from the exact construction: the CSV says so
+    assert "is the exact one to 1e-09 in every known vector" in graded["rows"]["right"]["notes"]
 
 
 def test_partial_credit_per_step_and_the_wrong_steps_explained(graded):

@@ -35,6 +35,9 @@ BUILDER_ID = re.compile(r"^polygon(\d{1,3})$")
 MAX_OUTPUTS = 50
 #: the feedback's text is wrapped at this width (it reads on a phone)
 WIDTH = 72
+#: a drawing whose every known vector is the exact one to this relative precision was
+#: not drawn by hand or typed from a reading (the CSV says so; the grade is the same)
+EXACT = 1e-9
 
 
 @dataclass(frozen=True)
@@ -173,12 +176,23 @@ def judge_construction(name, key, record):
     return Verdict(name, j.right == total, round(j.credit, 4), message), outputs, ""
 
 
+def _exact(key, record):
+    """Whether every known vector of the polygon is drawn exactly (see :data:`EXACT`)."""
+    phase = key.task.phase(key.phase)
+    drawn = {s.name: s for s in record.steps if s.phase == key.phase and s.op == "vector"}
+    knowns = [t for t in phase.terms if t.known]
+    return len(knowns) >= 1 and all(
+        t.name in drawn and abs(drawn[t.name].vector - t.vector) <= EXACT * abs(t.vector)
+        for t in knowns
+    )
+
+
 def judge_constructions(key, records):
     """``(verdicts, outputs, notes)`` of every construction answer of the
     submitter's ``key`` (:class:`~accelab.exercises.grader.key.Key`), from
     ``records`` (:func:`records_of`)."""
     verdicts, outputs, notes = {}, {}, []
-    seen = set()
+    seen, exact = set(), set()
     for name, answer in key.variant.answers.items():
         if answer.kind != "construction":
             continue
@@ -188,6 +202,14 @@ def judge_constructions(key, records):
         verdicts[name], outputs[name] = verdict, extra
         if note:
             notes.append(note)
+        if not isinstance(record, (str, type(None))) and k not in exact:
+            if _exact(key.values[name], record):
+                exact.add(k)
+                notes.append(
+                    f"the construction of problem {k} is the exact one to {EXACT:g} in every "
+                    "known vector: it was not drawn in the builder by hand (computed, or written "
+                    "into the notebook)"
+                )
         if (
             k not in seen
             and not isinstance(record, (str, type(None)))
