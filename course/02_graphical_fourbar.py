@@ -616,6 +616,95 @@ r120 = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
 )
 assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 # %% [markdown]
+# ## Your turn: the polygon builder
+#
+# Reading a construction is not doing one. The **polygon builder** below is a drawing board
+# for Example 7-1: the linkage drawn to scale beside a polygon canvas whose scale is stated
+# on it. Build the velocity polygon first, then the acceleration polygon, as the steps above
+# did:
+#
+# - **Vector**: lay a known vector from the pole or from the tip of the last one. Drag from
+#   the point to its tip (the direction snaps to a link, or across it, within 2.5°, and the
+#   length and angle show as you drag), or type its length (in the polygon's units or in
+#   squares) and its direction: parallel or perpendicular to a link, and which way.
+# - **Line**: a construction line of known direction (the chapter's $pp$ and $qq$) through a
+#   point: drag from the point along the direction, or type it.
+# - **Crossing**: tap where two lines cross: the polygon closes there. Then draw the unknown
+#   vectors to it, and measure them with **Measure**.
+# - **Read off**: type $\omega_3$, $\omega_4$ (then $\alpha_3$, $\alpha_4$), counter-clockwise
+#   positive.
+# - **Undo**, **Clear**, and zoom: +, −, fit, Ctrl and the mouse wheel, or a pinch on a
+#   touchpad or a touch screen.
+#
+# Each step is checked as you make it: a direction is right within 1°, a length within 2% of
+# the polygon's largest vector. A wrong step turns red with a number, and the builder says
+# which rule it broke, in the chapter's terms; it never draws the answer unless you ask with
+# **Show the next step**. (On this web page the builder cannot run, so the figure shows the
+# finished construction. Download the notebook, or write the course with
+# `accelab course --out DIR`, to build it yourself.)
+
+# %% mystnb={"figure": {"caption": "Example 7-1 in the polygon builder: the finished velocity and acceleration polygons, one scale each. In a live notebook this cell is the builder itself, empty, and each step is checked as it is drawn."}, "image": {"alt": "The velocity and acceleration polygons of Example 7-1 as the polygon builder draws a finished construction."}}
+from accelab.exercises.student.polygon import PolygonBuilder
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, INVERTED_SLIDER_CRANK
+
+PolygonBuilder.from_case(EXAMPLE_7_1, title="Example 7-1: your construction").show()
+
+# %% [markdown]
+# **What the builder says** when a step breaks a rule: the classic mistakes, made on
+# Example 7-1, and the builder's own words for each.
+
+# %%
+from accelab.course.polygons import classic_mistakes
+
+classic_mistakes(EXAMPLE_7_1)
+
+# %% [markdown]
+# And on an inverted slider-crank, whose polygon needs the Coriolis component
+# $2\omega_4 V_{slip}$ of notebook 5:
+
+# %%
+classic_mistakes(INVERTED_SLIDER_CRANK)
+
+# %% [markdown]
+# ### One of each kind, to practise
+#
+# Fresh problems of the three graded exercise families whose answer is a construction:
+# `polygon_fourbar`, `polygon_slidercrank` and `polygon_coriolis` (the inverted slider-crank,
+# with its Coriolis component). Each run draws a new position, never one of a graded
+# assignment's, and its builder checks each step. In a graded assignment the same builder
+# records your construction without checking it; the construction is saved with the notebook
+# and judged step by step when the assignment is graded, with partial credit.
+
+# %% tags=["remove-output"]
+practice("polygon_fourbar").builder().show()
+
+# %% tags=["remove-output"]
+practice("polygon_slidercrank").builder().show()
+
+# %% tags=["remove-output"]
+practice("polygon_coriolis").builder().show()
+
+# %% [markdown]
+# **On this page**, the problems of seed 3 of the slider-crank and the inverted
+# slider-crank: draw them on paper (or in the notebook, with
+# `practice("polygon_slidercrank", seed=3).builder()`), then unfold the finished
+# constructions.
+
+# %%
+p = practice("polygon_slidercrank", seed=3)
+p
+
+# %% tags=["hide-output"]
+p.answers()
+
+# %%
+p = practice("polygon_coriolis", seed=3)
+p
+
+# %% tags=["hide-output"]
+p.answers()
+
+# %% [markdown]
 # ## Practice
 #
 # Fourbar problems with instant feedback, for self-study (not graded, and never one of a graded

@@ -89,6 +89,22 @@ TEST_TEMPLATE = (
     "from accelab.exercises.student.runtime import check_format\n"
     "check_format({name!r}, globals())\n"
 )
+#: problem k of a polygon family: the builder (its construction is the answer, kept
+#: in this cell's output when the notebook is saved) and the visible check of each polygon
+_BUILDER_CELL = (
+    "from accelab.exercises.student.polygon import PolygonBuilder\n"
+    "PolygonBuilder.for_assignment(v, {k}).show()\n"
+)
+_CONSTRUCTION_CHECK = (
+    "from accelab.exercises.student.polygon import check_construction\n"
+    "check_construction({name!r})\n"
+)
+_CONSTRUCTION_RULE = """- a construction (a polygon drawn in the polygon builder) earns the
+  fraction of its steps that are right: a direction within {angle_tol} deg, a length or a
+  point within 2% of the polygon's largest vector, a value read off within what the drawing
+  allows. It is read from the notebook as you saved it: **save the notebook before you
+  submit**.
+"""
 
 
 def build_notebook(spec, title=None):
@@ -96,20 +112,19 @@ def build_notebook(spec, title=None):
     check_spec(spec)
     preview = build_variant(spec, PREVIEW_STUDENT)
     title = title or f"Assignment {spec['assignment']}: acceleration analysis"
-    cells = [
-        _md(
-            INSTRUCTIONS.format(
-                title=title,
-                student_hint=(
-                    "your JupyterHub user name; without JupyterHub, the account you fetched the "
-                    "assignment from; else the id you set in `ACCELAB_STUDENT`"
-                ),
-                tol=f"{100 * spec['tolerance']:g}%",
-                angle_tol=f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}",
-            ),
-            "instructions",
-        )
-    ]
+    angle_tol = f"{spec.get('angle_tolerance', DEFAULT_ANGLE_TOLERANCE):g}"
+    instructions = INSTRUCTIONS.format(
+        title=title,
+        student_hint=(
+            "your JupyterHub user name; without JupyterHub, the account you fetched the "
+            "assignment from; else the id you set in `ACCELAB_STUDENT`"
+        ),
+        tol=f"{100 * spec['tolerance']:g}%",
+        angle_tol=angle_tol,
+    )
+    if any(a.kind == "construction" for p in preview.problems for a in p.answers):
+        instructions += _CONSTRUCTION_RULE.format(angle_tol=f"{DEFAULT_ANGLE_TOLERANCE:g}")
+    cells = [_md(instructions, "instructions")]
     cells.append(
         _code(
             "from accelab.exercises.student.runtime import ureg, Q_, load_variant\n"
@@ -123,7 +138,12 @@ def build_notebook(spec, title=None):
         png = base64.b64encode(statement_figure(problem)).decode("ascii")
         rows = "\n".join(
             f"| `{a.name}` | {a.description} | "
-            f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')} |"
+            + (
+                "drawn in the builder"
+                if a.kind == "construction"
+                else f"{a.unit or ('one of ' + ', '.join(a.choices) if a.choices else '-')}"
+            )
+            + " |"
             for a in problem.answers
         )
         text = (
@@ -133,7 +153,20 @@ def build_notebook(spec, title=None):
         )
         cells.append(_md(text, f"problem{k}", attachments={f"figure{k}.png": {"image/png": png}}))
         cells.append(_code(f"v.show({k})", f"given{k}", locked=True))
+        if any(a.kind == "construction" for a in problem.answers):
+            cells.append(_code(_BUILDER_CELL.format(k=k), f"polygon{k}", locked=True))
         for a in problem.answers:
+            if a.kind == "construction":
+                cells.append(
+                    _code(
+                        _CONSTRUCTION_CHECK.format(name=a.name),
+                        f"test_{a.name}",
+                        grade=True,
+                        locked=True,
+                        points=1,
+                    )
+                )
+                continue
             unit = a.unit or "text"
             cells.append(
                 _code(

@@ -84,6 +84,10 @@ class Practice:
             raise KeyError(
                 f"this problem has no answer {name!r}; its answers are {', '.join(self.asked)}"
             )
+        if self.asked[name].kind == "construction":
+            raise ValueError(
+                f"{name} is a construction: draw it with p.builder(), which checks each step"
+            )
         with silenced():
             verdict = judge(
                 self.asked[name],
@@ -96,12 +100,32 @@ class Practice:
         print(verdict.message)
         return verdict.ok
 
+    def builder(self):
+        """The polygon builder of this problem (the polygon families), in practice
+        mode: each step is checked as it is made."""
+        from .student.polygon import PolygonBuilder
+
+        constructions = [a for a in self.problem.answers if a.kind == "construction"]
+        if not constructions:
+            raise ValueError(f"the {self.family} family is not drawn in the polygon builder")
+        (case,) = constructions[0].cases.values()
+        return PolygonBuilder.from_case(
+            case,
+            title=f"Practice: {self.problem.title} (seed {self.seed})",
+            store_key=f"practice:{self.family}:{self.seed}:{self.units}",
+        )
+
     def reveal(self, name):
-        """The answer ``name`` in the asked unit (for after you tried)."""
+        """The answer ``name`` in the asked unit (for after you tried); a
+        construction's is the finished polygon (PNG bytes)."""
         a = self.asked[name]
         value = self._key.values[name]
         if a.kind == "choice":
             return value
+        if a.kind == "construction":
+            from .student.polygon.figure import construction_png
+
+            return construction_png(value.task, None, value.phase)
         return Q_(value, Q_(1.0, a.unit or "").to_base_units().units).to(a.unit or "")
 
     def answers(self):
@@ -121,8 +145,7 @@ class Practice:
     def _repr_markdown_(self):
         rows = "\n".join(f"| {k} | {v} |" for k, v in self.problem.given.items())
         asked = "\n".join(
-            f"| `{a.name}` | {a.description} | {a.unit or ('one of ' + ', '.join(a.choices))} |"
-            for a in self.asked.values()
+            f"| `{a.name}` | {a.description} | {_unit_text(a)} |" for a in self.asked.values()
         )
         png = self._figure_png()
         figure = (
@@ -142,6 +165,11 @@ class Practice:
     def _how_to_check(self):
         """The sentence under the problem that says how to check an answer."""
         first = next(iter(self.asked))
+        if self.asked[first].kind == "construction":
+            return (
+                "Draw it with `p.builder()`: each step is checked as you make it (directions "
+                "within 1 deg, lengths within 2% of the polygon's largest vector)."
+            )
         return (
             f"Check an answer with `p.check({first!r}, Q_(..., "
             f"{self.asked[first].unit!r}))`; numbers are right within "
@@ -154,6 +182,12 @@ class Practice:
             f"Practice({self.family!r}, seed={self.seed}): {self.problem.title}; given "
             f"{given}; answers {', '.join(self.asked)}"
         )
+
+
+def _unit_text(a):
+    if a.kind == "construction":
+        return "drawn in the builder"
+    return a.unit or ("one of " + ", ".join(a.choices))
 
 
 def practice(family, seed=None, units="US"):
@@ -173,15 +207,25 @@ class _Answers:
     def __init__(self, problem):
         self._problem = problem
 
-    def _rows(self):
+    def _rows(self, markdown=False):
         p = self._problem
         for name, a in p.asked.items():
             value = p.reveal(name)
-            shown = value if a.kind == "choice" else f"{value.magnitude:.4g} {a.unit}"
+            if a.kind == "choice":
+                shown = value
+            elif a.kind == "construction":
+                png = base64.b64encode(value).decode("ascii")
+                shown = (
+                    f"![the finished {a.name.replace('_', ' ')}](data:image/png;base64,{png})"
+                    if markdown
+                    else f"the finished {a.name.replace('_', ' ')} (a figure)"
+                )
+            else:
+                shown = f"{value.magnitude:.4g} {a.unit}"
             yield name, a.description, shown
 
     def _repr_markdown_(self):
-        rows = "\n".join(f"| `{n}` | {d} | {v} |" for n, d, v in self._rows())
+        rows = "\n".join(f"| `{n}` | {d} | {v} |" for n, d, v in self._rows(markdown=True))
         return (
             f"**Answers** (seed {self._problem.seed})\n\n| answer | quantity | value |\n"
             f"|---|---|---|\n{rows}"

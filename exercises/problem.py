@@ -4,8 +4,9 @@ An :class:`Answer` is what one answer cell grades: the variable ``name`` the
 student assigns, the ``unit`` the statement asks for, the batch ``cases`` it
 depends on (label -> case dict in the batch format of the conventions page), and
 an ``expr`` over those cases' outputs (see :mod:`accelab.exercises.expr`), evaluated in SI.
-``kind`` is "number", "angle" (compared modulo 360 deg) or "choice" (a word
-picked from ``choices``; no expr is published).
+``kind`` is "number", "angle" (compared modulo 360 deg), "choice" (a word
+picked from ``choices``; no expr is published) or "construction" (a polygon drawn
+in the polygon builder; ``expr`` names the polygon, "velocity" or "acceleration").
 
 Two views leave this module: :meth:`Problem.statement` is what a student's
 kernel may hold (given values and what is asked, no cases, no exprs);
@@ -60,6 +61,8 @@ class Answer:
         }
         if self.kind == "choice":
             out["choices"] = list(self.choices)
+        elif self.kind == "construction":  # the answer is a drawing of this polygon
+            out["construction"] = self.expr
         else:
             out["expr"] = self.expr
             out["quantity_required"] = self.quantity_required

@@ -38,9 +38,8 @@ def format_text(v):
         lines.append(f"\nProblem {p['number']}: {p['title']}")
         lines += [f"  {k} = {val}" for k, val in p["given"].items()]
         for a in p["answers"]:
-            lines.append(
-                f"  find {a['name']} [{a['unit'] or a.get('choices')}]: {a['description']}"
-            )
+            what = a["unit"] or a.get("choices") or f"a construction: {a.get('construction')}"
+            lines.append(f"  find {a['name']} [{what}]: {a['description']}")
     return "\n".join(lines)
 
 

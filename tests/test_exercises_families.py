@@ -132,6 +132,8 @@ def test_family_variants_are_deterministic_well_conditioned_and_sized(family, un
             value = key_value(a, outputs)
             if a.kind == "choice":
                 assert value in a.choices
+            elif a.kind == "construction":  # judged step by step (test_polygon_grading)
+                assert value.phase == a.expr and value.task.phase(a.expr).steps
             else:
                 assert math.isfinite(value) and value != 0.0
             lengths = [
@@ -212,7 +214,7 @@ def test_public_variant_has_no_answers_and_exprs_reproduce_the_key():
         assert set(a) >= {"name", "unit", "cases", "kind"}
         for case in a["cases"].values():
             assert "mechanism" in case and "theta2" in case
-        if a["kind"] != "choice":
+        if a["kind"] not in ("choice", "construction"):
             assert expr.labels(a["expr"]) == sorted(a["cases"])
     # the outside check's code (independent solver) answers every question right
     code = answers_code(pub)

@@ -18,7 +18,8 @@ from ..silence import silenced
 @dataclass
 class Key:
     """The expected value of every answer of one student's variant: an SI float
-    (numbers, angles in rad) or the right word (choices)."""
+    (numbers, angles in rad), the right word (choices), or the construction to
+    judge a drawing against (:class:`~accelab.exercises.grader.construction.ConstructionKey`)."""
 
     student: str
     variant: Variant
@@ -32,6 +33,11 @@ class Key:
 def key_value(answer, outputs=None):
     """The correct answer of one :class:`~accelab.exercises.problem.Answer`: a float in
     SI, or the right choice. ``outputs`` (label -> batch result) may be given."""
+    if answer.kind == "construction":  # judged step by step (.construction)
+        from .construction import ConstructionKey
+
+        (case,) = answer.cases.values()
+        return ConstructionKey(dict(case), answer.expr)
     outputs = outputs if outputs is not None else solve_cases(answer.cases)
     if answer.kind == "choice":
         value = float(evaluate(answer.basis, outputs))

@@ -29,6 +29,7 @@ from ..files import fault, write_atomic
 from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
 from .intake import notes_of, submissions
+from .construction import records_of
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
@@ -204,7 +205,8 @@ class JudgeSubmission(NbGraderPreprocessor):
             course_dir, assignment, student, info.get("notebook", assignment)
         )
         shown = shown_ids(submitted) if submitted is not None else []
-        outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
+        records = records_of(submitted) if submitted is not None else {}
+        outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown, records)
         outcome.notes += notes_of(course_dir, assignment, student)  # who and when
         write_notebook(nb, steps, run, outcome)
         digest = submission_hash(course_dir, assignment, student)

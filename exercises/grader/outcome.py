@@ -28,6 +28,9 @@ class Outcome:
     verdicts: dict = field(default_factory=dict)  # name -> Verdict
     notes: list = field(default_factory=list)  # for the CSV and the feedback
     seconds: float = 0.0
+    #: name -> further outputs its test cell shows in the feedback (a construction's
+    #: drawing); not saved with the outcome
+    outputs: dict = field(default_factory=dict)
 
     @property
     def score(self):
@@ -51,12 +54,15 @@ class Outcome:
         )
 
 
-def judge_run(key, steps, run, others=None, shown=()):
+def judge_run(key, steps, run, others=None, shown=(), constructions=None):
     """The :class:`Outcome` of ``run`` for the submitter whose ``key`` it is.
 
     ``others`` maps another student id -> that student's Key (to tell whose values
     a wrong answer holds); ``shown`` are the ids the submitted notebook's stored
-    outputs say it showed.
+    outputs say it showed; ``constructions`` are the polygon builders' records of
+    the submitted notebook
+    (:func:`accelab.exercises.grader.construction.records_of`), which construction
+    answers are judged from (they are not in the kernel).
     """
     variant = key.variant
     asked = key.asked
@@ -64,7 +70,16 @@ def judge_run(key, steps, run, others=None, shown=()):
     outcome = Outcome(key.student, seconds=run.seconds)
     if run.error:
         outcome.notes.append(run.error)
+    if any(a.kind == "construction" for a in asked.values()):
+        from .construction import judge_constructions
+
+        verdicts, outputs, notes = judge_constructions(key, constructions or {})
+        outcome.verdicts.update(verdicts)
+        outcome.outputs.update(outputs)
+        outcome.notes += notes
     for name, a in asked.items():
+        if a.kind == "construction":
+            continue
         report = run.reports.get(name)
         cause = _cell_cause(run, answers.get(name))
         if report is None:
@@ -104,7 +119,9 @@ def _whose_values(key, run, others, shown, outcome, asked):
             f"the notebook showed or asked for the values of {_whose(who, others)}, "
             f"not the submitter's; it was graded against {me}'s own values"
         )
-    wrong_names = [n for n, v in outcome.verdicts.items() if not v.ok]
+    wrong_names = [
+        n for n, v in outcome.verdicts.items() if not v.ok and asked[n].kind != "construction"
+    ]
     # each wrong answer's report is read once (the one bounded reader), then compared
     # with every other student's key: the cost does not grow with the class times the text
     readings = {
@@ -181,8 +198,21 @@ def _write(nb, steps, run, outcome):
                 cell.outputs = [
                     {"output_type": "stream", "name": "stdout", "text": verdict.message + "\n"}
                 ]
+            elif verdict.credit > 0:  # partial credit: nbgrader scores the number shown
+                cell.outputs = [
+                    {"output_type": "stream", "name": "stdout", "text": verdict.message + "\n"},
+                    *outcome.outputs.get(step.name, []),
+                    {
+                        "output_type": "execute_result",
+                        "execution_count": None,
+                        "data": {"text/plain": f"{verdict.credit:.4g}"},
+                        "metadata": {},
+                    },
+                ]
+                continue
             else:
                 cell.outputs = [_error("WrongAnswer", verdict.message)]
+            cell.outputs += outcome.outputs.get(step.name, [])
             continue
         result = run.cells[k]
         outputs = list(result.outputs)
