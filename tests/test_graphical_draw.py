@@ -272,3 +272,25 @@ def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 3000
     assert calls and all(kw.get("vectors") is False for kw in calls)
     assert calls[0].get("symbols") is True
+
+
+def test_a_round_off_zero_is_never_magnified():
+    """At theta2 = 360 deg the inverted slider-crank's slip velocity is 1e-16 m/s, not 0:
+    magnifying it would ask for a 1e15 times inset, which the renderer never finishes.
+    Round-off is not a short vector; a short vector still is."""
+    import math
+    import time
+
+    import matplotlib.pyplot as plt
+
+    from accelab.solver.graphical import invertedslidercrank
+    from accelab.solver.graphical.draw import _tiny, draw_linkage
+
+    assert _tiny([7.5e-16, 0.01, 0.5], 1.0) == [1]
+    con = invertedslidercrank.construct(0.1016, 0.0762, 0.2032, math.pi / 2, 2 * math.pi, 10.0, 0.0)
+    t0 = time.perf_counter()
+    fig, ax = plt.subplots()
+    draw_linkage(con, ax=ax, units="US", legend=False, lines=False)
+    fig.canvas.draw()
+    plt.close(fig)
+    assert time.perf_counter() - t0 < 20

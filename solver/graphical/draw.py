@@ -56,6 +56,10 @@ DIAGRAMS = {
 TINY = 0.06
 #: an inset that would magnify less than this is not drawn (the vector is readable as is)
 MIN_MAGNIFICATION = 4
+#: a vector shorter than this fraction of its diagram is round-off of a zero (a slip
+#: velocity of 1e-16 m/s at theta2 = 360 deg): never magnified, which would take an inset
+#: of a 1e15 times magnification that no renderer finishes drawing
+ROUNDOFF = 1e-9
 INSET_WIDTH = 0.34  # of the axes
 #: a vector within this angle [deg] of a link from its own pin is drawn beside the link
 ALONG = 12.0
@@ -418,7 +422,7 @@ def _tiny(vectors, size, ppd=None):
     short = TINY * size
     if ppd:
         short = max(short, 2.4 * HEAD_LENGTH / ppd)
-    return [i for i, v in enumerate(vectors) if 0 < abs(v) < short]
+    return [i for i, v in enumerate(vectors) if ROUNDOFF * size < abs(v) < short]
 
 
 def _leader(region, rect):
