@@ -112,7 +112,7 @@ def jacobian(q):
 
 q = np.radians([90.0, 130.0])
 history = [np.linalg.norm(loop(q))]
-for i in range(6):
+for _ in range(6):
     q = q + np.linalg.solve(jacobian(q), -loop(q))  # one Newton-Raphson step
     history.append(np.linalg.norm(loop(q)))
 for i, res in enumerate(history):
@@ -157,7 +157,7 @@ g3, g4 = np.meshgrid(
 )
 t3, t4 = g3.copy(), g4.copy()
 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-    for i in range(30):  # Newton on all guesses at once
+    for _ in range(30):  # Newton on all guesses at once
         z = a * np.exp(1j * theta2) + b * np.exp(1j * t3) - c * np.exp(1j * t4) - d
         j11, j12, j21, j22 = -b * np.sin(t3), c * np.sin(t4), b * np.cos(t3), -c * np.cos(t4)
         det = j11 * j22 - j12 * j21
@@ -172,7 +172,7 @@ for k, sol in enumerate((closed, crossed)):
 fig, ax = plt.subplots(figsize=(6.2, 5))
 cmap = plt.matplotlib.colors.ListedColormap([COLORS["normal"], COLORS["tangential"], "#dddddd"])
 ax.pcolormesh(np.degrees(g3), np.degrees(g4), ended, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto")
-for k, (sol, name) in enumerate(((closed, "open"), (crossed, "crossed"))):
+for sol, name in ((closed, "open"), (crossed, "crossed")):
     ax.plot(
         *np.degrees(np.angle(np.exp(1j * np.array([sol.theta3.magnitude, sol.theta4.magnitude])))),
         "o",

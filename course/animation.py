@@ -292,7 +292,7 @@ def animate(
         ax_c = fig.add_subplot(grid[0, 1])
         ax_m = fig.add_subplot(grid[1, 1], sharex=ax_c)
         markers = []
-        for ax, data, unit in ((ax_c, curve_data, None), (ax_m, mag_data, aname)):
+        for ax, data in ((ax_c, curve_data), (ax_m, mag_data)):
             free = iter(c for c in CURVE_COLOURS if c not in [KIND_COLOURS.get(n) for n in data])
             for name, y in data.items():
                 colour = KIND_COLOURS.get(name) or next(free)

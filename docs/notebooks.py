@@ -143,7 +143,7 @@ def execute(source, timeout=CELL_TIMEOUT):
         client.execute(env=kernel_env())
     except CellExecutionError as exc:
         raise _failed(nb, f"{source.name} failed:\n{exc}") from None
-    except Exception as exc:  # a timeout, a dead kernel: the same verdict, with its kind
+    except Exception as exc:  # noqa: BLE001 - a timeout, a dead kernel: the same verdict, its kind named
         raise _failed(nb, f"{source.name} failed: {type(exc).__name__}: {exc}") from None
     found = problems(nb)
     if found:

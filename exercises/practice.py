@@ -70,7 +70,7 @@ class Practice:
         for symbol, text in self.problem.given.items():
             try:
                 out[symbol] = Q_(text)
-            except Exception:
+            except Exception:  # noqa: BLE001 - pint raises many types for a word: it stays text
                 out[symbol] = text
         return out
 
@@ -115,7 +115,7 @@ class Practice:
         try:
             with silenced():
                 return statement_figure(self.problem, shared=False)
-        except Exception:
+        except Exception:  # noqa: BLE001 - the figure is an extra: the problem shows without it
             return None
 
     def _repr_markdown_(self):

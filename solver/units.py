@@ -190,7 +190,7 @@ def parse_quantity(value, kind, name):
             )
         try:
             q = _parse_text(text)
-        except Exception as exc:  # pint raises many unrelated types
+        except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types: InvalidInput says which
             raise InvalidInput(
                 f"{name} = {show(value)} could not be read as a quantity "
                 f"({_reason(exc)}). Example: {name}={example}",
@@ -201,7 +201,7 @@ def parse_quantity(value, kind, name):
         if not isinstance(value, Q_):  # another registry: read its units by name
             try:
                 q = Q_(value.magnitude, str(value.units))
-            except Exception as exc:
+            except Exception as exc:  # noqa: BLE001 - any failure means: units this registry cannot read
                 raise InvalidInput(
                     f"{name} = {show(value)} comes from another pint "
                     f"registry whose units this one cannot read "

@@ -213,7 +213,8 @@ def test_notebook_executes(source):
     if seconds > BUDGET:
         warnings.warn(
             f"{source.stem} took {seconds:.1f} s (the course budget is about "
-            f"{BUDGET:g} s per notebook)"
+            f"{BUDGET:g} s per notebook)",
+            stacklevel=2,
         )
     nb = json.loads(Path(path).read_text())
     assert _outputs(nb, "image/png"), "no figure: is %matplotlib inline in the first cell?"

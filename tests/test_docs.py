@@ -230,14 +230,17 @@ wait();
 """
 
 STATE = """
-const W = document.documentElement.clientWidth;   // the screen (innerWidth grows when a phone zooms out)
-const box = e => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; };
+// the screen (innerWidth grows when a phone zooms out)
+const W = document.documentElement.clientWidth;
+const box = e => {
+  const r = e.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; };
 const main = document.querySelector('main') || document.body;
 const maths = [...document.querySelectorAll('div.math, span.math')]
     .filter(m => m.checkVisibility());        // not the print-only table of contents
 // an element may pass the screen's edge only inside a box of its own that scrolls
 // sideways and itself fits on the screen (a table, a code block, an equation)
-const scrollsInBox = el => { for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
+const scrollsInBox = el => {
+  for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
     if (a.matches('.bd-main, .bd-content, .bd-article-container, .bd-article, article')) break;
     const o = getComputedStyle(a).overflowX;
     if ((o === 'auto' || o === 'scroll') && a.getBoundingClientRect().right <= W + 1) return true; }

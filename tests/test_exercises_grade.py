@@ -73,7 +73,7 @@ def course_snapshot(course):
     """Digest of every file a submission must not change (all but the grader's output)."""
     skip = ("autograded", "feedback", ".accelab", "gradebook.db", "grades_A.csv")
     digest = {}
-    for root, dirs, files in os.walk(course):
+    for root, _dirs, files in os.walk(course):
         rel = os.path.relpath(root, course)
         if rel.split(os.sep)[0] in skip:
             continue
@@ -163,8 +163,9 @@ def key_from_imports(course, units, name_of):
     probe = """
 import importlib, os, sys, glob
 found = []
-for mod in ("accelab.exercises.grader", "accelab.exercises.grader.key", "accelab.exercises.assignment",
-            "accelab.exercises.problem", "accelab.exercises.families", "accelab.exercises.practice",
+for mod in ("accelab.exercises.grader", "accelab.exercises.grader.key",
+            "accelab.exercises.assignment", "accelab.exercises.problem",
+            "accelab.exercises.families", "accelab.exercises.practice",
             "accelab.exercises.simulate", "accelab.exercises.variant", "accelab.exercises.expr"):
     try:
         importlib.import_module(mod); found.append(mod)

@@ -60,7 +60,7 @@ def test_the_answers_table_shows_every_answer_as_revealed(family, capsys):
     p = practice(family, seed=5)
     table = p.answers()._repr_markdown_()
     assert "(seed 5)" in table
-    for name, a in p.asked.items():
+    for name in p.asked:
         assert f"`{name}`" in table
         assert p.check(name, p.reveal(name))
     assert len(repr(p.answers()).splitlines()) == len(p.asked)

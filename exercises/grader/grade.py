@@ -148,14 +148,14 @@ def prepare(config, course_dir, assignment, spec, student, command, limits, slot
     except (NotebookTooLarge, NotebookUnreadable) as exc:
         sub.readable, sub.problem = False, str(exc)
         return sub
-    except Exception as exc:  # an OSError: nothing of the file is quoted
+    except Exception as exc:  # noqa: BLE001 - an OSError or worse: nothing of the file is quoted
         sub.readable = False
         sub.problem = f"the notebook cannot be read ({type(exc).__name__})"
         return sub
     try:
         nb = sanitize(config, course_dir, assignment, student, nb)
-    except Exception:
-        return sub  # nbgrader will say what is wrong when it autogrades it
+    except Exception:  # noqa: BLE001 - nbgrader says what is wrong when it autogrades it
+        return sub
     steps = plan_of(nb)
     key = cached_key(spec, student)
     slot = slots.get()
@@ -229,7 +229,7 @@ def grade(
         for n, fut in enumerate(as_completed(futures), start=1):
             try:
                 sub = fut.result()
-            except Exception:  # never one submission's failure for the whole class:
+            except Exception:  # noqa: BLE001 - never one submission's failure for the whole class:
                 sub = Submission(futures[fut])  # nbgrader's autograde tries it alone
             subs[sub.student] = sub
             if sub.readable:

@@ -52,7 +52,7 @@ class NotebookVariant:
         for symbol, text in self.problems[number - 1]["given"].items():
             try:
                 out[symbol] = Q_(text)
-            except Exception:
+            except Exception:  # noqa: BLE001 - pint raises many types for a word: it stays text
                 out[symbol] = text
         return out
 

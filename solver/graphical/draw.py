@@ -915,7 +915,7 @@ def draw_polygon(
                 letters=main,
                 obstacles=obstacles if main else None,
             )
-        for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+        for a, (s, v) in zip(arrows, drawn):
             if _arrow(target, s, v, a.kind, ppd_t):
                 labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"])
                 if main:

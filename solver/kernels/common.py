@@ -348,10 +348,10 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
     for sl in pieces(n):
         part = solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
         if out is None:
-            m = min(n, PIECE)
+            one_each = (min(n, PIECE),)  # the shape of a field with one value per position
 
-            def per_position(v):
-                return isinstance(v, np.ndarray) and v.shape == (m,)
+            def per_position(v, one_each=one_each):
+                return isinstance(v, np.ndarray) and v.shape == one_each
 
             full = {
                 k: np.empty(n, getattr(part, k).dtype)

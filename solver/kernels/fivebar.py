@@ -1,6 +1,7 @@
 """The geared fivebar, position to jerk, in closed form (unit-free).
 
-Vector loop (docs/conventions.md#mechanisms; its first and second derivatives are eqs. 6.32a and 7.28a):
+Vector loop (docs/conventions.md#mechanisms; its first and second derivatives are eqs. 6.32a
+and 7.28a):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta5} - f e^{j theta1} = 0
     theta5 = lam theta2 + phi   (angles measured from the ground line O2->O5)
 

@@ -110,8 +110,8 @@ class InvertedSliderCrank(Mechanism):
         reach = self._c * abs(np.sin(self._gamma))
         return (
             f"the slide line passes at least c |sin gamma| = {self._show(reach)} from O4, "
-            f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or reduce c or "
-            f"|sin gamma|."
+            f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or "
+            f"reduce c or |sin gamma|."
         )
 
     def _singular_reason(self):

@@ -1,4 +1,5 @@
-"""The offset slider-crank with Quantities in and out (kernel: accelab.solver.kernels.slidercrank)."""
+"""The offset slider-crank with Quantities in and out
+(kernel: accelab.solver.kernels.slidercrank)."""
 
 import numpy as np
 
@@ -80,8 +81,8 @@ class SliderCrank(Mechanism):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
         return (
             f"the crank pin is {self._show(abs(y))} from the slide line but the rod is "
-            f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose another "
-            f"theta2, a longer rod or a smaller offset."
+            f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose "
+            f"another theta2, a longer rod or a smaller offset."
         )
 
     def _singular_reason(self):

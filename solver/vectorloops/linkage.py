@@ -17,11 +17,11 @@ class VectorLoopLinkage:
     Parameters
     ----------
     vectors : dict
-        Named vectors as in docs/conventions.md#vector-loop-format: ``{"R2": {"length": "2 in", "angle":
-        "input"}, "R3": {"length": "6 in", "angle": "unknown", "guess":
-        "90 deg"}, "S": {"length": "unknown", "guess": "7 in", "angle":
-        "0 deg"}, "R5": {"length": "3 in", "angle": {"follow": "R3",
-        "offset": "40 deg"}}, ...}``. The guesses choose the assembly.
+        Named vectors as in docs/conventions.md#vector-loop-format:
+        ``{"R2": {"length": "2 in", "angle": "input"}, "R3": {"length": "6 in",
+        "angle": "unknown", "guess": "90 deg"}, "S": {"length": "unknown",
+        "guess": "7 in", "angle": "0 deg"}, "R5": {"length": "3 in", "angle":
+        {"follow": "R3", "offset": "40 deg"}}, ...}``. The guesses choose the assembly.
     loops : list of str
         Each a signed sum of vector names that closes to zero.
     points : dict, optional
