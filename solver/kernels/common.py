@@ -23,6 +23,7 @@ Each helper returns the (x, y) components of such a term.
 import functools
 import math
 from dataclasses import dataclass, field, fields
+from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
 
 import numpy as np
 
@@ -167,76 +168,103 @@ def without_float_warnings(func):
     return wrapper
 
 
-@dataclass(eq=False)
+#: the input motion every closed-form kernel echoes in its Motion [rad, rad/s, rad/s^2, rad/s^3]
+INPUTS = ("theta2", "omega2", "alpha2", "jerk2")
+
+
+def angles(*links: int) -> tuple[str, ...]:
+    """The angular outputs of ``links`` (3, 4 ...), position to jerk, in the order
+    results report them (docs/conventions.md#outputs): ``angles(3, 4)`` is theta3,
+    theta4, omega3, omega4, alpha3, alpha4, jerk3, jerk4 [rad, rad/s, rad/s^2, rad/s^3]."""
+    return tuple(f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in links)
+
+
+def slider(name: str) -> tuple[str, ...]:
+    """A varying length and its derivatives: ``slider("d")`` is d, d_dot, d_ddot,
+    d_dddot [m, m/s, m/s^2, m/s^3]."""
+    return tuple(name + s for s in ("", "_dot", "_ddot", "_dddot"))
+
+
+@dataclass(eq=False, slots=True)
 class Motion:
     """Kinematic state of a mechanism over one or many positions (SI floats).
 
-    Every kernel fills the fields its mechanism has and leaves the rest None:
-    link angles and their derivatives (``theta2`` .. ``jerk5`` [rad, rad/s,
-    rad/s^2, rad/s^3]), a slider's position and derivatives (``d`` ..
-    ``d_dddot``, ``b`` .. ``b_dddot`` [m, m/s, ...]), or a single point's
-    vectors (``R`` .. ``J``, complex). Always: ``status`` (int8 per position,
-    :mod:`accelab.solver.status`), ``condition`` (dimensionless; 1 best, 0 at a
-    toggle), ``roundoff`` (estimated relative round-off of the derivatives)
-    and ``order``, the highest derivative computed (0 position .. 3 jerk).
-    ``directions`` maps a link number ("2", "3" ...) to the cosine and sine
-    of its angle in the ground frame, which the kernel computed anyway (the
-    points of the links are built from them).
+    Each kernel declares what it computes with :func:`outputs`, a subclass
+    whose fields are exactly the kernel's: its ``OUTPUTS`` (link angles and
+    their derivatives ``theta3`` .. ``jerk4`` [rad, rad/s, rad/s^2, rad/s^3],
+    a slider's ``d`` .. ``d_dddot`` [m, m/s, ...], or a point's vectors
+    ``R`` .. ``J``, complex), the input motion it echoes (``theta2`` ..
+    ``jerk2``) and its ``EXTRA`` fields; a field not computed at the order
+    asked stays None, and a name the kernel did not declare cannot be set
+    (AttributeError: no output is ever lost silently). Results read the
+    declaration: ``OUTPUTS`` are the names they report, ``SOLVED`` those
+    the overflow check vouches for when the result is made.
+
+    Always: ``status`` (int8 per position, :mod:`accelab.solver.status`),
+    ``condition`` (dimensionless; 1 best, 0 at a toggle), ``roundoff``
+    (estimated relative round-off of the derivatives) and ``order``, the
+    highest derivative computed (0 position .. 3 jerk). ``directions`` maps a
+    link number ("2", "3" ...) to the cosine and sine of its angle in the
+    ground frame, which the kernel computed anyway (the points of the links
+    are built from them).
     """
 
-    status: object
-    condition: object = 1.0
-    roundoff: object = 0.0
+    status: Any
+    condition: Any = 1.0
+    roundoff: Any = 0.0
     order: int = 3
-    circuit: str = None
-    directions: dict = field(default_factory=dict)
-    theta2: object = None
-    theta3: object = None
-    theta4: object = None
-    theta5: object = None
-    omega2: object = None
-    omega3: object = None
-    omega4: object = None
-    omega5: object = None
-    alpha2: object = None
-    alpha3: object = None
-    alpha4: object = None
-    alpha5: object = None
-    jerk2: object = None
-    jerk3: object = None
-    jerk4: object = None
-    jerk5: object = None
-    gamma: object = None
-    d: object = None
-    d_dot: object = None
-    d_ddot: object = None
-    d_dddot: object = None
-    b: object = None
-    b_dot: object = None
-    b_ddot: object = None
-    b_dddot: object = None
-    R: object = None
-    V: object = None
-    V_t: object = None
-    V_slip: object = None
-    A: object = None
-    A_t: object = None
-    A_n: object = None
-    A_coriolis: object = None
-    A_slip: object = None
-    J: object = None
+    circuit: str | None = None
+    directions: dict[str, tuple[Any, Any]] = field(default_factory=dict)
 
-    def get(self, name):
-        """The field ``name``, or None when this mechanism has no such field
+    #: the outputs a result of this kernel reports, in their order
+    OUTPUTS: ClassVar[tuple[str, ...]] = ()
+    #: the real outputs the kernel solves its loop for (checked for overflow when a
+    #: result is made, see Result._verify); by default all of OUTPUTS
+    SOLVED: ClassVar[frozenset[str]] = frozenset()
+    #: fields beyond the inputs and OUTPUTS (a constant the result reads back ...)
+    EXTRA: ClassVar[tuple[str, ...]] = ()
+    #: every field, the kinematic ones and the bookkeeping above
+    NAMES: ClassVar[frozenset[str]] = frozenset(
+        ("status", "condition", "roundoff", "order", "circuit", "directions")
+    )
+
+    if TYPE_CHECKING:  # the fields are each kernel's declaration (outputs): any name to mypy
+
+        def __init__(self, status: Any, **values: Any) -> None: ...
+        def __getattr__(self, name: str) -> Any: ...
+        def __setattr__(self, name: str, value: Any) -> None: ...
+
+    def get(self, name: str) -> Any:
+        """The field ``name``, or None when this kernel has no such field
         (or it was not computed at this order)."""
-        return getattr(self, name, None) if name in _MOTION_FIELDS else None
+        return getattr(self, name) if name in self.NAMES else None
 
-    def keys(self):
+    def keys(self) -> list[str]:
         """The names of the fields that hold values."""
-        return [f for f in _MOTION_FIELDS if getattr(self, f) is not None]
+        return [f.name for f in fields(self) if getattr(self, f.name) is not None]
 
 
-_MOTION_FIELDS = frozenset(f.name for f in fields(Motion))
+MotionType = TypeVar("MotionType", bound=Motion)
+
+
+def outputs(cls: type[MotionType]) -> type[MotionType]:
+    """Make ``cls``, a subclass of :class:`Motion` that sets ``OUTPUTS`` (and
+    perhaps ``SOLVED``, ``EXTRA``), the record of one kernel: a dataclass
+    whose fields are the inputs, the outputs and the extras, None by default
+    (with ``__slots__``: setting an undeclared name raises)::
+
+        @outputs
+        class FourbarMotion(Motion):
+            OUTPUTS = angles(3, 4)
+    """
+    names = tuple(dict.fromkeys(INPUTS + tuple(cls.OUTPUTS) + tuple(cls.EXTRA)))
+    cls.__annotations__ = {n: Any for n in names}
+    for n in names:
+        setattr(cls, n, None)
+    if "SOLVED" not in vars(cls):
+        cls.SOLVED = frozenset(cls.OUTPUTS)
+    cls.NAMES = Motion.NAMES | frozenset(names)
+    return dataclass(eq=False, slots=True)(cls)
 
 
 def rotate(x, y, cos1, sin1):
@@ -362,7 +390,8 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
                 k: [np.empty(n) if per_position(x) else x for x in v]
                 for k, v in part.directions.items()
             }
-            out = Motion(**{f: (None if f in full else getattr(part, f)) for f in _MOTION_FIELDS})
+            names = [f.name for f in fields(part)]
+            out = type(part)(**{k: (None if k in full else getattr(part, k)) for k in names})
         for k, v in full.items():
             v[sl] = getattr(part, k)
         for k, v in directions.items():

@@ -28,18 +28,27 @@ from .common import (
     OK,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     triangle_angles,
     without_float_warnings,
 )
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
+
+
+@outputs
+class FiveBarMotion(Motion):
+    """What :func:`solve` returns: links 3, 4 and the geared link 5, position to jerk."""
+
+    OUTPUTS = angles(3, 4, 5)
 
 
 @without_float_warnings
@@ -79,7 +88,7 @@ def solve(
 
     Returns
     -------
-    Motion
+    FiveBarMotion
         theta3, theta4, theta5 [rad]; omega3..5; alpha3..5; jerk3..5;
         ``status``; ``condition`` = |sin(theta3 - theta4)|; ``roundoff``
         (see :func:`accelab.solver.kernels.fourbar.solve`).
@@ -118,7 +127,7 @@ def solve(
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
-    out = Motion(
+    out = FiveBarMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

@@ -66,16 +66,26 @@ from .common import (
     ROUNDOFF_GAIN,
     SINGULAR,
     Motion,
+    angles,
     as_input,
     classify,
     length_unit,
     masked,
+    outputs,
     pieces,
     same_shapes,
     without_float_warnings,
 )
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
+
+
+@outputs
+class FourbarMotion(Motion):
+    """What :func:`solve` returns: links 3 and 4, position to jerk."""
+
+    OUTPUTS = angles(3, 4)
+
 
 #: fewer positions than this are solved by plain whole-array expressions, whose
 #: fixed cost per call is lower (the same formulas: the same bits); from here
@@ -164,7 +174,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
 
     Returns
     -------
-    Motion
+    FourbarMotion
         theta3, theta4 [rad]; omega3, omega4 [rad/s]; alpha3, alpha4
         [rad/s^2]; jerk3, jerk4 [rad/s^3]; ``status``; ``condition``
         (|sin(theta3 - theta4)|, the sine of the transmission angle) and
@@ -211,7 +221,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
     theta4 = np.arctan2(s4, c4)
     if turned:
         theta3, theta4 = theta3 + theta1, theta4 + theta1
-    out = Motion(
+    out = FourbarMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,
@@ -425,7 +435,7 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
         np.multiply(p4, w4, out=t)
         j4 += t
     res = {k: v.reshape(shape) for k, v in res.items()}
-    out = Motion(
+    out = FourbarMotion(
         order=order,
         theta2=theta2,
         theta3=res["theta3"],

@@ -35,19 +35,31 @@ from .common import (
     OK,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     scale_lengths,
+    slider,
     where,
     without_float_warnings,
 )
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
+
+
+@outputs
+class InvertedSliderCrankMotion(Motion):
+    """What :func:`solve` returns: links 3 and 4 and the block's position b along the
+    slide line, position to jerk; ``gamma`` echoed."""
+
+    OUTPUTS = angles(3, 4) + slider("b")
+    EXTRA = ("gamma",)
 
 
 @without_float_warnings
@@ -73,7 +85,7 @@ def solve(
 
     Returns
     -------
-    Motion
+    InvertedSliderCrankMotion
         theta3, theta4 [rad] (theta3 = theta4 + gamma); omega3 = omega4;
         alpha3 = alpha4; jerk3 = jerk4; b [m], b_dot, b_ddot, b_dddot;
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
@@ -83,7 +95,7 @@ def solve(
     out = _solve(
         a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     )
-    return scale_lengths(out, ("b", "b_dot", "b_ddot", "b_dddot"), unit)
+    return scale_lengths(out, slider("b"), unit)
 
 
 def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -123,7 +135,7 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
-    out = Motion(
+    out = InvertedSliderCrankMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

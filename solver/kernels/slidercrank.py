@@ -25,19 +25,30 @@ from .common import (
     OK,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     scale_lengths,
+    slider,
     where,
     without_float_warnings,
 )
 
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
+
+
+@outputs
+class SliderCrankMotion(Motion):
+    """What :func:`solve` returns: the connecting rod (link 3) and the slider's position d,
+    position to jerk."""
+
+    OUTPUTS = angles(3) + slider("d")
 
 
 @without_float_warnings
@@ -61,7 +72,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="o
 
     Returns
     -------
-    Motion
+    SliderCrankMotion
         theta3 [rad], omega3, alpha3, jerk3; d [m] (slider position along the
         slide axis from O2), d_dot [m/s], d_ddot [m/s^2], d_dddot [m/s^3];
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
@@ -71,7 +82,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="o
     out = _solve(
         a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     )
-    return scale_lengths(out, ("d", "d_dot", "d_ddot", "d_dddot"), unit)
+    return scale_lengths(out, slider("d"), unit)
 
 
 def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -101,7 +112,7 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
-    out = Motion(
+    out = SliderCrankMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

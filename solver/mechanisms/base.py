@@ -83,7 +83,7 @@ def check_order(order):
     return int(order)
 
 
-#: (mechanism class, order) -> the kernel outputs of that order (see Result._verify)
+#: (kernel's Motion class, order) -> its solved outputs of that order (see Result._verify)
 _TOPS = {}
 
 
@@ -156,7 +156,7 @@ class Result(Kinematics):
         else:
             for name in names:
                 self._check_finite(name, getattr(motion, name))
-        self._verified = self._mech._solved
+        self._verified = type(motion).SOLVED
 
     def _check_finite(self, name, value):
         if self._scalar:
@@ -447,9 +447,12 @@ class Mechanism:
     Subclasses name their declaration in :data:`accelab.solver.parameters.PARAMETERS`
     (``name``) and declare ``_points`` (point -> (base point or pivot key,
     length parameter, theta key, offset)), ``_pivots`` (fixed pins),
-    ``_outputs`` and a ``solve``/``solve_si`` pair: ``solve`` takes
-    Quantities or text and converts them to SI once; ``solve_si`` takes SI
-    floats (what the batch format has already read) and calls the kernel.
+    ``_point_outputs`` (the outputs they build from the points, beyond the
+    kernel's own: the kernel's record declares those, see
+    :func:`accelab.solver.kernels.common.outputs`) and a ``solve``/``solve_si``
+    pair: ``solve`` takes Quantities or text and converts them to SI once;
+    ``solve_si`` takes SI floats (what the batch format has already read) and
+    calls the kernel.
     """
 
     name = None
@@ -457,12 +460,8 @@ class Mechanism:
     _relative = {}  # "XY" -> (length parameter, theta key, offset) for X, Y on one link
     _link_bases = {}  # link number -> the pin a point on it is measured from
     _pivots = ("O2",)
-    _outputs = ()
-    #: the real outputs a kernel computes (links' angles and derivatives, sliders)
-    _solved = frozenset(
-        [f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
-        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")]
-    )
+    #: outputs built from the points (R_A, A_BA ...), reported after the kernel's
+    _point_outputs = ()
 
     def __init__(self, **geometry):
         decl = self.declaration()
@@ -586,8 +585,9 @@ class Mechanism:
 
     def outputs(self, result):
         """Names of every output a ``result`` of this mechanism can report, in
-        the order of docs/conventions.md#outputs (SI units: m, rad, s)."""
-        return self._outputs
+        the order of docs/conventions.md#outputs (SI units: m, rad, s): those its
+        kernel declares (``OUTPUTS`` of the kernel's Motion), then the points'."""
+        return type(result._motion).OUTPUTS + self._point_outputs
 
     # --- solving ----------------------------------------------------------
     def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit=None, order=3):
@@ -676,12 +676,12 @@ class Mechanism:
         if scalar and raise_errors and motion.status != OK:
             self._raise(motion, inputs)
         # an overflow of the kernel's outputs is refused now, not when read
-        key = (type(self), motion.order)
+        key = (type(motion), motion.order)
         top = _TOPS.get(key)
         if top is None:
             top = _TOPS[key] = sorted(
                 n
-                for n in self._solved
+                for n in type(motion).SOLVED
                 if order_of(n) == motion.order and getattr(motion, n) is not None
             )
         result._verify(top)

@@ -36,19 +36,7 @@ class GearedFiveBar(Mechanism):
     }
     _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "C", 5: "O5"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "theta5",
-        "omega3",
-        "omega4",
-        "omega5",
-        "alpha3",
-        "alpha4",
-        "alpha5",
-        "jerk3",
-        "jerk4",
-        "jerk5",
+    _point_outputs = (
         "R_A",
         "R_B",
         "R_C",

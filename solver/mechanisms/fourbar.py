@@ -29,15 +29,7 @@ class FourBar(Mechanism):
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "omega3",
-        "omega4",
-        "alpha3",
-        "alpha4",
-        "jerk3",
-        "jerk4",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",
@@ -48,7 +40,7 @@ class FourBar(Mechanism):
         "J_A",
         "J_B",
     )
-    _point_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
+    _coupler_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
 
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
@@ -120,7 +112,8 @@ class FourBar(Mechanism):
     def outputs(self, result):
         """The fourbar's outputs, with those of the coupler point P (``R_P``,
         ``V_P``, ``A_P``, ``A_PA``, ``J_P``) when the mechanism has one."""
-        return self._outputs + (self._point_outputs if result.has_point("P") else ())
+        coupler = self._coupler_outputs if result.has_point("P") else ()
+        return super().outputs(result) + coupler
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1

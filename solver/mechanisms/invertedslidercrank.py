@@ -38,19 +38,7 @@ class InvertedSliderCrank(Mechanism):
     _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "omega3",
-        "omega4",
-        "alpha3",
-        "alpha4",
-        "jerk3",
-        "jerk4",
-        "b",
-        "b_dot",
-        "b_ddot",
-        "b_dddot",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",

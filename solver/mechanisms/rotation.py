@@ -18,7 +18,6 @@ class RotatingPoint(Mechanism):
     """
 
     name = "rotation"
-    _outputs = ("R", "V", "A", "A_t", "A_n", "J")
 
     def _kernel(self, motion, circuit, order):
         return kernel.rotating_point(
@@ -41,7 +40,6 @@ class SlottedLink(Mechanism):
     """
 
     name = "slotted"
-    _outputs = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
 
     def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0, jerk2=0):
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)

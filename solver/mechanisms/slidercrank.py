@@ -33,15 +33,7 @@ class SliderCrank(Mechanism):
     name = "slidercrank"
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
-    _outputs = (
-        "theta3",
-        "omega3",
-        "alpha3",
-        "jerk3",
-        "d",
-        "d_dot",
-        "d_ddot",
-        "d_dddot",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",
