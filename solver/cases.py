@@ -4,7 +4,7 @@ A case is a dict like ``{"mechanism": "fourbar", "a": "2 in", ..., "theta2":
 "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}``: the mechanism, its
 quantities as text with units (or Quantities), and optionally ``circuit``.
 :func:`read_case` checks it against the mechanism's declared parameters
-(:mod:`accelab.solver.parameters`) and converts every quantity to an SI float, the
+(its entry of :mod:`accelab.solver.registry`) and converts every quantity to an SI float, the
 only conversion on its way to the kernels; the command line reads its
 ``name=value`` arguments into the same dict.
 """
@@ -12,7 +12,7 @@ only conversion on its way to the kernels; the command line reads its
 from dataclasses import dataclass, field
 
 from .errors import InvalidInput
-from .parameters import BATCH_MECHANISMS, PARAMETERS
+from .registry import BATCH_MECHANISMS, PARAMETERS
 from .units import parse_quantity, to_si
 
 __all__ = ["Case", "read_case", "MECHANISM_NAMES"]

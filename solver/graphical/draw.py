@@ -32,6 +32,7 @@ from matplotlib.patches import FancyArrowPatch, Polygon
 from matplotlib.path import Path
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
+from ..registry import link_symbols
 from . import style
 from .labels import LabelLayer, labels_of
 
@@ -65,27 +66,6 @@ _HEAD = Path(
     [(0, 0), (-1, 0.36), (-0.82, 0), (-1, -0.36), (0, 0)],
     [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY],
 )
-#: the chapter's symbol of each link of each mechanism (for schematic figures)
-LINK_SYMBOLS = {
-    "fourbar": {
-        ("O2", "A"): "a",
-        ("A", "B"): "b",
-        ("O4", "B"): "c",
-        ("O2", "O4"): "d",
-        ("A", "P"): "p",
-    },
-    "slidercrank": {("O2", "A"): "a", ("A", "B"): "b"},
-    "invertedslidercrank": {("O2", "A"): "a", ("O4", "B"): "c", ("O2", "O4"): "d"},
-    "fivebar": {
-        ("O2", "A"): "a",
-        ("A", "B"): "b",
-        ("C", "B"): "c",
-        ("O5", "C"): "d",
-        ("O2", "O5"): "f",
-    },
-    "rotation": {("O2", "P"): "p"},
-    "slotted": {},
-}
 __all__ = [
     "draw_linkage",
     "draw_polygon",
@@ -730,9 +710,8 @@ def draw_linkage(
                 if main:
                     obstacles.extend(z0 + (z1 - z0) * k / 40 for k in range(41))
             if symbols and len(link) == 2:
-                sym = LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(link)) or LINK_SYMBOLS.get(
-                    con.mechanism, {}
-                ).get(tuple(reversed(link)))
+                table = link_symbols(con.mechanism)  # the registry's
+                sym = table.get(tuple(link)) or table.get(tuple(reversed(link)))
                 if sym:
                     labels.add_vector(
                         f"${sym}$", zs[0], zs[1] - zs[0], color="#333333", priority=0.5

@@ -10,7 +10,8 @@ import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
 from ..kernels import MAX_ROUNDOFF, NOT_ASSEMBLABLE, OK, points
-from ..parameters import MOTION, PARAMETERS
+from ..parameters import MOTION
+from ..registry import PARAMETERS
 from ..results import Kinematics
 from ..units import SI_UNITS, parse_quantity, quantity, show, to_si
 
@@ -444,7 +445,7 @@ class PointMotion:
 class Mechanism:
     """Base of the unit-aware mechanisms.
 
-    Subclasses name their declaration in :data:`accelab.solver.parameters.PARAMETERS`
+    Subclasses name their entry of the registry, :data:`accelab.solver.registry.REGISTRY`
     (``name``) and declare ``_points`` (point -> (base point or pivot key,
     length parameter, theta key, offset)), ``_pivots`` (fixed pins),
     ``_point_outputs`` (the outputs they build from the points, beyond the
@@ -498,7 +499,8 @@ class Mechanism:
 
     @classmethod
     def declaration(cls):
-        """This mechanism's parameters (:class:`accelab.solver.parameters.Declaration`)."""
+        """This mechanism's parameters (:class:`accelab.solver.parameters.Declaration`), as its
+        entry of the registry declares them."""
         return PARAMETERS[cls.name]
 
     @classmethod
