@@ -10,7 +10,8 @@ documentation site (``docs/``). They are clients of the installed packages:
 :mod:`accelab.course.animation` for the mechanisms that move, and
 ``accelab.exercises.practice`` for self-study problems with instant feedback.
 ``errata.md`` lists the misprints of the chapter the course found, and
-``FAMILIES.md`` which notebook teaches each graded exercise family.
+``FAMILIES.md`` (written from the families' registry, :mod:`accelab.course.families`)
+which notebook teaches each graded exercise family.
 """
 
 from pathlib import Path
@@ -26,5 +27,10 @@ def notebooks():
 
 
 def pages():
-    """The course's markdown pages (the errata, the families table)."""
-    return sorted(p for p in HERE.glob("*.md"))
+    """The course's Markdown pages, name -> text: the errata, and the families table
+    written from the registry (:func:`accelab.course.families.page`)."""
+    from . import families
+
+    out = {p.name: p.read_text() for p in sorted(HERE.glob("*.md"))}
+    out[families.NAME] = families.page()
+    return out

@@ -31,6 +31,7 @@ import pytest
 
 import accelab.course
 from accelab.course import cli as course_cli
+from accelab.exercises.families import REGISTRY
 from docs.notebooks import problems
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -41,17 +42,8 @@ RUN = ROOT / "build" / "course-run"  # the kernels' working folder: not course/
 BUDGET = 20.0  # s per notebook: the course's execution budget (a warning)
 CELL_TIMEOUT = 300  # s
 MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
-#: graded exercise families (exercises/families) and their sections of the chapter
-FAMILIES = (
-    "rotation",
-    "fourbar",
-    "coupler",
-    "slidercrank",
-    "coriolis",
-    "fivebar",
-    "jerk",
-    "tolerance",
-)
+#: graded exercise families, from their registry
+FAMILIES = tuple(REGISTRY)
 
 NOTEBOOKS = accelab.course.notebooks()
 
@@ -245,9 +237,7 @@ def test_course_command_writes_notebooks_a_student_can_run(tmp_path):
     args = parser.parse_args(["course", "--out", str(out)])
     assert args.func(args) == 0
     names = sorted(p.name for p in out.iterdir())
-    assert names == sorted(
-        [p.stem + ".ipynb" for p in NOTEBOOKS] + [p.name for p in accelab.course.pages()]
-    )
+    assert names == sorted([p.stem + ".ipynb" for p in NOTEBOOKS] + list(accelab.course.pages()))
     import nbformat
 
     nb = nbformat.read(out / NOTEBOOKS[0].with_suffix(".ipynb").name, as_version=4)
@@ -343,7 +333,7 @@ def test_topic_notebooks_practise_and_name_their_families(source):
 
 
 def test_families_page_maps_every_family_to_a_notebook():
-    page = (COURSE / "FAMILIES.md").read_text()
+    page = accelab.course.pages()["FAMILIES.md"]
     stems = {p.stem for p in NOTEBOOKS}
     for family in FAMILIES:
         row = next((line for line in page.splitlines() if line.startswith(f"| `{family}`")), None)
