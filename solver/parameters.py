@@ -20,7 +20,7 @@ Everything else (the link lengths, ``theta2``, ``omega2``, the inverted
 slider-crank's ``gamma``, the fivebar's ``lam`` and ``phi``) must be given.
 """
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 __all__ = ["Parameter", "Declaration", "MOTION", "THETA1", "OPEN_CROSSED", "length", "angle"]
 
@@ -33,7 +33,7 @@ class Parameter(NamedTuple):
     kind: str
     required: bool
     positive: bool
-    default: object
+    default: Any
     meaning: str
 
 
@@ -42,24 +42,33 @@ class Declaration(NamedTuple):
     (extra arguments of ``solve``: the coupler point, or the slotted link's
     block) and its ``circuits`` (empty: it has one assembly)."""
 
-    geometry: tuple
-    point: tuple
-    circuits: tuple
+    geometry: tuple[Parameter, ...]
+    point: tuple[Parameter, ...]
+    circuits: tuple[str, ...]
 
-    def every(self):
+    def every(self) -> tuple[Parameter, ...]:
         """Geometry, point and motion parameters, in that order."""
         return self.geometry + self.point + MOTION
 
-    def names(self):
+    def names(self) -> list[str]:
+        """The names of :meth:`every` parameter."""
         return [p.name for p in self.every()]
 
 
-def length(name, meaning, positive=True, required=True, default=None):
+def length(
+    name: str,
+    meaning: str,
+    positive: bool = True,
+    required: bool = True,
+    default: float | None = None,
+) -> Parameter:
     """A length parameter [m]: positive (a link's length) and required unless told."""
     return Parameter(name, "length", required, positive, default, meaning)
 
 
-def angle(name, meaning, required=True, default=None):
+def angle(
+    name: str, meaning: str, required: bool = True, default: float | None = None
+) -> Parameter:
     """An angle parameter [rad], required unless told."""
     return Parameter(name, "angle", required, False, default, meaning)
 

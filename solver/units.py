@@ -22,6 +22,7 @@ import math
 import numbers
 import re
 from functools import lru_cache
+from typing import Any, TypeAlias
 
 import numpy as np
 import pint
@@ -39,11 +40,19 @@ __all__ = [
     "SI_UNITS",
     "MAX_TEXT",
     "show",
+    "QuantityLike",
+    "SIValue",
 ]
+
+#: what the unit-aware API reads as a quantity: a Quantity, text with units
+#: ("30 deg", "10 rad/s"), or a bare number where no unit is needed (a ratio, zero)
+QuantityLike: TypeAlias = pint.Quantity | str | float | int | np.ndarray
+#: a value in SI units, unit-free: a float, a complex number (a vector x + jy) or an array
+SIValue: TypeAlias = float | complex | np.ndarray
 
 #: The package's one pint registry: every Quantity that accelab reads or
 #: returns belongs to it (a Quantity of another registry is converted once).
-ureg = pint.UnitRegistry()
+ureg: pint.UnitRegistry = pint.UnitRegistry()
 ureg.define("rev = revolution")  # '10 rev/s', the unambiguous way to say 10 Hz of a crank
 pint.set_application_registry(ureg)
 #: ``Q_(value, unit)``: a Quantity of :data:`ureg`, e.g. ``Q_(30, "deg")``.
@@ -83,7 +92,7 @@ _POWER = re.compile(r"(\*\*|\^)")
 _EXPONENT = re.compile(r"\s*\(?\s*[+-]?\s*\d{1,2}(\.\d*)?\s*\)?")
 
 
-def show(value):
+def show(value: Any) -> str:
     """The user's value as it reads in a message: text quoted, a long one cut
     (with its length), a Quantity or number as written."""
     if isinstance(value, str):
@@ -152,7 +161,7 @@ def _reason(exc):
     return "it is not a number followed by units"
 
 
-def parse_quantity(value, kind, name):
+def parse_quantity(value: QuantityLike, kind: str, name: str) -> pint.Quantity | float | np.ndarray:
     """Read ``value`` as a quantity of ``kind``: the one reading rule of the package.
 
     Parameters
@@ -321,7 +330,9 @@ def _check_units(q, name, kind, value):
         raise InvalidInput(f"{name} needs units. Example: {name}={example}", name)
 
 
-def to_si(value, name, kind, *, positive=False, nonzero=False):
+def to_si(
+    value: QuantityLike, name: str, kind: str, *, positive: bool = False, nonzero: bool = False
+) -> float | np.ndarray:
     """Convert ``value`` to SI floats (a float or a float ndarray).
 
     Parameters
@@ -355,7 +366,7 @@ def _text_to_si(value, name, kind, positive, nonzero):
 
 #: (unit items, kind) -> factor to SI, for the units of Quantities already read once
 #: by :func:`parse_quantity` (a Quantity's checks depend only on its units and kind)
-_ACCEPTED = {}
+_ACCEPTED: dict[tuple[Any, str], float] = {}
 
 
 def _to_si(value, name, kind, positive, nonzero):
@@ -376,9 +387,9 @@ def _to_si(value, name, kind, positive, nonzero):
             and not nonzero
         ):
             with np.errstate(over="ignore"):
-                out = mag * factor if factor != 1.0 else mag
-            if np.isfinite(out).all():
-                return out
+                scaled = mag * factor if factor != 1.0 else mag
+            if np.isfinite(scaled).all():
+                return scaled
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
             raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
@@ -455,6 +466,6 @@ def _not_finite(name, value, example, si):
     return f"{name} must be finite (got {show(value)}). Example: {name}={example}"
 
 
-def quantity(si_value, kind):
+def quantity(si_value: SIValue, kind: str) -> pint.Quantity:
     """Wrap an SI float or array (real or complex) as one Quantity of :data:`ureg`."""
     return Q_(si_value, _SI_CONTAINERS[kind])

@@ -24,6 +24,7 @@ as the caption, so a notebook can walk through the method.
 import math
 import re
 import textwrap
+from typing import Any
 
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
@@ -386,6 +387,7 @@ def _inset_spot(ax, region, box, obstacles, frac):
         cost = inside + (10**6 if covers else 0)
         if best is None or cost < best[0]:
             best = (cost, (cx, cy, w, h))
+    assert best is not None  # the loop tries at least one spot
     return best[1], best[0]
 
 
@@ -547,7 +549,7 @@ def _beside(arrows, segments, size):
     link (or slide) it would otherwise lie on, and beside another vector along
     the same line from the same point."""
     offsets = []
-    taken = {}
+    taken: dict[Any, Any] = {}
     tol = 1e-9 * size
     for start, v in arrows:
         off = 0j
@@ -685,7 +687,7 @@ def draw_linkage(
         d = d / abs(d)
         guides.append((p0 * lf - 10 * size * d, p0 * lf + 10 * size * d))
     offsets = _beside(drawn, guides, size)
-    obstacles = []
+    obstacles: list[complex] = []
 
     def paint(target, labels, region=None, tiny=()):
         """Draw the scene on ``target``; the main axes or a magnifying inset."""
@@ -877,7 +879,7 @@ def draw_polygon(
     box = _frame(ax, ends, 0.14 * size, strip=0.12 if scale_bar else 0.0, box=box)
     span = max(box[1] - box[0], box[3] - box[2])
     ppd = _pts_per_data(ax)
-    obstacles = []
+    obstacles: list[complex] = []
 
     def paint(target, labels, region=None, tiny=()):
         main = region is None

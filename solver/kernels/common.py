@@ -22,14 +22,20 @@ Each helper returns the (x, y) components of such a term.
 
 import functools
 import math
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, fields
-from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, ParamSpec, TypeAlias, TypeGuard, TypeVar
 
 import numpy as np
 
 from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 
 EPS = float(np.finfo(float).eps)
+
+#: what the kernels take and give: a float, or an array of floats (SI: m, rad, s)
+Floats: TypeAlias = float | np.ndarray
+P = ParamSpec("P")
+R = TypeVar("R")
 
 #: The closed-form kernels refuse (report ``singular``) a position where the
 #: estimated relative round-off of their outputs exceeds this. Near a limit
@@ -55,7 +61,7 @@ MAX_ROUNDOFF = 1e-6
 ROUNDOFF_GAIN = 4.0
 
 
-def classify(gap, span):
+def classify(gap: Any, span: float) -> tuple[Any, Any]:
     """Status and estimated relative round-off of positions from their gap.
 
     Parameters
@@ -81,8 +87,8 @@ def classify(gap, span):
     if np.ndim(gap) == 0:  # one position: plain floats are ten times faster
         gap = float(gap)
         roundoff = ROUNDOFF_GAIN * EPS * span / gap if gap > 0 else math.inf
-        status = NOT_ASSEMBLABLE if not gap > -tol else OK if roundoff <= MAX_ROUNDOFF else SINGULAR
-        return np.int8(status), roundoff
+        code = NOT_ASSEMBLABLE if not gap > -tol else OK if roundoff <= MAX_ROUNDOFF else SINGULAR
+        return np.int8(code), roundoff
     if gap.size and gap.min() > 0.0:  # every position closes (the usual sweep): fewer passes
         roundoff = ROUNDOFF_GAIN * EPS * span / gap
         if roundoff.max() <= MAX_ROUNDOFF:
@@ -96,7 +102,7 @@ def classify(gap, span):
     return status, roundoff
 
 
-def length_unit(*lengths):
+def length_unit(*lengths: Floats) -> float:
     """A power of two near the longest of ``lengths`` [m] (1.0 if none is
     finite and non-zero).
 
@@ -119,7 +125,7 @@ def length_unit(*lengths):
     return math.ldexp(1.0, math.frexp(m)[1])
 
 
-def scale_lengths(motion, names, unit):
+def scale_lengths(motion: "MotionType", names: Iterable[str], unit: float) -> "MotionType":
     """Multiply the outputs ``names`` of ``motion`` (a Motion; lengths and their
     derivatives) by ``unit`` [m], the :func:`length_unit` the kernel divided by;
     returns ``motion``."""
@@ -131,7 +137,7 @@ def scale_lengths(motion, names, unit):
     return motion
 
 
-def as_input(x):
+def as_input(x: Any) -> Floats:
     """A float for a scalar, else a float ndarray (the kernels keep a single
     position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""
     if type(x) is float:
@@ -154,14 +160,14 @@ def masked(bad, x):
     return np.where(bad, np.nan, x) if bad.any() else x
 
 
-def without_float_warnings(func):
+def without_float_warnings(func: Callable[P, R]) -> Callable[P, R]:
     """Run a kernel with numpy's floating-point warnings off: NaN marks the
     positions that do not assemble, and the status says so; an overflow
     (inputs too large for float64's range) is refused by the unit-aware layer
     and the batch, which check the outputs they give."""
 
     @functools.wraps(func)
-    def wrapper(*args, **kwargs):
+    def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
 
@@ -340,12 +346,14 @@ def pieces(n):
     return [slice(start, min(start + PIECE, n)) for start in range(0, n, PIECE)]
 
 
-def piecewise(theta2, motion, others):
+def piecewise(
+    theta2: Floats, motion: Iterable[Any], others: Iterable[Any]
+) -> TypeGuard[np.ndarray]:
     """Whether :func:`in_pieces` takes a sweep: theta2 an array of at least
     :data:`MIN_PIECEWISE` positions, each of ``motion`` (omega2, alpha2,
     jerk2) a scalar or an array of theta2's shape, and ``others`` (lengths,
     angles) scalars."""
-    if type(theta2) is float or theta2.size < max(MIN_PIECEWISE, PIECE + 1):
+    if not isinstance(theta2, np.ndarray) or theta2.size < max(MIN_PIECEWISE, PIECE + 1):
         return False
     return same_shapes(theta2, motion, others)
 
@@ -358,7 +366,9 @@ def same_shapes(theta2, motion, others):
     )
 
 
-def in_pieces(solve, theta2, omega2, alpha2, jerk2):
+def in_pieces(
+    solve: Callable[..., MotionType], theta2: np.ndarray, omega2: Any, alpha2: Any, jerk2: Any
+) -> MotionType:
     """A kernel's Motion over a long sweep, solved :data:`PIECE` positions at a time.
 
     ``solve(theta2, omega2, alpha2, jerk2)`` solves one piece (the same
@@ -372,37 +382,40 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
     n = flat.size
     motion = [np.ravel(x) if np.ndim(x) else x for x in (omega2, alpha2, jerk2)]
     inputs = {"theta2": theta2, "omega2": omega2, "alpha2": alpha2, "jerk2": jerk2}
-    out = full = directions = None
-    for sl in pieces(n):
-        part = solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
-        if out is None:
-            one_each = (min(n, PIECE),)  # the shape of a field with one value per position
 
-            def per_position(v, one_each=one_each):
-                return isinstance(v, np.ndarray) and v.shape == one_each
+    def solved(sl):
+        return solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
 
-            full = {
-                k: np.empty(n, getattr(part, k).dtype)
-                for k in part.keys()
-                if k not in inputs and per_position(getattr(part, k))
-            }
-            directions = {
-                k: [np.empty(n) if per_position(x) else x for x in v]
-                for k, v in part.directions.items()
-            }
-            names = [f.name for f in fields(part)]
-            out = type(part)(**{k: (None if k in full else getattr(part, k)) for k in names})
+    slices = pieces(n)
+    first = solved(slices[0])
+    one_each = (min(n, PIECE),)  # the shape of a field with one value per position
+
+    def per_position(v):
+        return isinstance(v, np.ndarray) and v.shape == one_each
+
+    full = {
+        k: np.empty(n, getattr(first, k).dtype)
+        for k in first.keys()
+        if k not in inputs and per_position(getattr(first, k))
+    }
+    gathered = {
+        k: [np.empty(n) if per_position(x) else x for x in v] for k, v in first.directions.items()
+    }
+    names = [f.name for f in fields(first)]
+    out = type(first)(**{k: (None if k in full else getattr(first, k)) for k in names})
+    for sl in slices:
+        part = first if sl is slices[0] else solved(sl)
         for k, v in full.items():
             v[sl] = getattr(part, k)
-        for k, v in directions.items():
-            for whole, piece in zip(v, part.directions[k]):
+        for k, parts in gathered.items():
+            for whole, piece in zip(parts, part.directions[k]):
                 if whole is not piece:
                     whole[sl] = piece
     for k, v in full.items():
         setattr(out, k, v.reshape(shape))
     out.directions = {
         k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
-        for k, v in directions.items()
+        for k, v in gathered.items()
     }
     for k, v in inputs.items():
         if getattr(out, k) is not None:

@@ -26,6 +26,7 @@ import numpy as np
 
 from .common import (
     OK,
+    Floats,
     Motion,
     acc_term,
     angles,
@@ -53,21 +54,21 @@ class FiveBarMotion(Motion):
 
 @without_float_warnings
 def solve(
-    a,
-    b,
-    c,
-    d,
-    f,
-    lam,
-    phi,
-    theta2,
-    omega2,
-    alpha2=0.0,
-    jerk2=0.0,
-    theta1=0.0,
-    circuit="open",
-    order=3,
-):
+    a: float,
+    b: float,
+    c: float,
+    d: float,
+    f: float,
+    lam: float,
+    phi: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> FiveBarMotion:
     """Geared fivebar kinematics from position to jerk.
 
     Parameters
@@ -100,7 +101,9 @@ def solve(
     a, b, c, d, f = a / unit, b / unit, c / unit, d / unit, f / unit
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
         return in_pieces(
-            lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: solve(
+                a, b, c, d, f, lam, phi, t2, w2, a2, j2, theta1, circuit, order
+            ),
             theta2,
             omega2,
             alpha2,

@@ -65,6 +65,7 @@ from .common import (
     OK,
     ROUNDOFF_GAIN,
     SINGULAR,
+    Floats,
     Motion,
     angles,
     as_input,
@@ -153,7 +154,19 @@ def _coefficients(a, omega2, alpha2, jerk2):
 
 
 @without_float_warnings
-def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
+def solve(
+    a: float,
+    b: float,
+    c: float,
+    d: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> FourbarMotion:
     """Fourbar kinematics from position to jerk.
 
     Parameters
@@ -193,7 +206,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
     unit = length_unit(a, b, c, d)  # scale-free: lengths near 1, exactly
     a, b, c, d = a / unit, b / unit, c / unit, d / unit
     if (
-        type(theta2) is not float
+        isinstance(theta2, np.ndarray)
         and theta2.size >= MIN_IN_PLACE
         and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))
     ):

@@ -33,6 +33,7 @@ import numpy as np
 from .common import (
     EPS,
     OK,
+    Floats,
     Motion,
     acc_term,
     angles,
@@ -64,8 +65,18 @@ class InvertedSliderCrankMotion(Motion):
 
 @without_float_warnings
 def solve(
-    a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3
-):
+    a: float,
+    c: float,
+    d: float,
+    gamma: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> InvertedSliderCrankMotion:
     """Inverted slider-crank kinematics from position to jerk.
 
     Parameters
@@ -105,7 +116,7 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
         return in_pieces(
-            lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: _solve(a, c, d, gamma, t2, w2, a2, j2, theta1, circuit, order),
             theta2,
             omega2,
             alpha2,

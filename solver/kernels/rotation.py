@@ -15,7 +15,7 @@ and the jerk of the same variable-length vector (see common.py).
 
 import numpy as np
 
-from .common import OK, Motion, outputs, without_float_warnings
+from .common import OK, Floats, Motion, outputs, without_float_warnings
 
 
 @outputs
@@ -35,7 +35,9 @@ class SlotMotion(Motion):
 
 
 @without_float_warnings
-def rotating_point(p, theta, omega, alpha=0.0, jerk=0.0):
+def rotating_point(
+    p: Floats, theta: Floats, omega: Floats, alpha: Floats = 0.0, jerk: Floats = 0.0
+) -> RotatingPointMotion:
     """Position to jerk of a point at radius ``p`` [m] on a link turning about
     the origin. Returns complex arrays R [m], V [m/s], A_t, A_n, A [m/s^2],
     J [m/s^3] in a :class:`RotatingPointMotion` (every position ``OK``: a point in rotation has no
@@ -61,7 +63,16 @@ def _all_ok(x):
 
 
 @without_float_warnings
-def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.0):
+def slotted_link(
+    theta: Floats,
+    omega: Floats,
+    alpha: Floats,
+    p: Floats,
+    p_dot: Floats,
+    p_ddot: Floats = 0.0,
+    p_dddot: Floats = 0.0,
+    jerk: Floats = 0.0,
+) -> SlotMotion:
     """A block sliding along a rotating link (Figure 7-7, eq. 7.19).
 
     Parameters

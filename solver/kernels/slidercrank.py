@@ -23,6 +23,7 @@ import numpy as np
 from .common import (
     EPS,
     OK,
+    Floats,
     Motion,
     acc_term,
     angles,
@@ -52,7 +53,18 @@ class SliderCrankMotion(Motion):
 
 
 @without_float_warnings
-def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
+def solve(
+    a: float,
+    b: float,
+    c: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> SliderCrankMotion:
     """Slider-crank kinematics from position to jerk.
 
     Parameters
@@ -92,7 +104,7 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
         return in_pieces(
-            lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: _solve(a, b, c, t2, w2, a2, j2, theta1, circuit, order),
             theta2,
             omega2,
             alpha2,

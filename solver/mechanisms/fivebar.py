@@ -28,6 +28,15 @@ class GearedFiveBar(Mechanism):
     """
 
     name = "fivebar"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _b: float
+    _c: float
+    _d: float
+    _f: float
+    _lam: float
+    _phi: float
+    _theta1: float
     _pivots = ("O2", "O5")
     _points = {
         "A": ("O2", "a", "theta2", 0.0),

@@ -35,6 +35,12 @@ class InvertedSliderCrank(Mechanism):
     """
 
     name = "invertedslidercrank"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _c: float
+    _d: float
+    _gamma: float
+    _theta1: float
     _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}

@@ -31,6 +31,11 @@ class SliderCrank(Mechanism):
     """
 
     name = "slidercrank"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _b: float
+    _c: float
+    _theta1: float
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
     _point_outputs = (
