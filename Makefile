@@ -39,8 +39,9 @@ typecheck: $(LINT_STAMP)
 	$(BIN)/python .ci/layout.py build/typecheck >/dev/null
 	$(BIN)/mypy
 
+# in parallel on every core (pytest-xdist); pyproject's addopts keep shared builds in one worker
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n auto
 
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -m "not slow"

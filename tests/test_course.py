@@ -46,6 +46,8 @@ MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
 FAMILIES = tuple(REGISTRY)
 
 NOTEBOOKS = accelab.course.notebooks()
+#: one worker executes the notebooks, once, then builds the site from them (tests/test_docs.py)
+pytestmark = pytest.mark.xdist_group("course")
 
 _executed = {}  # stem -> (path of the executed notebook, seconds) or the exception
 

@@ -28,7 +28,7 @@ from accelab.exercises.grader.sandbox import check_sandbox
 from accelab.exercises.notebook import read_spec
 from accelab.exercises.simulate import key_code, submit
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("grade")]  # one course graded, once
 
 SECRET = "s3cr3t-instructor-token-4711"
 ACCELAB = [sys.executable, "-m", "accelab"]
