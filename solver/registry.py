@@ -44,7 +44,9 @@ class Registered(NamedTuple):
     ``"module:function"`` taking the case's SI parameters as keywords (None: not
     drawn); ``batch``: whether the batch format and ``accelab solve`` take it;
     ``links``: the chapter's symbol of each link a schematic labels, keyed by the
-    link's two pins.
+    link's two pins; ``example``: parameters and motion (text with units, as a case of
+    the batch format gives them) of one position it solves, which the tests solve at
+    every order and check against finite differences (tests/test_registry.py).
     """
 
     name: str
@@ -53,6 +55,7 @@ class Registered(NamedTuple):
     construction: str | None = None
     batch: bool = True
     links: Mapping[tuple[str, str], str] = {}
+    example: Mapping[str, Any] = {}
 
 
 #: every mechanism, in the order the batch format, the command line and the docs list them
@@ -86,6 +89,17 @@ REGISTRY: dict[str, Registered] = {
                 ("O2", "O4"): "d",
                 ("A", "P"): "p",
             },
+            example={
+                "a": "2 in",
+                "b": "6 in",
+                "c": "9 in",
+                "d": "7 in",
+                "p": "3 in",
+                "delta3": "20 deg",
+                "theta2": "30 deg",
+                "omega2": "10 rad/s",
+                "alpha2": "-5 rad/s^2",
+            },
         ),
         Registered(
             "slidercrank",
@@ -104,6 +118,13 @@ REGISTRY: dict[str, Registered] = {
             mechanism="slidercrank:SliderCrank",
             construction="slidercrank:construct",
             links={("O2", "A"): "a", ("A", "B"): "b"},
+            example={
+                "a": "40 mm",
+                "b": "120 mm",
+                "c": "10 mm",
+                "theta2": "60 deg",
+                "omega2": "3000 rpm",
+            },
         ),
         Registered(
             "invertedslidercrank",
@@ -121,6 +142,15 @@ REGISTRY: dict[str, Registered] = {
             mechanism="invertedslidercrank:InvertedSliderCrank",
             construction="invertedslidercrank:construct",
             links={("O2", "A"): "a", ("O4", "B"): "c", ("O2", "O4"): "d"},
+            example={
+                "a": "40 mm",
+                "c": "50 mm",
+                "d": "100 mm",
+                "gamma": "30 deg",
+                "theta2": "60 deg",
+                "omega2": "30 rad/s",
+                "alpha2": "-40 rad/s^2",
+            },
         ),
         Registered(
             "fivebar",
@@ -154,6 +184,18 @@ REGISTRY: dict[str, Registered] = {
                 ("O5", "C"): "d",
                 ("O2", "O5"): "f",
             },
+            example={
+                "a": "2 in",
+                "b": "6 in",
+                "c": "7 in",
+                "d": "3 in",
+                "f": "5 in",
+                "lam": -1,
+                "phi": "30 deg",
+                "theta2": "60 deg",
+                "omega2": "10 rad/s",
+                "alpha2": "5 rad/s^2",
+            },
         ),
         Registered(
             "rotation",
@@ -161,6 +203,12 @@ REGISTRY: dict[str, Registered] = {
             mechanism="rotation:RotatingPoint",
             construction="slotted:rotating_point",
             links={("O2", "P"): "p"},
+            example={
+                "p": "4 in",
+                "theta2": "30 deg",
+                "omega2": "-20 rad/s",
+                "alpha2": "15 rad/s^2",
+            },
         ),
         Registered(
             "slotted",
@@ -177,6 +225,14 @@ REGISTRY: dict[str, Registered] = {
             mechanism="rotation:SlottedLink",
             construction="slotted:construct",
             batch=False,  # the block's rates are a second input motion: the Python API only
+            example={
+                "theta2": "40 deg",
+                "omega2": "10 rad/s",
+                "alpha2": "-50 rad/s^2",
+                "p": "80 mm",
+                "p_dot": "0.5 m/s",
+                "p_ddot": "3 m/s^2",
+            },
         ),
     )
 }
