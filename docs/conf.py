@@ -26,6 +26,9 @@ project = "accelab"
 author = "the accelab developers"
 copyright = "accelab developers"
 release = version = accelab.__version__  # the one place the version is written
+# signatures name an object without its module path (the page and its heading say which
+# module): accelab.solver.vectorloops.newton.SINGULAR_CONDITION does not fit a phone
+add_module_names = False
 
 extensions = [
     "myst_nb",

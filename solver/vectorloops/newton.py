@@ -39,7 +39,7 @@ from .straightline import compile_kernel
 #: A position whose condition measure (1 best, 0 singular; see :func:`condition`)
 #: falls below this is reported ``singular``: its Jacobian is too close to
 #: singular to vouch for velocity and acceleration. (The closed-form kernels
-#: decide by their round-off estimate instead: accelab.solver.kernels.common.MAX_ROUNDOFF.)
+#: decide by their round-off estimate instead: :data:`~accelab.solver.kernels.common.MAX_ROUNDOFF`.)
 SINGULAR_CONDITION = 1e-4
 
 MAX_ITERATIONS = 50
