@@ -343,7 +343,10 @@ def test_families_page_maps_every_family_to_a_notebook():
         linked = re.findall(r"\]\((\d\d_[a-z_]+)\.ipynb\)", row)
         assert linked and set(linked) <= stems, row
         for stem in linked:  # and that notebook names the family back
-            assert f"`{family}`" in (COURSE / f"{stem}.py").read_text(), (family, stem)
+            assert f"`{family}`" in (COURSE / f"{stem}.py").read_text(), (
+                f"course/{stem}.py teaches {family} (exercises/families/__init__.py): name "
+                f"the family `{family}` in its text, where it says which families practise it"
+            )
 
 
 def test_errata_page_lists_corrections_and_checks():

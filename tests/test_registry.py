@@ -121,6 +121,7 @@ def test_a_registered_mechanism_solves_its_example_at_every_order(name):
         assert r.valid, f"{name}: the registered example must be a valid position"
         for output in r.outputs():
             assert np.all(np.isfinite(r.si(output))), (name, order, output)
+            assert r[output] is not None  # a Quantity: its kind follows from its name (kind_of)
         if order == 3:
             record = r._motion
             empty = [n for n in type(record).OUTPUTS if getattr(record, n) is None]
