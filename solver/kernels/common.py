@@ -34,8 +34,8 @@ EPS = float(np.finfo(float).eps)
 
 #: what the kernels take and give: a float, or an array of floats (SI: m, rad, s)
 Floats: TypeAlias = float | np.ndarray
-P = ParamSpec("P")
-R = TypeVar("R")
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
 
 #: The closed-form kernels refuse (report ``singular``) a position where the
 #: estimated relative round-off of their outputs exceeds this. Near a limit
@@ -125,7 +125,7 @@ def length_unit(*lengths: Floats) -> float:
     return math.ldexp(1.0, math.frexp(m)[1])
 
 
-def scale_lengths(motion: "MotionType", names: Iterable[str], unit: float) -> "MotionType":
+def scale_lengths(motion: "_MotionT", names: Iterable[str], unit: float) -> "_MotionT":
     """Multiply the outputs ``names`` of ``motion`` (a Motion; lengths and their
     derivatives) by ``unit`` [m], the :func:`length_unit` the kernel divided by;
     returns ``motion``."""
@@ -160,14 +160,14 @@ def masked(bad, x):
     return np.where(bad, np.nan, x) if bad.any() else x
 
 
-def without_float_warnings(func: Callable[P, R]) -> Callable[P, R]:
+def without_float_warnings(func: Callable[_P, _R]) -> Callable[_P, _R]:
     """Run a kernel with numpy's floating-point warnings off: NaN marks the
     positions that do not assemble, and the status says so; an overflow
     (inputs too large for float64's range) is refused by the unit-aware layer
     and the batch, which check the outputs they give."""
 
     @functools.wraps(func)
-    def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
+    def wrapper(*args: _P.args, **kwargs: _P.kwargs) -> _R:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
 
@@ -250,18 +250,15 @@ class Motion:
         return [f.name for f in fields(self) if getattr(self, f.name) is not None]
 
 
-MotionType = TypeVar("MotionType", bound=Motion)
+_MotionT = TypeVar("_MotionT", bound=Motion)
 
 
-def outputs(cls: type[MotionType]) -> type[MotionType]:
+def outputs(cls: type[_MotionT]) -> type[_MotionT]:
     """Make ``cls``, a subclass of :class:`Motion` that sets ``OUTPUTS`` (and
     perhaps ``SOLVED``, ``EXTRA``), the record of one kernel: a dataclass
     whose fields are the inputs, the outputs and the extras, None by default
-    (with ``__slots__``: setting an undeclared name raises)::
-
-        @outputs
-        class FourbarMotion(Motion):
-            OUTPUTS = angles(3, 4)
+    (with ``__slots__``: setting an undeclared name raises). The fourbar's is
+    ``@outputs class FourbarMotion(Motion)`` with ``OUTPUTS = angles(3, 4)``.
     """
     names = tuple(dict.fromkeys(INPUTS + tuple(cls.OUTPUTS) + tuple(cls.EXTRA)))
     cls.__annotations__ = {n: Any for n in names}
@@ -367,8 +364,8 @@ def same_shapes(theta2, motion, others):
 
 
 def in_pieces(
-    solve: Callable[..., MotionType], theta2: np.ndarray, omega2: Any, alpha2: Any, jerk2: Any
-) -> MotionType:
+    solve: Callable[..., _MotionT], theta2: np.ndarray, omega2: Any, alpha2: Any, jerk2: Any
+) -> _MotionT:
     """A kernel's Motion over a long sweep, solved :data:`PIECE` positions at a time.
 
     ``solve(theta2, omega2, alpha2, jerk2)`` solves one piece (the same

@@ -20,8 +20,8 @@ from ..units import SI_UNITS, QuantityLike, SIValue, parse_quantity, quantity, s
 
 #: a point's spec: (base point or pivot, length parameter or SI length or function, theta key,
 #: offset angle [rad])
-PointSpec = tuple[Any, Any, Any, float]
-M = TypeVar("M", bound="Mechanism")
+_PointSpec = tuple[Any, Any, Any, float]
+_M = TypeVar("_M", bound="Mechanism")
 
 #: name prefixes -> kind of quantity, longest prefix first
 _KINDS = [
@@ -123,7 +123,7 @@ class Result(Kinematics):
         motion: Any,
         scalar: bool,
         inputs: Mapping[str, Any],
-        pts: Mapping[str, PointSpec] | None = None,
+        pts: Mapping[str, _PointSpec] | None = None,
     ) -> None:
         self._mech = mechanism
         self._pts = mechanism._points if pts is None else pts
@@ -476,7 +476,7 @@ class Mechanism:
 
     #: its name in the registry (accelab.solver.registry), set by each mechanism
     name: str = ""
-    _points: dict[str, PointSpec] = {}
+    _points: dict[str, _PointSpec] = {}
     #: "XY" -> (length parameter, theta key, offset) for X, Y on one link
     _relative: dict[str, tuple[str, str, float]] = {}
     _link_bases: dict[int, str] = {}  # link number -> the pin a point on it is measured from
@@ -525,11 +525,11 @@ class Mechanism:
 
     @classmethod
     def from_si(
-        cls: type[M],
+        cls: type[_M],
         geometry: Mapping[str, float],
         given: Mapping[str, Any] | None = None,
         units: Mapping[str, Any] | None = None,
-    ) -> M:
+    ) -> _M:
         """The mechanism from geometry already read into SI floats (the batch
         format's path: no second conversion). ``given`` holds the user's own
         values and ``units`` the units they were written in, for messages."""
