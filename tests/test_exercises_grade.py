@@ -92,10 +92,11 @@ def sandbox_processes():
     return [line for line in out.splitlines() if line.split() and int(line.split()[0]) >= 61000]
 
 
-def lingering_sandbox_processes(wait=60.0):
-    """The sandbox processes alive now that are still alive ``wait`` s later. Another
-    grading run at the same time (a parallel test worker, another user's) has live
-    kernels of its own, which end within seconds; a process left behind stays."""
+def lingering_sandbox_processes(wait=20.0):
+    """The sandbox processes alive now that are still alive ``wait`` s later (none alive:
+    at once). Another grading run at the same time (a parallel test worker, another
+    user's) has live kernels of its own, which end within seconds; a process left behind
+    by this grading stays (the attacks' sleep two minutes)."""
     alive = sandbox_processes()
     deadline = time.monotonic() + wait
     while alive and time.monotonic() < deadline:
