@@ -58,7 +58,8 @@ class Registered(NamedTuple):
     example: Mapping[str, Any] = {}
 
 
-#: every mechanism, in the order the batch format, the command line and the docs list them
+# every mechanism, in the order the batch format, the command line and the docs list them
+# (a comment, not a doc comment: the API pages would print the whole dict)
 REGISTRY: dict[str, Registered] = {
     entry.name: entry
     for entry in (
@@ -237,7 +238,7 @@ REGISTRY: dict[str, Registered] = {
     )
 }
 
-#: what each mechanism takes (name -> Declaration)
+# what each mechanism takes (name -> Declaration)
 PARAMETERS: dict[str, Declaration] = {name: e.parameters for name, e in REGISTRY.items()}
 #: the mechanisms of the batch format (docs/conventions.md#batch-format), besides "loops"
 BATCH_MECHANISMS: tuple[str, ...] = tuple(n for n, e in REGISTRY.items() if e.batch)

@@ -44,7 +44,7 @@ class Family(NamedTuple):
         return self.load().DEFAULTS
 
 
-#: every family, in the order the command line, the documentation and the course list them
+# every family, in the order the command line, the documentation and the course list them
 REGISTRY: dict[str, Family] = {
     f.name: f
     for f in (
@@ -109,7 +109,7 @@ REGISTRY: dict[str, Family] = {
     )
 }
 
-#: family name -> its generator, ``generate_problem(seed, ranges=None, units="US")``
+# family name -> its generator, ``generate_problem(seed, ranges=None, units="US")``
 FAMILIES = {name: f.load().generate_problem for name, f in REGISTRY.items()}
 
 

@@ -12,7 +12,8 @@ from .invertedslidercrank import InvertedSliderCrank
 from .rotation import RotatingPoint, SlottedLink
 from .slidercrank import SliderCrank
 
-#: the batch format's mechanisms: name -> class (from the registry, accelab.solver.registry)
+# the batch format's mechanisms: name -> class (from the registry, accelab.solver.registry);
+# a comment, not a doc comment: the API pages would print the whole dict
 MECHANISMS: dict[str, type[Mechanism]] = {name: mechanism_class(name) for name in BATCH_MECHANISMS}
 
 __all__ = [
