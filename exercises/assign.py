@@ -16,6 +16,7 @@ import shutil
 
 from .assignment import DEFAULT_ANGLE_TOLERANCE, build_variant, make_spec
 from .families.common import GenerationError
+from .layout import prepare as prepare_layout
 from .nbgrader_course import (
     course_id_of,
     create_course,
@@ -83,8 +84,14 @@ def assign(
     force=False,
     time_limit=60,
     say=print,
+    exchange=None,
 ):
-    """Create the assignment; returns the source notebook path."""
+    """Create the assignment; returns the source notebook path.
+
+    The course folder is made private to the instructor and the exchange
+    (``exchange``, for a new course; default a folder ``exchange`` beside the
+    course) laid out as nbgrader expects, before anything is written
+    (:func:`accelab.exercises.layout.prepare`)."""
     if os.path.exists(os.path.join(course_dir, "nbgrader_config.py")):
         course_id = course_id or course_id_of(course_dir)
     course_id = course_id or "accelab"
@@ -125,7 +132,10 @@ def assign(
                 f"replacing assignment {assignment!r} with {len(taken)} submission(s); old "
                 f"settings kept in {keep}; changes: {'; '.join(diff) or 'none'}"
             )
-    create_course(course_dir, course_id, roster, timeout=timeout, time_limit=time_limit)
+    exchange = prepare_layout(course_dir, course_id, exchange, accounts_of(roster, ids), say)
+    create_course(
+        course_dir, course_id, roster, timeout=timeout, time_limit=time_limit, exchange=exchange
+    )
     path = write_source(course_dir, spec, title)
     if due is not None:
         set_due(course_dir, course_id, assignment, due)
@@ -134,6 +144,12 @@ def assign(
     if release:
         nbgrader(course_dir, "release_assignment", assignment, "--force")
     return path
+
+
+def accounts_of(roster, ids):
+    """The account names of a roster's students (an ``account`` column, else the id)."""
+    names = [str(r.get("account") or r["id"]) for r in roster if isinstance(r, dict)]
+    return list(dict.fromkeys([*names, *ids]))
 
 
 def set_due(course_dir, course_id, assignment, due):

@@ -5,6 +5,7 @@ The application layer calls :func:`register` with its subparsers.
 
 import argparse
 import json
+import os
 import sys
 
 from .families import FAMILIES
@@ -66,6 +67,12 @@ def register(subparsers):
         help="CSV with a column id (first_name, last_name, email optional)",
     )
     p.add_argument("--course-id", default=None, help="nbgrader course id (new course only)")
+    p.add_argument(
+        "--exchange",
+        default=None,
+        help="nbgrader's exchange folder, outside the course folder, where students fetch and "
+        "hand in (new course only; default: a folder 'exchange' beside the course folder)",
+    )
     p.add_argument(
         "--due",
         default=None,
@@ -173,6 +180,20 @@ def _fail(message):
     return 2
 
 
+def _say(message):
+    print(f"accelab: {message}", file=sys.stderr)
+
+
+def _check_course(course):
+    """Before grading: the course folder made private, and what is unsafe about its
+    exchange said (:func:`accelab.exercises.layout.check`)."""
+    from .grader.grade import load_config
+    from .layout import check
+    from .nbgrader_course import roster_ids
+
+    check(course, load_config(os.path.abspath(course)), roster_ids(course), say=_say)
+
+
 def run_assign(args):
     from .assign import assign
     from .nbgrader_course import read_roster
@@ -196,6 +217,8 @@ def run_assign(args):
             due=args.due,
             force=args.force,
             time_limit=args.time_limit,
+            exchange=args.exchange,
+            say=_say,
         )
     except json.JSONDecodeError as exc:
         return _fail(f"--ranges is not JSON: {exc}")
@@ -217,10 +240,9 @@ def run_variant(args):
 
 
 def run_grade(args):
-    import os
-
     from .grader.grade import grade
     from .grader.gradetable import format_table, question_names
+    from .grader.intake import refusals
     from .grader.sandbox import SandboxUnavailable
 
     release = os.path.join(args.course, "release", args.assignment)
@@ -231,6 +253,7 @@ def run_grade(args):
             "--release first"
         )
     try:
+        _check_course(args.course)
         subs, path, rows, seconds, timings = grade(
             args.course,
             args.assignment,
@@ -249,6 +272,8 @@ def run_grade(args):
         )
     except (ValueError, OSError, RuntimeError) as exc:
         return _fail(str(exc))
+    for line in refusals(args.course, args.assignment):
+        _say(line)
     print(format_table(rows, question_names(args.course, args.assignment)))
     spent = ", ".join(f"{k} {v:.1f} s" for k, v in timings.items())
     print(f"\n{len(subs)} submission(s) graded in {seconds:.1f} s ({spent}); CSV: {path}")

@@ -115,7 +115,7 @@ def run_demo(course="build/demo-course", assignment="A", jobs=2, out=print, fres
             )
         if fresh:
             shutil.rmtree(course)
-    os.makedirs(course, exist_ok=True)
+    os.makedirs(course, mode=0o700, exist_ok=True)  # a course folder is the instructor's alone
     with open(os.path.join(course, MARKER), "w") as fh:
         fh.write("made by accelab demo; `accelab demo` may delete this folder\n")
     start = time.monotonic()

@@ -23,14 +23,25 @@ from nbconvert.preprocessors import ClearMetadataPreprocessor, CSSHTMLHeaderPrep
 from nbgrader.preprocessors import (AssignLatePenalties, CheckCellMetadata, GetGrades,
                                     LimitOutput, SaveAutoGrades)
 
+from accelab.exercises.grader.collect import AccelabCollect
 from accelab.exercises.grader.nbgrader_step import CleanFeedback, JudgeSubmission, sanitize_steps
+from accelab.exercises.layout import FORMGRADER_TEMPLATES, TEMPLATES
 
 c = get_config()  # noqa: F821
 HERE = os.path.dirname(os.path.abspath(__file__))
 c.CourseDirectory.course_id = {course_id!r}
 c.CourseDirectory.root = HERE
 c.CourseDirectory.db_url = "sqlite:///" + os.path.join(HERE, "gradebook.db")
-c.Exchange.root = os.path.join(HERE, "exchange")
+# the exchange, outside this folder (which is private to the instructor): students'
+# own nbgrader configuration names the same folder
+c.Exchange.root = {exchange!r}
+# collect: the submitter is the account that owns the submission's folder in the exchange,
+# its time the exchange's record, and only regular files are collected (never a link)
+c.ExchangeFactory.collect = AccelabCollect
+# formgrader's submission page shows the student's id and names escaped (nbgrader's prints
+# them as HTML)
+c.HTMLExporter.extra_template_basedirs = [TEMPLATES, FORMGRADER_TEMPLATES]
+c.HTMLExporter.extra_template_paths = [FORMGRADER_TEMPLATES]
 c.CourseDirectory.ignore = [".ipynb_checkpoints", "*.pyc", "__pycache__", "feedback", ".accelab"]
 
 # nbgrader's sanitizing, mended: a copied cell or forged cell metadata costs only
@@ -100,21 +111,33 @@ def read_roster(path):
     return rows
 
 
-def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=60):
+def default_exchange(root):
+    """Where a new course's exchange goes unless told: a folder ``exchange`` beside
+    the course folder (outside it; nbgrader's exchange holds many courses)."""
+    return os.path.join(os.path.dirname(os.path.abspath(root)), "exchange")
+
+
+def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=60, exchange=None):
     """Create (or update) the course directory at ``root``; returns its path.
 
-    ``roster`` is a list of ids or dicts with ``id`` and optional names.
-    An existing nbgrader_config.py is kept (the instructor may have edited it).
+    ``roster`` is a list of ids or dicts with ``id`` and optional names (and
+    ``account``, the student's account name where it is not the id). An existing
+    nbgrader_config.py is kept (the instructor may have edited it). ``exchange``
+    is the exchange folder a new course's configuration names (default
+    :func:`default_exchange`).
     """
     root = os.path.abspath(root)
-    for sub in ("source", "release", "submitted", "autograded", "feedback", "exchange"):
+    for sub in ("source", "release", "submitted", "autograded", "feedback"):
         os.makedirs(os.path.join(root, sub), exist_ok=True)
     config = os.path.join(root, "nbgrader_config.py")
     if not os.path.exists(config):
         with open(config, "w") as fh:
             fh.write(
                 CONFIG.format(
-                    course_id=course_id, timeout=float(timeout), time_limit=float(time_limit)
+                    course_id=course_id,
+                    timeout=float(timeout),
+                    time_limit=float(time_limit),
+                    exchange=os.path.abspath(exchange or default_exchange(root)),
                 )
             )
     ids = roster_ids(root)
@@ -126,6 +149,9 @@ def create_course(root, course_id="accelab", roster=(), timeout=10, time_limit=6
             gb.update_or_create_student(sid, **info)
             ids.append(str(sid))
     write_roster(root, ids)
+    from .grader.intake import save_accounts
+
+    save_accounts(root, roster)
     return root
 
 

@@ -8,7 +8,11 @@ The reading rules, the same wherever a quantity is read (the Python API, the
 batch format, the command line, a student's graded answer):
 
 * text is at most :data:`MAX_TEXT` characters, so that any field is read in
-  bounded time (pint's parser grows with the square of the length);
+  bounded time (pint's parser grows with the square of the length); its
+  parentheses nest at most :data:`MAX_NESTING` deep, a power's exponent is a
+  plain number of one or two digits, and neither a power nor a group that holds
+  one is raised to a power again (``9**9**9`` or ``((9**99)*2)**99`` would run
+  for hours);
 * a quantity needs the dimension of its parameter; an angle needs angle
   units (a bare ``"30"`` could be degrees or radians); a bare number is
   accepted only for a plain number (a ratio) and for zero;
@@ -34,6 +38,7 @@ __all__ = [
     "ureg",
     "Q_",
     "parse_quantity",
+    "read_units",
     "to_si",
     "quantity",
     "KINDS",
@@ -58,8 +63,10 @@ pint.set_application_registry(ureg)
 #: ``Q_(value, unit)``: a Quantity of :data:`ureg`, e.g. ``Q_(30, "deg")``.
 Q_ = ureg.Quantity
 
-#: the longest text read as a quantity [characters]
+#: the longest text read as a quantity or as units [characters]
 MAX_TEXT = 100
+#: the deepest nesting of parentheses read
+MAX_NESTING = 4
 
 # kind -> (pint dimensionality, SI unit, example for error messages, words)
 KINDS = {
@@ -131,10 +138,13 @@ def _is_angle_unit(units):
 
 
 def _check_text(text, name, kind):
+    """Refuse, before pint sees it, a text whose reading could take long: too long,
+    nested too deep, or with a power of a power (the one rule for every text read)."""
+    example = KINDS[kind][2] if kind in KINDS else "'m/s^2'"
     if len(text) > MAX_TEXT:
         raise InvalidInput(
             f"{name} is a text of {len(text)} characters; a quantity is at most "
-            f"{MAX_TEXT} (e.g. {name}={KINDS[kind][2]})",
+            f"{MAX_TEXT} (e.g. {name}={example})",
             name,
         )
     for m in _POWER.finditer(text):
@@ -143,9 +153,41 @@ def _check_text(text, name, kind):
             raise InvalidInput(
                 f"{name} = {show(text)} raises to a power that is not a plain "
                 f"number of one or two digits; write units like 's^2' "
-                f"(e.g. {name}={KINDS[kind][2]})",
+                f"(e.g. {name}={example})",
                 name,
             )
+    _check_groups(text, name, example)
+
+
+def _check_groups(text, name, example):
+    """Parentheses nest at most MAX_NESTING deep, and a group that holds a power
+    is not raised to a power again."""
+    open_groups = []  # per open group: whether it holds a power
+    k = 0
+    while k < len(text):
+        ch = text[k]
+        if ch == "(":
+            open_groups.append(False)
+            if len(open_groups) > MAX_NESTING:
+                raise InvalidInput(
+                    f"{name} = {show(text)} nests parentheses more than {MAX_NESTING} deep "
+                    f"(e.g. {name}={example})",
+                    name,
+                )
+        elif ch == ")" and open_groups:
+            held = open_groups.pop()
+            rest = text[k + 1 :].lstrip()
+            if held and rest.startswith(("**", "^")):
+                raise InvalidInput(
+                    f"{name} = {show(text)} raises a group that holds a power to a power "
+                    f"again; write units like 's^2' (e.g. {name}={example})",
+                    name,
+                )
+            if held and open_groups:
+                open_groups[-1] = True
+        elif text.startswith(("**", "^"), k) and open_groups:
+            open_groups[-1] = True
+        k += 1
 
 
 @lru_cache(maxsize=4096)
@@ -159,6 +201,57 @@ def _reason(exc):
     if isinstance(exc, pint.UndefinedUnitError):
         return str(exc).strip() or "an unknown unit"
     return "it is not a number followed by units"
+
+
+@lru_cache(maxsize=4096)
+def _parse_units(text):
+    """Parse a unit text once, and check that it has a dimension and a root form
+    (a logarithmic unit such as dB parses but has neither)."""
+    units = ureg.parse_units(text) if text not in ("", "dimensionless") else ureg.Unit("")
+    units.dimensionality  # noqa: B018 - raises for units pint parses but cannot use
+    Q_(1.0, units).to_root_units()
+    return units
+
+
+def read_units(text: Any, name: str = "units") -> pint.Unit:
+    """Read a unit text, such as ``"in/s^2"`` or pint's ``"inch / second ** 2"``,
+    by the same rules as :func:`parse_quantity` (at most :data:`MAX_TEXT`
+    characters, bounded nesting, no power of a power), in bounded time.
+
+    This is the one reader of every unit text the package does not write itself:
+    a quantity's text in ``accelab solve`` (through :func:`parse_quantity`) and a
+    student's answer as the grader reads it. The same text is read once.
+
+    Returns
+    -------
+    pint.Unit of :data:`ureg`
+
+    Raises
+    ------
+    InvalidInput
+        A text that is not a string, too long, nested too deep, with a power of a
+        power, or units this registry cannot read or use (an unknown name, a
+        logarithmic unit such as dB). The message shows the text once, cut.
+    """
+    if not isinstance(text, str):
+        raise InvalidInput(f"{name} must be a unit text (got {type(text).__name__})", name)
+    _check_text(text, name, None)
+    try:
+        return _parse_units(text.strip())
+    except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types
+        raise InvalidInput(
+            f"{name} = {show(text)} could not be read as units "
+            f"({_unit_reason(exc)}); write units like 'm/s^2'",
+            name,
+        ) from None
+
+
+def _unit_reason(exc):
+    if isinstance(exc, pint.UndefinedUnitError) and "delta_" not in str(exc):
+        return str(exc).strip() or "an unknown unit"
+    if isinstance(exc, (pint.UndefinedUnitError, pint.OffsetUnitCalculusError)):
+        return "a unit with no plain conversion, such as dB"
+    return "not a product of units and powers"
 
 
 def parse_quantity(value: QuantityLike, kind: str, name: str) -> pint.Quantity | float | np.ndarray:

@@ -1,30 +1,49 @@
-"""The instructor's workflow of the README, end to end, with nbgrader's real
-exchange: assign and release; two students fetch, work and submit; the
-instructor collects, grades (sandbox), releases feedback; the students fetch it;
-the gradebook is exported."""
+"""The instructor's workflow of the README, end to end, through nbgrader's real
+exchange, with every student a local account of their own (made here with
+useradd: the tests run as root): assign and release; students fetch, work and
+hand in; the instructor collects, grades (sandbox), releases feedback; the
+students fetch it.
+
+Among the students, attackers: one hands in under other students' names (another
+student's id, markup, bytes that are not UTF-8), one makes an inbound folder by
+hand with links to the instructor's files, a special file and a timestamp.txt
+an hour before the due date, handed in after it. What must hold: no unearned
+point, nothing read that a student must not read, nothing changed outside the
+student's own submission, every other student graded.
+"""
 
 import csv
+import datetime
 import json
 import os
+import re
+import shutil
+import stat
 import subprocess
 import sys
+import time
 
 import nbformat
 import pytest
+from _accounts import PREFIX, account, class_folder, home_of, nbgrader_as, python_as, remove
 from _exercises_helpers import answers_code
 
 from accelab.exercises.variant import variant_json
 
-pytestmark = pytest.mark.slow
+# one term (module fixture) in one worker; the students' accounts (tests/_accounts.py) are made
+# by one worker at a time
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("accounts")]
+
+SECRET = "instructor-only-7dx9"
+#: roster id -> account (the roster maps them: an account need not be its id)
+ACCOUNTS = {s: PREFIX + s for s in ("ann", "bob", "mal", "eve", "lee")}
+MARKUP = "<img src=x onerror=alert(1)>"
+NOT_UTF8 = os.fsdecode(b"m\xffx")
 
 
-def run(args, cwd, user=None, check=True):
+def run(args, cwd, check=True):
     env = dict(os.environ)
     env.pop("JUPYTERHUB_USER", None)
-    if user:  # each student has a home of their own (nbgrader keeps its cache there)
-        env["USER"] = env["LOGNAME"] = user
-        env["HOME"] = cwd
-        env.pop("JUPYTER_DATA_DIR", None)
     env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
     proc = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
     if check:
@@ -32,106 +51,260 @@ def run(args, cwd, user=None, check=True):
     return proc
 
 
-def nbgrader(*args, cwd, user=None):
-    """nbgrader as the instructor, or as ``user`` (one machine account plays every
-    student here, so the student id is given as nbgrader allows: --student)."""
-    extra = ["--student", user] if user and args[0] in ("submit", "fetch_feedback") else []
-    return run([sys.executable, "-m", "nbgrader", *args, *extra], cwd, user)
+def instructor(*args, cwd):
+    return run([sys.executable, "-m", "nbgrader", *args], cwd)
 
 
-def accelab(*args, cwd):
-    return run([sys.executable, "-m", "accelab", *args], cwd)
+def accelab(*args, cwd, check=True):
+    return run([sys.executable, "-m", "accelab", *args], cwd, check=check)
 
 
-def student_config(home, exchange):
-    os.makedirs(home, exist_ok=True)
-    with open(os.path.join(home, "nbgrader_config.py"), "w") as fh:
+def student_home(sid, base, exchange):
+    home = home_of(ACCOUNTS[sid], base)
+    path = os.path.join(home, "nbgrader_config.py")
+    with open(path, "w") as fh:
         fh.write(
             f"c = get_config()\nc.CourseDirectory.course_id = 'mech101'\n"
             f"c.Exchange.root = {exchange!r}\n"
         )
+    os.chmod(path, 0o644)
+    return home
 
 
-def work(home, student, course):
-    """The student opens the fetched notebook and writes answers in its answer cells."""
+def given(home, sid, released):
+    """The released notebook in the student's home, theirs (as fetch_assignment makes it)."""
+    uid, gid = account(ACCOUNTS[sid])
+    folder = os.path.join(home, "A")
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(released, folder)
+    for path in (folder, os.path.join(folder, "A.ipynb")):
+        os.chown(path, uid, gid)
+
+
+def work(home, sid, course, wrong=False):
+    """The student writes answers in the fetched notebook's answer cells."""
     path = os.path.join(home, "A", "A.ipynb")
     nb = nbformat.read(path, as_version=4)
-    code = answers_code(json.loads(json.dumps(variant_json(course, "A", student))))
+    code = answers_code(json.loads(json.dumps(variant_json(course, "A", sid))))
     for cell in nb.cells:
         gid = cell.metadata.get("nbgrader", {}).get("grade_id", "")
-        if gid.startswith("answer_") and gid[len("answer_") :] in code:
-            cell.source = code[gid[len("answer_") :]]
-    if student == "hal":  # one wrong answer
-        first = next(
-            c
-            for c in nb.cells
-            if c.metadata.get("nbgrader", {}).get("grade_id", "").startswith("answer_")
-        )
-        first.source = first.source.replace("Q_(", "-Q_(")
+        name = gid[len("answer_") :]
+        if gid.startswith("answer_") and name in code:
+            cell.source = code[name].replace("Q_(", "-Q_(") if wrong else code[name]
     nbformat.write(nb, path)
+    return nb
 
 
-def test_assign_release_fetch_submit_collect_grade_feedback_export(tmp_path):
-    course = str(tmp_path / "course")
-    exchange = str(tmp_path / "exchange")
-    os.makedirs(exchange)
-    os.chmod(exchange, 0o777)
-    roster = tmp_path / "roster.csv"
-    roster.write_text("id,first_name,last_name\nann,Ann,A\nhal,Hal,H\nivy,Ivy,I\n")
+PROBE = """
+import os, sqlite3
+out = []
+for path in [{course!r}, {course!r} + "/gradebook.db", {inbound!r}]:
+    try:
+        out.append((path, "listed" if os.path.isdir(path) else "read", len(
+            os.listdir(path) if os.path.isdir(path) else open(path, "rb").read())))
+    except OSError as exc:
+        out.append((path, type(exc).__name__))
+for old, new in [({exchange!r} + "/mech101", {exchange!r} + "/mine"),
+                 ({inbound!r}, {inbound!r} + "-x")]:
+    try:
+        os.rename(old, new)
+        out.append(("RENAMED", old))
+    except OSError as exc:
+        out.append((old, type(exc).__name__))
+try:
+    os.mkdir({exchange!r} + "/mech101/outbound/A/x")
+    out.append(("WROTE OUTBOUND",))
+except OSError as exc:
+    out.append(("outbound", type(exc).__name__))
+print(out)
+"""
+
+#: what eve does by hand: an inbound folder named an hour before the due date
+HANDMADE = """
+import os, shutil
+folder = os.path.join({inbound!r}, "eve+A+" + {early!r} + "+handmade")
+os.mkdir(folder)
+shutil.copy("A/A.ipynb", folder)
+open(os.path.join(folder, "timestamp.txt"), "w").write({early!r})
+os.symlink({secret!r}, os.path.join(folder, "notes.txt"))
+os.symlink({course!r} + "/gradebook.db", os.path.join(folder, "gradebook.db"))
+os.mkfifo(os.path.join(folder, "pipe"))
+os.chmod(folder, 0o777)
+print(folder)
+"""
+
+
+@pytest.fixture(scope="module")
+def klass():
+    base = class_folder()
+    try:
+        yield _term(base)
+    finally:
+        remove(base)
+
+
+def _term(base):
+    course, exchange = os.path.join(base, "course"), os.path.join(base, "exchange")
+    secret = os.path.join(base, "instructor-secret.txt")
+    with open(secret, "w") as fh:
+        fh.write(SECRET)
+    os.chmod(secret, 0o600)
+    roster = os.path.join(base, "roster.csv")
+    with open(roster, "w") as fh:
+        fh.write("id,account\n" + "".join(f"{s},{a}\n" for s, a in ACCOUNTS.items()) + "ivy,\n")
     accelab(
         "assign",
-        "--course",
-        course,
-        "--assignment",
-        "A",
-        "--course-id",
-        "mech101",
-        "--roster",
-        str(roster),
-        "--families",
-        "rotation,fourbar",
-        cwd=str(tmp_path),
+        *("--course", course, "--assignment", "A", "--course-id", "mech101"),
+        *("--roster", roster, "--families", "rotation", "--exchange", exchange),
+        *("--timeout", "5", "--time-limit", "30", "--release"),
+        cwd=base,
     )
     with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
-        fh.write(f"c.Exchange.root = {exchange!r}\n")
-    nbgrader("release_assignment", "A", "--force", cwd=course)
-    for student in ("ann", "hal"):
-        home = str(tmp_path / student)
-        student_config(home, exchange)
-        listing = (
-            nbgrader("list", cwd=home, user=student).stdout
-            + nbgrader("list", cwd=home, user=student).stderr
-        )
-        assert "mech101 A" in listing
-        nbgrader("fetch_assignment", "A", cwd=home, user=student)
-        work(home, student, course)
-        nbgrader("submit", "A", cwd=home, user=student)
-    nbgrader("collect", "A", cwd=course)
-    assert sorted(os.listdir(os.path.join(course, "submitted"))) == ["ann", "hal"]
+        fh.write("c.LateSubmissionPlugin.penalty_method = 'zero'\n")
+    inbound = os.path.join(exchange, "mech101", "inbound")
+    homes = {s: student_home(s, base, exchange) for s in ACCOUNTS}
+    for sid in ("ann", "bob"):
+        nbgrader_as(ACCOUNTS[sid], "fetch_assignment", "A", cwd=homes[sid])
+    for sid in ("mal", "lee", "eve"):  # the same notebook, without the time nbgrader takes
+        given(homes[sid], sid, os.path.join(exchange, "mech101", "outbound", "A", "A.ipynb"))
+    for sid in ("ann", "bob"):
+        work(homes[sid], sid, course)
+        nbgrader_as(ACCOUNTS[sid], "submit", "A", cwd=homes[sid])
+    # mal: wrong answers, handed in under bob's id, a markup id and bytes that are not UTF-8
+    work(homes["mal"], "bob", course, wrong=True)
+    for claim in ("bob", MARKUP, NOT_UTF8):
+        nbgrader_as(ACCOUNTS["mal"], "submit", "A", "--student", claim, cwd=homes["mal"])
+    probe = python_as(
+        ACCOUNTS["mal"],
+        PROBE.format(course=course, inbound=inbound, exchange=exchange),
+        cwd=homes["mal"],
+    )
+    # the due date passes; lee hands in late, and eve makes her folder by hand
+    from accelab.exercises.assign import set_due
 
-    proc = accelab("grade", "--course", course, "--assignment", "A", "--quiet", cwd=course)
-    assert "2 submission(s) graded" in proc.stdout
+    due = datetime.datetime.now(datetime.timezone.utc).replace(tzinfo=None)
+    set_due(course, "mech101", "A", due.isoformat())
+    time.sleep(1.5)
+    work(homes["lee"], "lee", course)
+    nbgrader_as(ACCOUNTS["lee"], "submit", "A", cwd=homes["lee"])
+    work(homes["eve"], "eve", course)  # her own right answers
+    early = (due - datetime.timedelta(hours=1)).strftime("%Y-%m-%d %H:%M:%S.%f UTC")
+    handmade = python_as(
+        ACCOUNTS["eve"],
+        HANDMADE.format(inbound=inbound, early=early, secret=secret, course=course),
+        cwd=homes["eve"],
+    ).strip()
+    # a hard link to the instructor's file in her folder (what fs.protected_hardlinks
+    # stops on this machine, made here as root)
+    os.link(secret, os.path.join(handmade, "hard.txt"))
+    collected = instructor("collect", "A", cwd=course)
+    graded = accelab(
+        "grade", "--course", course, "--assignment", "A", "--quiet", cwd=course, check=False
+    )
     with open(os.path.join(course, "grades_A.csv")) as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
-    n = float(rows["ann"]["max"])
-    assert float(rows["ann"]["total"]) == n and float(rows["hal"]["total"]) == n - 1
-    assert "no submission" in rows["ivy"]["notes"]
+    instructor("release_feedback", "A", cwd=course)
+    nbgrader_as(ACCOUNTS["ann"], "fetch_feedback", "A", cwd=homes["ann"])
+    return {
+        "base": base,
+        "course": course,
+        "exchange": exchange,
+        "homes": homes,
+        "rows": rows,
+        "probe": probe,
+        "collected": collected.stdout + collected.stderr,
+        "graded": graded,
+        "handmade": handmade,
+    }
 
-    nbgrader("release_feedback", "A", cwd=course)
-    for student in ("ann", "hal"):
-        home = str(tmp_path / student)
-        nbgrader("fetch_feedback", "A", cwd=home, user=student)
-        pages = [
-            os.path.join(root, f)
-            for root, _, files in os.walk(os.path.join(home, "A"))
-            for f in files
-            if f.endswith(".html")
-        ]
-        assert len(pages) == 1, f"feedback fetched for {student}: {pages}"
-        text = open(pages[0]).read()
-        assert "Graded against the values of student " + student in text
 
-    nbgrader("export", cwd=course)
-    with open(os.path.join(course, "grades.csv")) as fh:
-        exported = {r["student_id"]: r for r in csv.DictReader(fh)}
-    assert float(exported["ann"]["score"]) == n and float(exported["hal"]["score"]) == n - 1
+def mode(path):
+    return stat.S_IMODE(os.lstat(path).st_mode)
+
+
+def total(klass, sid):
+    return float(klass["rows"][sid]["total"])
+
+
+def maximum(klass):
+    return float(klass["rows"]["ann"]["max"])
+
+
+def test_the_course_is_private_and_the_exchange_laid_out_as_nbgrader_expects(klass):
+    course, exchange = klass["course"], klass["exchange"]
+    assert mode(course) & 0o077 == 0
+    assert mode(exchange) == 0o1777
+    assert mode(os.path.join(exchange, "mech101")) == 0o755
+    assert mode(os.path.join(exchange, "mech101", "inbound")) == 0o1733
+    assert mode(os.path.join(exchange, "mech101", "outbound")) == 0o755
+    assert not os.path.commonpath([course, exchange]) == course
+
+
+def test_a_student_reads_nothing_of_the_course_and_hijacks_nothing(klass):
+    out = klass["probe"]
+    assert "listed" not in out and "read'" not in out, out
+    assert "RENAMED" not in out and "WROTE OUTBOUND" not in out, out
+    assert out.count("PermissionError") == 6, out
+
+
+def test_honest_students_get_full_marks(klass):
+    for sid in ("ann", "bob"):
+        row = klass["rows"][sid]
+        assert total(klass, sid) == maximum(klass), row
+        assert row["notes"] == "", row
+    assert "no submission" in klass["rows"]["ivy"]["notes"]
+    assert klass["graded"].returncode == 0, klass["graded"].stderr[-2000:]
+
+
+def test_handing_in_under_other_names_is_the_owners_own_submission(klass):
+    """mal handed in as bob, as markup and as bytes that are not UTF-8: each is mal's
+    (the account that owns the folder), bob keeps his marks, nothing crashes."""
+    row = klass["rows"]["mal"]
+    assert total(klass, "mal") == 0.0, row
+    assert "handed in under the name m\\xffx by the account axlmal" in row["notes"], row
+    submitted = os.listdir(os.path.join(klass["course"], "submitted"))
+    assert sorted(submitted) == ["ann", "bob", "eve", "lee", "mal"], submitted
+    assert set(klass["rows"]) == {"ann", "bob", "mal", "eve", "lee", "ivy"}
+    assert "also handed in under the name(s)" in row["notes"], row
+    assert "bob" in row["notes"] and "\\x3cimg src=x onerror=alert(1)\\x3e" in row["notes"]
+    assert "<img" not in klass["collected"] and "<img" not in json.dumps(klass["rows"])
+
+
+def test_the_time_is_the_exchanges_not_the_students(klass):
+    """eve's timestamp.txt (and folder name) say an hour before the due date; the
+    exchange says after it: she is late, as the honest late student is."""
+    for sid in ("eve", "lee"):
+        row = klass["rows"][sid]
+        assert float(row["score"]) == maximum(klass) and total(klass, sid) == 0.0, row
+        assert "late by" in row["notes"], row
+    assert "earlier than the exchange's record" in klass["rows"]["eve"]["notes"]
+
+
+def test_links_hard_links_and_special_files_are_never_collected(klass):
+    course = klass["course"]
+    folder = os.path.join(course, "submitted", "eve", "A")
+    assert sorted(os.listdir(folder)) == ["A.ipynb", "submission_secret.txt", "timestamp.txt"]
+    notes = klass["rows"]["eve"]["notes"]
+    assert "notes.txt in the submission is a link" in notes, notes
+    assert "gradebook.db in the submission is a link" in notes
+    assert "pipe in the submission is a special file" in notes
+    assert "hard.txt in the submission is a file the submitter does not own" in notes
+    feedback = os.path.join(course, "feedback", "eve", "A")
+    assert sorted(os.listdir(feedback)) == ["A.html", "submission_secret.txt", "timestamp.txt"]
+    for step in ("submitted", "autograded", "feedback"):
+        for root, _, files in os.walk(os.path.join(course, step)):
+            for f in files:
+                with open(os.path.join(root, f), "rb") as fh:
+                    assert SECRET.encode() not in fh.read(), (root, f)
+
+
+def test_feedback_reaches_the_student(klass):
+    home = klass["homes"]["ann"]
+    pages = [
+        os.path.join(root, f)
+        for root, _, files in os.walk(os.path.join(home, "A"))
+        for f in files
+        if f.endswith(".html")
+    ]
+    assert len(pages) == 1, pages
+    assert re.search(r"Graded against the values of student ann\b", open(pages[0]).read())

@@ -14,6 +14,7 @@ import importlib
 import json
 import os
 import re
+import stat
 import subprocess
 import sys
 import time
@@ -81,15 +82,49 @@ def course_snapshot(course):
             if f in skip:
                 continue
             path = os.path.join(root, f)
-            with open(path, "rb") as fh:
-                digest[os.path.relpath(path, course)] = hashlib.sha256(fh.read()).hexdigest()
+            st = os.lstat(path)
+            if os.path.islink(path):  # a link is its target's name, never followed
+                digest[os.path.relpath(path, course)] = "link to " + os.readlink(path)
+            elif not stat.S_ISREG(st.st_mode):
+                digest[os.path.relpath(path, course)] = "special file"
+            else:
+                with open(path, "rb") as fh:
+                    digest[os.path.relpath(path, course)] = hashlib.sha256(fh.read()).hexdigest()
     return digest
 
 
 def sandbox_processes():
-    """Processes of the sandbox users (uids 61000 and up) still alive."""
+    """Processes of the sandbox users (uids 61000 and up) still alive that run this
+    Python (another grader on the same machine has its own)."""
     out = subprocess.run(["ps", "-eo", "uid=,pid=,args="], capture_output=True, text=True).stdout
-    return [line for line in out.splitlines() if line.split() and int(line.split()[0]) >= 61000]
+    ours = os.path.dirname(sys.executable)
+    return [
+        line
+        for line in out.splitlines()
+        if line.split() and int(line.split()[0]) >= 61000 and ours in line
+    ]
+
+
+def collected_at(course, student, notebook, when):
+    """Record ``when`` as the exchange's time of a submission, as accelab's collect
+    does (the time the grader goes by; timestamp.txt only says what the student
+    wrote): here, a time after the due date."""
+    from accelab.exercises.grader import intake
+
+    with open(os.path.join(os.path.dirname(notebook), "timestamp.txt"), "w") as fh:
+        fh.write(when)  # collect writes the exchange's time there too
+    intake.write_record(
+        course,
+        "A",
+        student,
+        {
+            "source": "exchange",
+            "student": student,
+            "time": when,
+            "notes": [],
+            "notebook": intake.sha256_of(notebook),
+        },
+    )
 
 
 def lingering_sandbox_processes(wait=20.0):
@@ -390,7 +425,80 @@ def script_for_the_instructor(course, units, name_of):
     return outside(course, "script_for_the_instructor"), edit
 
 
-ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge", "linked"]
+#: a value with any units text: what a forged object in the kernel can report
+ODD = "class Odd:\n    def __init__(self, m, u):\n        self.magnitude, self.units = m, u\n"
+
+
+@attack
+def units_power(course, units, name_of):
+    """Every answer a value whose units text is 'm/s**2 * 9**9**8': a power the grader
+    would compute for hours, for this student and again for each other's key."""
+    return {n: ODD + f"{n} = Odd(1.0, 'm/s**2 * 9**9**8')" for n in units}, None
+
+
+@attack
+def units_db(course, units, name_of):
+    """One answer in 'm/s**2*dB' (pint parses it, but cannot use it); the rest right."""
+    code = outside(course, "units_db")
+    first = next(iter(code))
+    code[first] = ODD + f"{first} = Odd(1.0, 'm/s**2*dB')"
+    return code, None
+
+
+FLOOD = """
+import struct, sys, zlib, base64
+def png(width, height):
+    def chunk(kind, data):
+        crc = struct.pack(">I", zlib.crc32(kind + data))
+        return struct.pack(">I", len(data)) + kind + data + crc
+    head = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
+    return base64.b64encode(b"\\x89PNG\\r\\n\\x1a\\n" + chunk(b"IHDR", head)
+        + chunk(b"IDAT", zlib.compress(b"\\x00\\x00")) + chunk(b"IEND", b"")).decode()
+import gc
+main = next(  # the kernel's own module's namespace, found among all objects
+    d for d in gc.get_objects() if isinstance(d, dict) and "serve" in d and "run_cell" in d
+)
+tiny, huge = png(1, 1), png(30000, 30000)
+def image(text):
+    return {"output_type": "display_data", "data": {"image/png": text}, "metadata": {}}
+original = main["run_cell"]
+def flood(*args, **kwargs):
+    reply = original(*args, **kwargs)
+    reply["outputs"] = list(reply["outputs"]) + [image(huge)] + [image(tiny)] * 40000
+    return reply
+main["run_cell"] = flood
+"""
+
+
+@attack
+def image_flood(course, units, name_of):
+    """Patch the kernel's run_cell to add a 30000 x 30000 PNG and 40,000 1x1 PNGs to
+    every reply; the answers right."""
+    return own_answers_after(course, "image_flood", FLOOD), None
+
+
+@attack
+def keyring_namespaces(course, units, name_of):
+    """A key added to the sandbox user's keyring; unshare(CLONE_NEWUSER | CLONE_NEWNS);
+    the answers right."""
+    probe = (
+        "import ctypes, os\nlibc = ctypes.CDLL(None, use_errno=True)\n"
+        "libc.syscall.restype = ctypes.c_long\n"
+        "nr = 248 if os.uname().machine == 'x86_64' else 217\n"
+        "key = libc.syscall(nr, b'user', b'accelab', b'left-behind', 11, ctypes.c_int(-4))\n"
+        "print('add_key', key, os.strerror(ctypes.get_errno()))\n"
+        "got = libc.unshare(0x10000000 | 0x00020000)\n"
+        "print('unshare', got, os.strerror(ctypes.get_errno()))\n"
+    )
+    return own_answers_after(course, "keyring_namespaces", probe), None
+
+
+#: submissions whose timestamp.txt is malformed, missing, or in the future
+TIMES = {"badtime": "yesterday-ish 25:99", "notime": None, "futuretime": "2099-01-01 00:00:00 UTC"}
+#: folders in submitted/ whose names are no student id
+BAD_IDS = {os.fsdecode(b"m\xffx"): "m\\xffx", "<img src=x onerror=alert(1)>": "\\x3cimg"}
+
+ROSTER = [*HONEST, *ATTACKS, "absent", "late", "broken", "huge", "linked", "linkextra", *TIMES]
 
 
 @pytest.fixture(scope="module")
@@ -437,9 +545,27 @@ def graded(tmp_path_factory):
         code, edit = make(course, units, None)
         submit(course, "A", name, code, edit=edit)
     submit(course, "A", "stranger", outside(course, "stranger"))  # not on the roster
+    for name in BAD_IDS:  # as if an exchange without accelab's collect had put them there
+        submit(course, "A", name, outside(course, "ann"))
+    for name, text in TIMES.items():
+        folder = os.path.dirname(submit(course, "A", name, outside(course, name)))
+        stamp = os.path.join(folder, "timestamp.txt")
+        if text is None:
+            os.unlink(stamp)
+        else:
+            with open(stamp, "w") as fh:
+                fh.write(text)
+    extra = os.path.dirname(submit(course, "A", "linkextra", outside(course, "linkextra")))
+    secret = os.path.join(os.path.dirname(course), "instructor-secret.txt")
+    with open(secret, "w") as fh:
+        fh.write(SECRET)
+    os.chmod(secret, 0o600)
+    os.symlink(secret, os.path.join(extra, "notes.txt"))
+    os.symlink(os.path.join(course, "gradebook.db"), os.path.join(extra, "gradebook.db"))
+    os.link(secret, os.path.join(extra, "hard.txt"))
+    os.mkfifo(os.path.join(extra, "pipe"))
     late = submit(course, "A", "late", outside(course, "late"))
-    with open(os.path.join(os.path.dirname(late), "timestamp.txt"), "w") as fh:
-        fh.write("2040-01-02 10:00:00.000000 UTC")
+    collected_at(course, "late", late, "2040-01-02 10:00:00.000000 UTC")
     os.makedirs(os.path.join(course, "submitted", "broken", "A"))
     with open(os.path.join(course, "submitted", "broken", "A", "A.ipynb"), "w") as fh:
         fh.write('{"cells": [ ' + SECRET)  # as if collect had copied a secret file
@@ -556,8 +682,25 @@ def test_course_files_and_other_processes_are_invisible(graded):
     assert total(graded, "read_course") == len(graded["names"])  # its own answers still count
 
 
+def set_aside(course):
+    """The files the grader set aside from submissions (links, special files, bad
+    timestamps), by the path they had in the course."""
+    moved = set()
+    root = os.path.join(course, ".accelab", "set-aside", "A")
+    for student in os.listdir(root) if os.path.isdir(root) else []:
+        for dirpath, _, files in os.walk(os.path.join(root, student)):
+            for f in files:
+                rel = os.path.relpath(os.path.join(dirpath, f), os.path.join(root, student))
+                moved.add(os.path.join("submitted", student, "A", rel.split(os.sep, 1)[1]))
+    return moved
+
+
 def test_nothing_outside_a_submission_changed(graded):
-    assert course_snapshot(graded["course"]) == graded["before"]
+    """Only the grader's own changes: what it set aside from submissions."""
+    moved = set_aside(graded["course"])
+    assert {k: v for k, v in graded["before"].items() if k not in moved} == course_snapshot(
+        graded["course"]
+    )
 
 
 def test_a_process_that_outlives_its_notebook_is_gone_and_did_nothing(graded):
@@ -659,12 +802,85 @@ def test_a_students_html_never_runs_in_the_instructors_pages(graded):
 # ---- the instructor's side -------------------------------------------------------------------
 
 
-def test_csv_covers_the_roster_and_the_submitters(graded):
+def test_csv_covers_the_roster_and_names_every_refused_folder(graded):
+    """A folder in submitted/ whose name is not a roster id (not on the roster, not
+    UTF-8, markup) is refused with a note that names it safely, and never stops the
+    others' grading (the honest students' marks are checked above)."""
     rows = graded["rows"]
     assert set(ROSTER) <= set(rows) and "stranger" in rows
     assert rows["absent"]["total"] == "0.0" and "no submission" in rows["absent"]["notes"]
     assert "not on the roster" in rows["stranger"]["notes"]
-    assert rows["stranger"]["total"] == str(float(len(graded["names"])))
+    assert rows["stranger"]["total"] == "0.0" and "not graded" in rows["stranger"]["notes"]
+    for shown in BAD_IDS.values():
+        row = next(r for k, r in rows.items() if k.startswith(shown))
+        assert row["total"] == "0.0" and "was refused" in row["notes"], row
+    text = open(os.path.join(graded["course"], "grades_A.csv"), "rb").read()
+    text.decode("utf-8")  # the CSV is UTF-8 whatever the folders' names
+    assert b"<img" not in text and b"\xff" not in text
+    assert "<img" not in graded["proc"].stdout + graded["proc"].stderr
+    from nbgrader.api import Gradebook
+
+    with Gradebook("sqlite:///" + os.path.join(graded["course"], "gradebook.db")) as gb:
+        ids = {s.id for s in gb.students}
+    assert "stranger" not in ids and not any("<" in i or "\udcff" in i for i in ids)
+
+
+# ---- what a student hands in: units, images, the clock, links -------------------------------
+
+
+def test_units_text_is_read_by_the_one_bounded_reader(graded):
+    """A power of a power costs its answers and nothing more: refused before any
+    arithmetic (the whole run stays quick), and a unit pint cannot use costs only
+    its own answer."""
+    assert total(graded, "units_power") == 0.0
+    assert "cannot read" in feedback_text(graded, "units_power")
+    first = graded["names"][0]
+    assert score(graded, "units_db")[first] == 0.0
+    assert total(graded, "units_db") == len(graded["names"]) - 1, graded["rows"]["units_db"]
+    assert "not graded" not in graded["rows"]["units_db"]["notes"]
+
+
+def test_images_are_capped_by_the_grader_not_the_students_kernel(graded):
+    n = len(graded["names"])
+    assert total(graded, "image_flood") == n
+    page = open(os.path.join(graded["course"], "feedback", "image_flood", "A", "A.html")).read()
+    honest = open(os.path.join(graded["course"], "feedback", "ann", "A", "A.html")).read()
+    assert len(page) < len(honest) + 1_000_000
+    assert page.count("data:image/png") <= honest.count("data:image/png") + 100
+    assert "(one of 30000 x 30000)" in page and "left out outputs" in page
+
+
+def test_no_key_store_and_no_namespaces_in_the_sandbox(graded):
+    text = autograded_text(graded, "keyring_namespaces")
+    assert "add_key -1 Operation not permitted" in text, text[:2000]
+    assert "unshare -1 Operation not permitted" in text
+    assert total(graded, "keyring_namespaces") == len(graded["names"])
+
+
+def test_a_malformed_missing_or_future_timestamp_is_graded_with_a_note(graded):
+    for student in TIMES:
+        row = graded["rows"][student]
+        assert total(graded, student) == len(graded["names"]), row
+        assert "graded as on time" in row["notes"] and "Error" not in row["notes"], row
+        assert "graded as on time" in feedback_text(graded, student)
+        assert "AttributeError" not in feedback_text(graded, student)
+    assert "in the future" in graded["rows"]["futuretime"]["notes"]
+    assert "no timestamp.txt" in graded["rows"]["notime"]["notes"]
+
+
+def test_links_and_special_files_in_a_submission_are_never_followed(graded):
+    course = graded["course"]
+    row = graded["rows"]["linkextra"]
+    assert total(graded, "linkextra") == len(graded["names"]), row
+    for what in ("notes.txt", "gradebook.db", "hard.txt", "pipe"):
+        assert f"{what} in the submission is" in row["notes"], row
+    folder = os.path.join(course, "feedback", "linkextra", "A")
+    assert sorted(os.listdir(folder)) == ["A.html", "submission_secret.txt", "timestamp.txt"]
+    for step in ("autograded", "feedback"):
+        for root, _, files in os.walk(os.path.join(course, step)):
+            for f in files:
+                with open(os.path.join(root, f), "rb") as fh:
+                    assert SECRET.encode() not in fh.read(), (root, f)
 
 
 def test_late_penalty_applies_in_the_csv_as_in_the_feedback(graded):
@@ -755,3 +971,62 @@ def test_the_csv_never_hands_a_spreadsheet_a_formula():
     assert _cell_text('=HYPERLINK("http://x", "ok")') == '\'=HYPERLINK("http://x", "ok")'
     assert [_cell_text(t) for t in ("+1", "-x", "@SUM(A1)")] == ["'+1", "'-x", "'@SUM(A1)"]
     assert _cell_text("ann") == "ann" and _cell_text(-1.5) == -1.5 and _cell_text("") == ""
+
+
+def test_late_work_is_noted_under_every_policy(graded):
+    """nbgrader's default policy takes nothing off late work: the grade table still
+    says it was late (the last test here: it changes the course's policy)."""
+    course = graded["course"]
+    with open(os.path.join(course, "nbgrader_config.py"), "a") as fh:
+        fh.write("c.LateSubmissionPlugin.penalty_method = 'none'\n")
+    proc = accelab("grade", "--course", course, "--assignment", "A", "--student", "late", "--quiet")
+    assert "Traceback" not in proc.stderr
+    with open(os.path.join(course, "grades_A.csv")) as fh:
+        row = next(r for r in csv.DictReader(fh) if r["student"] == "late")
+    assert float(row["total"]) == len(graded["names"]), row
+    assert "late by" in row["notes"] and "no penalty" in row["notes"], row
+
+
+def test_formgraders_submission_page_escapes_the_student_id(graded):
+    """nbgrader's formgrade page prints the student's id and names as HTML; the
+    course's configuration puts accelab's macros in front, which escape them. The
+    page is rendered here as formgrader renders it (its own configuration, then the
+    course's)."""
+    from html.parser import HTMLParser
+
+    from nbconvert.exporters import HTMLExporter
+    from nbgrader.server_extensions.formgrader.formgrader import FormgradeExtension
+
+    from accelab.exercises.grader.grade import load_config
+
+    config = FormgradeExtension().build_extra_config()
+    config.merge(load_config(graded["course"]))
+    exporter = HTMLExporter(config=config)
+    markup = "<img src=x onerror=window.accelabOwned=1>"
+    resources = {
+        "base_url": "/x",
+        "notebook_id": "A",
+        "assignment_id": "A",
+        "submission_id": "s1",
+        "index": 0,
+        "total": 1,
+        "notebook_path": "p",
+        "student": markup,
+        "first_name": None,
+        "last_name": None,
+    }
+    path = os.path.join(graded["course"], "autograded", "ann", "A", "A.ipynb")
+    page, _ = exporter.from_filename(path, resources=resources)
+    assert "&lt;img src=x onerror=window.accelabOwned=1&gt;" in page
+
+    class Live(HTMLParser):
+        found = []
+
+        def handle_starttag(self, tag, attrs):
+            self.found += [v for k, v in attrs if k.startswith("on") and "accelabOwned" in v]
+
+    Live().feed(page)
+    assert Live.found == []
+    resources.update(student="ann", first_name="<b>Ann</b>", last_name="<i>A</i>")
+    page, _ = exporter.from_filename(path, resources=resources)
+    assert "&lt;i&gt;A&lt;/i&gt;, &lt;b&gt;Ann&lt;/b&gt;" in page

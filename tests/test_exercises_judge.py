@@ -177,3 +177,64 @@ def test_a_forged_report_is_refused_briefly_and_never_raises(asked, report):
     verdict = judge(asked, report, EXPECTED if asked is not CHOICE else "gentle", 0.01, 1.0, ureg)
     assert not verdict.ok and verdict.credit == 0
     assert len(verdict.message) < 600, verdict.message[:700]
+
+
+# ---- unit texts: the one bounded reader ---------------------------------------------
+
+HOSTILE_UNITS = [
+    "m/s**2 * 9**9**8",  # a power of a power: hours of arithmetic
+    "m/s**2 * 9**9**6",
+    "((9**99*2)**99*2)**99 * m/s**2",  # a powered group that holds a power
+    "(((((m)))))/s**2",  # nested too deep
+    "m/s**2*dB",  # pint parses it but cannot use it
+    "m/s**2 * degC",
+    "in/s^2" + " " * 200,
+]
+
+
+@pytest.mark.parametrize("units", HOSTILE_UNITS)
+def test_a_hostile_unit_text_costs_its_answer_only_and_is_read_at_once(units):
+    import time
+
+    start = time.perf_counter()
+    verdict = judge(
+        ACC, {"state": "quantity", "magnitude": 1.0, "units": units}, EXPECTED, 0.01, 1.0, ureg
+    )
+    assert time.perf_counter() - start < 0.2
+    assert not verdict.ok and (
+        "cannot read" in verdict.message
+        or "cannot be converted" in verdict.message
+        or "dimension" in verdict.message
+    )
+
+
+def test_the_grader_reads_a_report_once_however_large_the_class():
+    """Whose values a wrong answer holds is asked of every other student's key: each
+    report is read once (the same bounded reader), then compared."""
+    import time
+    from types import SimpleNamespace
+
+    from accelab.exercises.grader import outcome as oc
+    from accelab.exercises.grader.judge import wrong
+
+    asked = {f"a{k}": ACC for k in range(11)}
+    reports = {
+        n: {"state": "quantity", "magnitude": 1.0, "units": "m/s**2 * 9**9**6"} for n in asked
+    }
+    variant = SimpleNamespace(tolerance=0.01, angle_tolerance=1.0)
+    me = SimpleNamespace(student="me", variant=variant, values={n: EXPECTED for n in asked})
+    others = {
+        f"s{k}": SimpleNamespace(values={n: EXPECTED * (k + 2) for n in asked}) for k in range(300)
+    }
+    run = SimpleNamespace(refused=[], loaded=[], reports=reports)
+    result = SimpleNamespace(verdicts={n: wrong(n, "x") for n in asked})
+    calls = []
+    real = oc.read
+    oc.read = lambda *a: calls.append(1) or real(*a)
+    try:
+        start = time.perf_counter()
+        oc._whose_values(me, run, others, [], result, asked)
+        assert time.perf_counter() - start < 1.0
+    finally:
+        oc.read = real
+    assert len(calls) <= len(asked)

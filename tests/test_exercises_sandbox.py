@@ -165,3 +165,86 @@ def test_a_forged_reply_costs_only_the_submission_never_the_grader(command, body
     r = run(command, LOAD, f"body = {body}\n" + FRAME, "x = 2.0")
     assert set(r.cells) == {0, 1, 2, 3}
     assert r.reports["x"].get("magnitude") in (2.0, None)
+
+
+SYSCALLS = """
+import ctypes, os, platform
+libc = ctypes.CDLL(None, use_errno=True)
+libc.syscall.restype = ctypes.c_long
+NR = {"x86_64": {"add_key": 248, "keyctl": 250, "clone": 56},
+      "aarch64": {"add_key": 217, "keyctl": 219, "clone": 220}}[platform.machine()]
+def call(name, *args):
+    got = libc.syscall(NR[name], *args)
+    return got, os.strerror(ctypes.get_errno()) if got < 0 else ""
+"""
+
+
+def test_nothing_passes_between_submissions_through_the_key_store(command):
+    """A key added to the sandbox user's keyring would outlive the submission and be
+    read by the next one graded in the same slot: the key store is refused."""
+    add = (
+        SYSCALLS + "print('add', call('add_key', b'user', b'accelab-left', b'left-behind', 11, "
+        "ctypes.c_int(-4)))\n"
+    )
+    read = (
+        SYSCALLS
+        + "print('search', call('keyctl', 10, ctypes.c_int(-4), b'user', b'accelab-left', 0))\n"
+        "print('proc', open('/proc/keys').read() if os.path.exists('/proc/keys') else '')\n"
+    )
+    first = text(run(command, LOAD, add, "x = 1.0"))
+    second = text(run(command, LOAD, read, "x = 1.0"))
+    assert "add (-1, 'Operation not permitted')" in first, first
+    assert "search (-1, 'Operation not permitted')" in second, second
+    assert "keyring" not in second and "left" not in second, second  # not even key names
+
+
+def test_no_user_namespaces_or_mounts_inside_the_sandbox(command):
+    probe = (
+        SYSCALLS + "print('unshare', libc.unshare(0x10000000 | 0x00020000), "
+        "os.strerror(ctypes.get_errno()))\n"
+        "print('clone', call('clone', 0x10000000 | 17, 0, 0, 0, 0))\n"
+        "print('mount', libc.mount(b'none', b'/tmp', b'tmpfs', 0, None), "
+        "os.strerror(ctypes.get_errno()))\n"
+        "import subprocess\n"
+        "print('unshare(1)', subprocess.run(['unshare', '-Ur', 'true'], capture_output=True)"
+        ".returncode)\n"
+        "pid = os.fork()\n"
+        "os._exit(0) if pid == 0 else print('fork', os.waitpid(pid, 0)[1])\n"
+    )
+    out = text(run(command, LOAD, probe, "x = 1.0"))
+    assert "unshare -1 Operation not permitted" in out, out
+    assert "clone (-1, 'Operation not permitted')" in out
+    assert "mount -1 Operation not permitted" in out
+    assert "unshare(1) 0" not in out
+    assert "fork 0" in out  # an ordinary fork (and the threads of numpy) still work
+
+
+def test_the_supervisor_caps_images_and_outputs_whatever_the_kernel_sends():
+    """The kernel's own caps are the student's to change: the supervisor keeps at
+    most so many outputs and images per cell and submission, and refuses an image
+    whose header says more pixels than a page should decode."""
+    import base64
+    import struct
+    import zlib
+
+    from accelab.exercises.grader.supervisor import Budget, _cell_run, png_size
+
+    def png(width, height):
+        def chunk(kind, data):
+            crc = struct.pack(">I", zlib.crc32(kind + data))
+            return struct.pack(">I", len(data)) + kind + data + crc
+
+        head = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
+        body = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", head) + chunk(b"IEND", b"")
+        return base64.b64encode(body).decode()
+
+    assert png_size(png(3, 4)) == (3, 4) and png_size("aGVsbG8=") is None
+    image = {"output_type": "display_data", "data": {"image/png": png(1, 1)}, "metadata": {}}
+    huge = {"output_type": "display_data", "data": {"image/png": png(30000, 30000)}}
+    budget = Budget(Limits())
+    runs = [_cell_run({"status": "ok", "outputs": [huge] + [image] * 5000}, 0, budget)]
+    runs += [_cell_run({"status": "ok", "outputs": [image] * 50}, 0, budget) for _ in range(9)]
+    kept = [sum("image/png" in o.get("data", {}) for o in r.outputs) for r in runs]
+    assert kept[0] == Limits().images_per_cell and sum(kept) == Limits().total_images
+    assert "one of 30000 x 30000" in runs[0].outputs[-1]["text"]
+    assert all(len(r.outputs) <= Limits().outputs_per_cell + 1 for r in runs)

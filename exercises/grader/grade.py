@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 from ..nbgrader_course import ensure_path
 from ..notebook import read_spec
+from . import intake
 from .nbgrader_step import (
     _LOCK,
     PREPARED,
@@ -57,10 +58,9 @@ class Submission:
 
 
 def submitters(course_dir, assignment):
-    root = os.path.join(course_dir, "submitted")
-    if not os.path.isdir(root):
-        return []
-    return sorted(s for s in os.listdir(root) if os.path.isdir(os.path.join(root, s, assignment)))
+    """The ids of ``submitted/`` with a submission of ``assignment``: folders named by
+    a roster id (:func:`.intake.submissions`; the others are refused with a note)."""
+    return intake.submissions(course_dir, assignment)[0]
 
 
 #: what a course's nbgrader_config.py written by accelab 0.1 imports (before the
@@ -210,6 +210,8 @@ def grade(
     chosen = [s for s in (students or everyone) if s in everyone]
     if only_new:
         chosen = [s for s in chosen if is_new(course_dir, assignment, s)]
+    for student in chosen:  # links set aside, the time read: what nbgrader may read
+        intake.prepare(course_dir, assignment, student)
     timings = {}
     slots = queue.Queue()
     for slot in range(max(1, int(jobs))):
@@ -256,6 +258,7 @@ def grade(
             api.generate_feedback(
                 assignment, student_id=graded[0] if len(graded) == 1 else None, force=True
             )
+    intake.clean_feedback(course_dir, assignment, everyone)
     timings["feedback"] = time.monotonic() - t0
     t0 = time.monotonic()
     path, rows = export_csv(course_dir, assignment, csv_path)
@@ -295,7 +298,8 @@ def zero_and_explain(api, course_dir, assignment, student, problem):
                 g.needs_manual_grade = False
                 names.append(g.name)
         gb.db.commit()
-    save_outcome(course_dir, assignment, Outcome(student, notes=[f"not graded: {reason}"]))
+    notes = [f"not graded: {reason}", *intake.notes_of(course_dir, assignment, student)]
+    save_outcome(course_dir, assignment, Outcome(student, notes=notes))
     folder = os.path.join(course_dir, "feedback", student, assignment)
     os.makedirs(folder, exist_ok=True)
     import html

@@ -12,6 +12,7 @@ import warnings
 import nbformat
 
 from ..nbgrader_course import course_id_of, gradebook, roster_ids
+from . import intake
 from .nbgrader_step import outcome_path, read_submission
 from .plan import TEST_PREFIX
 
@@ -106,12 +107,7 @@ def rows_of(course_dir, assignment):
     """The table rows (dicts), roster first, then other submitters."""
     names = question_names(course_dir, assignment)
     roster = roster_ids(course_dir)
-    submitted_root = os.path.join(course_dir, "submitted")
-    submitters = sorted(
-        s
-        for s in (os.listdir(submitted_root) if os.path.isdir(submitted_root) else [])
-        if os.path.isdir(os.path.join(submitted_root, s, assignment))
-    )
+    submitters, refused = intake.submissions(course_dir, assignment, roster)
     students = list(dict.fromkeys([*roster, *submitters]))
     rows = []
     with warnings.catch_warnings(), gradebook(course_dir, course_id_of(course_dir)) as gb:
@@ -142,11 +138,15 @@ def rows_of(course_dir, assignment):
                             if name in row:
                                 row[name] = float(g.score or 0.0)
                     penalty = float(sub.late_submission_penalty or 0.0)
-                    if penalty:
+                    if penalty or float(sub.total_seconds_late or 0.0) > 0:  # under every policy
                         notes.append(
-                            f"late by {_duration(sub.total_seconds_late)}: penalty {penalty:g}"
+                            f"late by {_duration(sub.total_seconds_late)}"
+                            + (f": penalty {penalty:g}" if penalty else ": no penalty")
                         )
                     notes += outcome.get("notes", [])
+                notes += [
+                    n for n in intake.notes_of(course_dir, assignment, student) if n not in notes
+                ]
                 notes += damage(course_dir, assignment, student)
             score = sum(row.values())
             rows.append(
@@ -160,6 +160,18 @@ def rows_of(course_dir, assignment):
                     "notes": "; ".join(notes),
                 }
             )
+    for folder, reason in refused:  # named safely; never graded, never in the gradebook
+        rows.append(
+            {
+                "student": folder,
+                **{n: 0.0 for n in names},
+                "score": 0.0,
+                "late_penalty": 0.0,
+                "total": 0.0,
+                "max": float(len(names)),
+                "notes": f"not graded: the folder submitted/{folder}/ was refused: {reason}",
+            }
+        )
     return names, rows
 
 

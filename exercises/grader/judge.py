@@ -43,7 +43,14 @@ def judge(asked, report, expected, tolerance, angle_tolerance, ureg):
 
     ``expected`` is the key: an SI float, or the right word.
     """
-    reading = read(asked, report, ureg)
+    return judge_reading(
+        asked, read(asked, report, ureg), expected, tolerance, angle_tolerance, ureg
+    )
+
+
+def judge_reading(asked, reading, expected, tolerance, angle_tolerance, ureg):
+    """:func:`judge` of a report already read (:func:`~accelab.exercises.student.answers.read`):
+    a report is read once, however many keys it is compared with."""
     name = asked.name
     if not reading.ok:
         return wrong(name, f"{name}: {reading.problem}")

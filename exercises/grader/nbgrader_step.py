@@ -24,7 +24,9 @@ import nbformat
 from nbgrader.preprocessors import NbGraderPreprocessor
 from traitlets import Bool, Float, Integer
 
+from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
+from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
@@ -57,15 +59,10 @@ def cached_key(spec, student):
 def other_keys(spec, course_dir, me):
     """Keys of the other students of the course (roster and submitters) and of
     the self-study variant, to tell whose values a wrong answer holds."""
-    ids = {"self-study"}
-    for folder in ("submitted",):
-        root = os.path.join(course_dir, folder)
-        if os.path.isdir(root):
-            ids.update(os.listdir(root))
-    roster = os.path.join(course_dir, ".accelab", "roster.json")
-    if os.path.exists(roster):
-        with open(roster) as fh:
-            ids.update(str(s) for s in json.load(fh))
+    roster = roster_ids(course_dir)
+    ids = {"self-study", *roster}
+    for assignment in (spec.get("assignment"),) if isinstance(spec, dict) else ():
+        ids.update(submissions(course_dir, str(assignment), roster)[0])
     ids.discard(me)
     return {s: cached_key(spec, s) for s in sorted(ids)}
 
@@ -169,6 +166,7 @@ class JudgeSubmission(NbGraderPreprocessor):
         )
         shown = shown_ids(submitted) if submitted is not None else []
         outcome = judge_run(key, steps, run, other_keys(spec, course_dir, student), shown)
+        outcome.notes += notes_of(course_dir, assignment, student)  # who and when
         write_notebook(nb, steps, run, outcome)
         save_outcome(course_dir, assignment, outcome)
         return nb, resources

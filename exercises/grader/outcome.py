@@ -11,7 +11,8 @@ import nbformat
 from accelab.solver.units import ureg
 
 from ..student.answers import read
-from .judge import Verdict, judge, wrong
+from .intake import shown
+from .judge import Verdict, judge, judge_reading, wrong
 from .plan import answer_cells
 
 #: what the feedback calls each kind of cell failure
@@ -104,14 +105,18 @@ def _whose_values(key, run, others, shown, outcome, asked):
             f"not the submitter's; it was graded against {me}'s own values"
         )
     wrong_names = [n for n, v in outcome.verdicts.items() if not v.ok]
+    # each wrong answer's report is read once (the one bounded reader), then compared
+    # with every other student's key: the cost does not grow with the class times the text
+    readings = {
+        n: read(asked[n], run.reports.get(n), ureg)
+        for n in wrong_names
+        if isinstance(run.reports.get(n), dict) and asked[n].kind != "choice"
+    }
+    readings = {n: r for n, r in readings.items() if r.ok}
     for other, other_key in others.items():
-        if other == me or not wrong_names:
+        if other == me or not readings:
             continue
-        hits = [
-            n
-            for n in wrong_names
-            if _matches(asked[n], run.reports.get(n), other_key, n, key.variant)
-        ]
+        hits = [n for n in readings if _matches(asked[n], readings[n], other_key, n, key.variant)]
         if hits and len(hits) >= max(1, len(wrong_names) // 2):
             notes.append(
                 f"{len(hits)} answer(s) ({', '.join(hits)}) hold the values of "
@@ -125,16 +130,17 @@ def _whose(student, others):
         return "the self-study variant"
     if student in others:
         return f"student {student}"
-    return f"an unknown student id {student!r}"
+    return f"an unknown student id {shown(student)}"  # the kernel's text, shown safely
 
 
-def _matches(asked, report, other_key, name, variant):
-    if not isinstance(report, dict) or asked.kind == "choice":
-        return False
+def _matches(asked, reading, other_key, name, variant):
     expected = other_key.values.get(name)
     if expected is None:
         return False
-    return judge(asked, report, expected, variant.tolerance, variant.angle_tolerance, ureg).ok
+    verdict = judge_reading(
+        asked, reading, expected, variant.tolerance, variant.angle_tolerance, ureg
+    )
+    return verdict.ok
 
 
 def shown_ids(nb):

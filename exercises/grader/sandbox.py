@@ -9,7 +9,9 @@ and of ``accelab.exercises`` only its ``__init__`` and the student-side subpacka
 Not the course folder, other submissions, the source notebooks, the gradebook,
 the instructor's files or environment (the environment is cleared), nor the
 network (a network namespace with only loopback). Every process it starts dies
-with it (PID namespace; ``--die-with-parent``).
+with it (PID namespace; ``--die-with-parent``). A seccomp filter
+(:mod:`.seccomp`) refuses the kernel's key store, new namespaces and mounts, so
+nothing passes from one submission to the next graded as the same user.
 
 Run as root (a grading machine or CI), bwrap sets the sandbox up with full
 privileges and ``setpriv`` drops to a uid of its own per parallel slot
@@ -27,6 +29,8 @@ import subprocess
 import sys
 import tempfile
 
+from . import seccomp
+
 #: first uid of the sandbox users when grading as root (one per parallel slot)
 BASE_UID = 61000
 #: what the sandbox shows of ``accelab.exercises``: everything else of it is hidden
@@ -40,6 +44,22 @@ INSTALL_HINT = (
     "user namespaces grade as root or allow them "
     "(`sysctl kernel.unprivileged_userns_clone=1`)"
 )
+
+
+class Command(list):
+    """A command line, and the file descriptors to pass to it (``pass_fds``): the
+    caller closes them once the process has started (:func:`close_fds`)."""
+
+    fds = ()
+
+
+def close_fds(cmd):
+    """Close the descriptors a :class:`Command` holds (once its process started)."""
+    for fd in getattr(cmd, "fds", ()):
+        try:
+            os.close(fd)
+        except OSError:
+            pass
 
 
 class SandboxUnavailable(RuntimeError):
@@ -68,7 +88,7 @@ class SandboxCommand:
 
     def _etc_files(self):
         """A passwd and group that name the sandbox's user (getpass and friends)."""
-        if self._etc is None:
+        if self._etc is None or not os.path.isfile(os.path.join(self._etc, "group")):
             folder = tempfile.mkdtemp(prefix="accelab-etc-")
             with open(os.path.join(folder, "passwd"), "w") as fh:
                 fh.write(
@@ -115,9 +135,11 @@ class SandboxCommand:
         for name in ("ld.so.cache", "localtime", "nsswitch.conf"):
             if os.path.exists(f"/etc/{name}"):
                 args += ["--ro-bind", f"/etc/{name}", f"/etc/{name}"]
+        args += ["--proc", "/proc"]
+        for name in ("keys", "key-users"):  # no key of the machine's, not even its name
+            if os.path.exists(f"/proc/{name}"):
+                args += ["--ro-bind", "/dev/null", f"/proc/{name}"]
         args += [
-            "--proc",
-            "/proc",
             "--dev",
             "/dev",
             "--perms",
@@ -154,6 +176,11 @@ class SandboxCommand:
         args += ["--perms", "1777", "--dir", WORKDIR, "--chdir", WORKDIR]
         for key, value in (env or {}).items():
             args += ["--setenv", key, value]
+        rules = seccomp.program()
+        fds = ()
+        if rules is not None:
+            fds = (seccomp.filter_fd(rules),)
+            args += ["--seccomp", str(fds[0])]
         args += ["--"]
         if _as_root():
             uid = str(BASE_UID + int(slot))
@@ -166,7 +193,9 @@ class SandboxCommand:
                 "--bounding-set=-all",
                 "--no-new-privs",
             ]
-        return args + list(argv)
+        cmd = Command(args + list(argv))
+        cmd.fds = fds
+        return cmd
 
     @staticmethod
     def _inside(path, bound):
@@ -200,13 +229,16 @@ def sandbox():
         "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
         "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)"
     )
+    cmd = None
     try:
         cmd = builder.command([sys.executable, "-I", "-c", probe], env={"PATH": "/usr/bin"})
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=60, pass_fds=cmd.fds)
     except SandboxUnavailable:
         raise
     except (OSError, subprocess.SubprocessError) as exc:
         raise SandboxUnavailable(f"bubblewrap could not run ({exc}): {INSTALL_HINT}") from None
+    finally:
+        close_fds(cmd)
     if proc.returncode != 0 or proc.stdout.strip() != "True":
         detail = (proc.stderr.strip().splitlines() or ["no output"])[-1][:300]
         raise SandboxUnavailable(

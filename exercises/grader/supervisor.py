@@ -23,7 +23,7 @@ import time
 from dataclasses import dataclass, field
 
 from ..student.kernel import MAX_FRAME
-from .sandbox import WORKDIR
+from .sandbox import WORKDIR, close_fds
 
 #: seconds the sandbox may take to start and take the statement
 START_SECONDS = 30.0
@@ -44,6 +44,16 @@ class Limits:
     disk_bytes: int = 64 << 20  # [bytes] its /tmp (a tmpfs)
     output_chars: int = 20000  # [characters] kept per stream and cell
     total_output_chars: int = 200000  # [characters] kept over the whole submission
+    # caps paid here, in the grader's process (the kernel's own caps are the student's to
+    # change): what one submission can put into its feedback page and the gradebook
+    outputs_per_cell: int = 100  # outputs kept per cell (streams, displays)
+    total_outputs: int = 1000  # outputs kept over the whole submission
+    images_per_cell: int = 20  # PNG images kept per cell
+    total_images: int = 100  # PNG images kept over the whole submission
+    image_bytes: int = 1 << 20  # [bytes] largest PNG image kept (decoded)
+    total_image_bytes: int = 8 << 20  # [bytes] PNG images kept over the whole submission
+    image_side: int = 4000  # [pixels] widest and tallest PNG image kept
+    image_pixels: int = 8_000_000  # [pixels] largest PNG image kept (width x height)
 
     def for_kernel(self):
         return {
@@ -113,10 +123,12 @@ class Kernel:
         cmd_r, cmd_w = os.pipe()
         rep_r, rep_w = os.pipe()
         argv = argv_of(cmd_r, rep_w)
+        cmd = None
         try:
+            cmd = self.command(argv, env)
             self.proc = subprocess.Popen(
-                self.command(argv, env),
-                pass_fds=(cmd_r, rep_w),
+                cmd,
+                pass_fds=(cmd_r, rep_w, *getattr(cmd, "fds", ())),
                 stdin=subprocess.DEVNULL,
                 stdout=subprocess.DEVNULL,
                 stderr=subprocess.PIPE,
@@ -125,6 +137,7 @@ class Kernel:
         finally:
             os.close(cmd_r)
             os.close(rep_w)
+            close_fds(cmd)
         self.cmd_w, self.rep_r = cmd_w, rep_r
 
     def call(self, message, seconds):
@@ -233,7 +246,7 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
     cells, reports = {}, {}
     loaded, refused = [], []
     done = []  # indices of code steps that ran to the end (replayed after a restart)
-    output_left = [limits.total_output_chars]
+    budget = Budget(limits)
     starts = 0
     kernel = None
 
@@ -301,7 +314,7 @@ def run_plan(steps, statement, command, limits=Limits(), slot=0):
                 reply = kernel.call(
                     {"op": "run", "source": step.source}, min(limits.cell_seconds, left)
                 )
-                cells[k] = _readable(_cell_run, reply, time.monotonic() - t0, output_left)
+                cells[k] = _readable(_cell_run, reply, time.monotonic() - t0, budget)
                 done.append(k)
             else:
                 reply = kernel.call(
@@ -373,14 +386,125 @@ def _note_loaded(reply, loaded, refused):
             refused.append(other[:100])
 
 
-def _cell_run(reply, seconds, output_left):
+class Budget:
+    """What a submission may still put into its outputs, over the whole run and in
+    the cell at hand (:class:`Limits`); kept here, outside the sandbox."""
+
+    def __init__(self, limits):
+        self.limits = limits
+        self.chars = limits.total_output_chars
+        self.outputs = limits.total_outputs
+        self.images = limits.total_images
+        self.image_bytes = limits.total_image_bytes
+        self.new_cell()
+
+    def new_cell(self):
+        self.cell_outputs = self.limits.outputs_per_cell
+        self.cell_images = self.limits.images_per_cell
+        self.cell_chars = {"stdout": self.limits.output_chars, "stderr": self.limits.output_chars}
+        self.left_out = {}  # why -> how many outputs of this cell were left out
+
+    def leave_out(self, why):
+        self.left_out[why] = self.left_out.get(why, 0) + 1
+
+    def take_text(self, text, stream=None):
+        room = self.chars if stream is None else min(self.chars, self.cell_chars[stream])
+        kept = text[: max(room, 0)]
+        self.chars -= len(kept)
+        if stream is not None:
+            self.cell_chars[stream] -= len(kept)
+        return kept
+
+    def take_output(self):
+        if self.outputs <= 0 or self.cell_outputs <= 0:
+            self.leave_out(
+                f"outputs past {self.limits.outputs_per_cell} a cell or "
+                f"{self.limits.total_outputs} in the notebook"
+            )
+            return False
+        self.outputs -= 1
+        self.cell_outputs -= 1
+        return True
+
+    def take_image(self, png):
+        """Whether the image (base64 text) is kept; the reason is noted when not."""
+        if self.images <= 0 or self.cell_images <= 0:
+            self.leave_out(
+                f"images past {self.limits.images_per_cell} a cell or "
+                f"{self.limits.total_images} in the notebook"
+            )
+            return False
+        if len(png) > (self.limits.image_bytes * 4) // 3 + 4:
+            self.leave_out(f"images over {self.limits.image_bytes >> 10} KiB")
+            return False
+        size = png_size(png)
+        if size is None:
+            self.leave_out("images that are not PNG files")
+            return False
+        width, height = size
+        side, pixels = self.limits.image_side, self.limits.image_pixels
+        if width > side or height > side or width * height > pixels:
+            self.leave_out(
+                f"images over {side} x {side} pixels or {pixels / 1e6:g} million pixels "
+                f"(one of {width} x {height})"
+            )
+            return False
+        nbytes = len(png) * 3 // 4
+        if nbytes > self.image_bytes:
+            self.leave_out(f"images over {self.limits.total_image_bytes >> 20} MiB in all")
+            return False
+        self.images -= 1
+        self.cell_images -= 1
+        self.image_bytes -= nbytes
+        return True
+
+    def note(self):
+        """A stream output that says what of this cell was left out, or None."""
+        if not self.left_out:
+            return None
+        parts = [f"{why}: {n}" for why, n in self.left_out.items()]
+        return {
+            "output_type": "stream",
+            "name": "stderr",
+            "text": f"[the grader left out outputs of this cell ({'; '.join(parts)})]\n",
+        }
+
+
+#: a PNG file's first bytes, then its IHDR chunk (length 13) with the width and height
+PNG_HEAD = b"\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR"
+
+
+def png_size(text):
+    """(width, height) [pixels] of a base64 PNG image, from its header alone, or None
+    when it is not base64 of a PNG file."""
+    import base64
+    import binascii
+
+    if not isinstance(text, str):
+        return None
+    try:
+        head = base64.b64decode(text[:44].encode("ascii"), validate=True)
+        if len(text) % 4 or not head.startswith(PNG_HEAD) or len(head) < 24:
+            return None
+        base64.b64decode(text.encode("ascii"), validate=True)  # the whole text is base64
+    except (binascii.Error, UnicodeEncodeError, ValueError):
+        return None
+    width, height = struct.unpack(">II", head[16:24])
+    return width, height
+
+
+def _cell_run(reply, seconds, budget):
     """A :class:`CellRun` from a run reply, its outputs checked and capped."""
+    budget.new_cell()
     outputs = []
     given = reply.get("outputs")
     for out in given if isinstance(given, list) else []:
-        clean = _clean_output(out, output_left)
+        clean = _clean_output(out, budget)
         if clean:
             outputs.append(clean)
+    note = budget.note()
+    if note:
+        outputs.append(note)
     if reply.get("status") == "ok":
         return CellRun("ok", outputs, seconds=seconds)
     ename = str(reply.get("ename", "Error"))[:100]
@@ -396,35 +520,28 @@ def _cell_run(reply, seconds, output_left):
     return CellRun("error", outputs, f"this cell raised {ename}: {evalue[:300]}", seconds)
 
 
-def _clean_output(out, left):
+def _clean_output(out, budget):
     """Only stream text, plain-text displays and PNG images, within the budget."""
     if not isinstance(out, dict):
         return None
     kind = out.get("output_type")
     if kind == "stream" and out.get("name") in ("stdout", "stderr"):
-        text = str(out.get("text", ""))[: max(left[0], 0)]
-        left[0] -= len(text)
+        text = out.get("text", "")
+        if not isinstance(text, str) or not text or not budget.take_output():
+            return None
+        text = budget.take_text(text, out["name"])
         return {"output_type": "stream", "name": out["name"], "text": text} if text else None
     if kind == "display_data" and isinstance(out.get("data"), dict):
-        data = {}
         text = out["data"].get("text/plain")
-        if isinstance(text, str) and left[0] > 0:
-            data["text/plain"] = text[: left[0]]
-            left[0] -= len(data["text/plain"])
         png = out["data"].get("image/png")
-        if isinstance(png, str) and left[0] > 0 and _is_base64(png):
+        if not (isinstance(text, str) or isinstance(png, str)) or not budget.take_output():
+            return None
+        data = {}
+        if isinstance(png, str) and budget.take_image(png):
             data["image/png"] = png
-            left[0] -= len(png) // 20  # an image costs a twentieth of its size in text
+        if isinstance(text, str):
+            kept = budget.take_text(text[: budget.limits.output_chars])
+            if kept:
+                data["text/plain"] = kept
         return {"output_type": "display_data", "data": data, "metadata": {}} if data else None
     return None
-
-
-def _is_base64(text):
-    import base64
-    import binascii
-
-    try:
-        base64.b64decode(text.encode("ascii"), validate=True)
-        return True
-    except (binascii.Error, UnicodeEncodeError, ValueError):
-        return False

@@ -20,7 +20,11 @@ import math
 import numbers
 from dataclasses import asdict, dataclass, field
 
-#: longest unit text and answer text read from a report [characters]
+from accelab.solver.units import read_units
+
+#: longest unit text a report carries and answer text read from a report [characters]
+#: (a unit text is then read by :func:`accelab.solver.units.read_units`, which takes
+#: at most :data:`accelab.solver.units.MAX_TEXT` characters)
 MAX_UNITS = 200
 MAX_TEXT = 200
 
@@ -233,23 +237,19 @@ def _short(value, quote=True, limit=60):
 
 
 def _read_quantity(asked, x, units_text, asked_unit, ureg):
+    """The reading of a Quantity's report: its unit text read by the package's one
+    bounded reader (:func:`accelab.solver.units.read_units`); anything about the
+    units that cannot be read or used costs this answer only."""
     name = asked.name
     try:
-        if len(units_text) > MAX_UNITS:
-            raise ValueError("too long")
-        units = (
-            ureg.parse_units(units_text)
-            if units_text not in ("", "dimensionless")
-            else ureg.Unit("")
-        )
-    except Exception:  # noqa: BLE001 - pint raises many types; the reading says what is wrong
+        units = read_units(units_text, name)
+        want, got = asked_unit.dimensionality, units.dimensionality
+    except Exception:  # noqa: BLE001 - InvalidInput, or pint's own for units it cannot use
         return Reading(
             name,
-            problem=f"`{name}` has units {units_text[:60]!r} that this course "
-            "cannot read; use units such as "
-            f"{asked.unit or 'a plain number'!r}",
+            problem=f"`{name}` has units {_short(units_text, limit=60)} that this course "
+            f"cannot read; use units such as {asked.unit or 'a plain number'!r}",
         )
-    want, got = asked_unit.dimensionality, units.dimensionality
     if want != got:
         return Reading(
             name,
@@ -259,12 +259,19 @@ def _read_quantity(asked, x, units_text, asked_unit, ureg):
                 "wrong dimension"
             ),
         )
-    want_rad = _radian_power(ureg.Quantity(1.0, asked_unit))
-    got_rad = _radian_power(ureg.Quantity(1.0, units))
+    try:
+        want_rad = _radian_power(ureg.Quantity(1.0, asked_unit))
+        got_rad = _radian_power(ureg.Quantity(1.0, units))
+        si = ureg.Quantity(x, units).to_base_units().magnitude
+    except Exception:  # noqa: BLE001 - an offset unit (degC) or one pint cannot convert
+        return Reading(
+            name,
+            problem=f"`{name}` has units {units:~} that cannot be converted plainly; use "
+            f"units such as {asked.unit or 'a plain number'!r}",
+        )
     if want_rad != got_rad:
         return Reading(name, problem=_angle_unit_message(asked, units, want_rad, got_rad))
-    si = ureg.Quantity(x, units).to_base_units().magnitude
-    if not math.isfinite(si):
+    if not isinstance(si, (int, float)) or not math.isfinite(si):
         return Reading(name, problem=f"`{name}` is not a finite number in SI units")
     return Reading(name, si=float(si))
 

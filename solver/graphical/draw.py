@@ -214,21 +214,58 @@ def _clip(point, u, box):
     return point + lo * u, point + hi * u
 
 
-def _construction_line(ax, labels, point, direction, name, box, letters=True, obstacles=None):
+def _line_segment(point, direction, box):
+    """The part of a construction line that a drawing of frame ``box`` shows."""
     u = direction / abs(direction)
     x0, x1, y0, y1 = box
     inset = 0.04 * max(x1 - x0, y1 - y0)
-    seg = _clip(point, u, (x0 + inset, x1 - inset, y0 + inset, y1 - inset))
+    return _clip(point, u, (x0 + inset, x1 - inset, y0 + inset, y1 - inset))
+
+
+def _construction_line(ax, labels, point, direction, name, box, letters=True, halo=False):
+    seg = _line_segment(point, direction, box)
     if seg is None:
         return
     z0, z1 = seg
-    if obstacles is not None:
-        obstacles.extend(z0 + (z1 - z0) * k / 30 for k in range(31))
+    if halo:
+        _halo(ax, z0, z1 - z0)
     ax.plot([z0.real, z1.real], [z0.imag, z1.imag], zorder=3, **style.CONSTRUCTION_LINE)
     labels.avoid(z0, z1, weight=0.12, width=1.0)
     if name and letters:
         for z in (z0, z1):
             labels.add_fixed(name[0], z, color="#555555", style="italic", fontsize=style.FONT_SIZE)
+
+
+def _halo(ax, start, vector, offset=0j):
+    """A broad pale band under a vector or line: what the step being shown adds."""
+    tip = start + vector
+    ax.plot(
+        [start.real, tip.real],
+        [start.imag, tip.imag],
+        transform=_offset(ax, offset),
+        **style.HIGHLIGHT,
+    )
+
+
+def _samples(z0, z1, n):
+    """n + 1 points from z0 to z1: what an inset should not cover."""
+    return [z0 + (z1 - z0) * k / n for k in range(n + 1)]
+
+
+def _obstacles(pairs, vectors, lines, box):
+    """Points along the links (``pairs`` of ends), the vectors ((start, vector))
+    and the construction lines ((point, direction), as clipped to ``box``) of a
+    complete diagram: an inset is placed where they are fewest."""
+    out = []
+    for z0, z1 in pairs:
+        out += _samples(z0, z1, 40)
+    for point, direction in lines:
+        seg = _line_segment(point, direction, box)
+        if seg is not None:
+            out += _samples(seg[0], seg[1], 30)
+    for s, v in vectors:
+        out += _samples(s, s + v, 20)
+    return out
 
 
 def _extent(points):
@@ -327,6 +364,21 @@ def _mathtext(text):
     return _SYMBOL.sub(sub, text).replace("^2", "$^2$")
 
 
+def _added_by(con, step):
+    """The arrows and lines that ``step`` itself adds (none for no step)."""
+    if step is None:
+        return ()
+    n = con.index(step)
+    if n == 0:
+        return ()
+    s = con.steps[n - 1]
+    return tuple(s.arrows) + tuple(s.lines)
+
+
+def _among(item, items):
+    return any(item is x for x in items)
+
+
 def _label_colour(kind):
     return "black" if kind == "resultant" else style.component(kind)["color"]
 
@@ -350,11 +402,37 @@ def _tiny(vectors, size, ppd=None):
     return [i for i, v in enumerate(vectors) if 0 < abs(v) < short]
 
 
+def _leader(region, rect):
+    """The leader from a magnified region to its inset: (start, end) in data
+    units, or None when the two touch. ``region`` and ``rect`` are
+    (x0, x1, y0, y1)."""
+    centre = complex((region[0] + region[1]) / 2, (region[2] + region[3]) / 2)
+    half = (region[1] - region[0]) / 2
+    inset_centre = complex((rect[0] + rect[1]) / 2, (rect[2] + rect[3]) / 2)
+    d = inset_centre - centre
+    if abs(d) == 0:
+        return None
+    a = centre + d / abs(d) * half * 1.05
+    hw, hh = (rect[1] - rect[0]) / 2, (rect[3] - rect[2]) / 2
+    t = min(hw / abs(d.real) if d.real else math.inf, hh / abs(d.imag) if d.imag else math.inf)
+    b = inset_centre - d * min(t, 1.0)
+    if abs(b - centre) <= abs(a - centre):
+        return None
+    return a, b
+
+
+def _near_segment(z, a, b, tol):
+    d = b - a
+    t = max(0.0, min(1.0, ((z - a) * d.conjugate()).real / abs(d) ** 2))
+    return abs(z - (a + t * d)) <= tol
+
+
 def _inset_spot(ax, region, box, obstacles, frac):
     """Where to put an inset of width ``frac`` (axes fraction): of the corners
     and edge middles of the drawing box, the one whose rectangle covers the
-    fewest obstacle points and not the magnified region itself. Returns
-    (bounds in axes fraction, number of obstacle points covered)."""
+    fewest obstacle points, whose leader crosses the fewest, and that does not
+    cover the magnified region itself. Returns (bounds in axes fraction, cost:
+    about the number of obstacle points covered)."""
     x0, x1 = ax.get_xlim()
     y0, y1 = ax.get_ylim()
     w = frac
@@ -364,6 +442,7 @@ def _inset_spot(ax, region, box, obstacles, frac):
     by0 = (box[2] - y0) / (y1 - y0)
     by1 = (box[3] - y0) / (y1 - y0)
     xm, ym = (bx0 + bx1 - w) / 2, (by0 + by1 - h) / 2
+    tol = 0.012 * (x1 - x0)  # a leader this close to a line reads as crossing it
     best = None
     for cx, cy in (
         (bx1 - w, by1 - h),
@@ -384,60 +463,143 @@ def _inset_spot(ax, region, box, obstacles, frac):
             if rx0 - m <= z.real <= rx1 + m and ry0 - m <= z.imag <= ry1 + m
         )
         covers = not (region[1] < rx0 or region[0] > rx1 or region[3] < ry0 or region[2] > ry1)
-        cost = inside + (10**6 if covers else 0)
+        crossed = 0.0
+        leader = _leader(region, (rx0, rx1, ry0, ry1))
+        if leader is not None:
+            a, b = leader
+            crossed = sum(
+                0.5
+                for z in obstacles
+                if not (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3])
+                and _near_segment(z, a, b, tol)
+            )
+        cost = inside + crossed + (10**6 if covers else 0)
         if best is None or cost < best[0]:
             best = (cost, (cx, cy, w, h))
     assert best is not None  # the loop tries at least one spot
     return best[1], best[0]
 
 
-def _inset_plan(ax, box, starts, vectors, tiny):
-    """(centre, half side, factor) of the region to magnify around the vectors
-    ``tiny`` (indices), or None when the magnification would be too small to
-    be worth an inset."""
+#: length [pt] a magnified vector is drawn about (within a factor of 2.5: the
+#: magnification is a round number), and the room [pt] around it in the inset
+INSET_TARGET = 46.0
+INSET_MARGIN = 26.0
+
+
+def _inset_plan(ax, box, starts, vectors, tiny, ppd):
+    """(centre, half side, factor, width as a fraction of the axes) of the
+    region to magnify around the vectors ``tiny`` (indices), or None when the
+    magnification would be too small to be worth an inset. The inset is as
+    large as the magnified vectors need, with room for their labels."""
     if not tiny:
         return None
-    size = max(box[1] - box[0], box[3] - box[2])
     ends = [starts[i] for i in tiny] + [starts[i] + vectors[i] for i in tiny]
     x0, x1, y0, y1 = _extent(ends)
     centre = complex((x0 + x1) / 2, (y0 + y1) / 2)
-    half = 0.75 * max(x1 - x0, y1 - y0, 0.35 * TINY * size)
-    width_data = INSET_WIDTH * (ax.get_xlim()[1] - ax.get_xlim()[0])
-    factor = nice(width_data / (2 * half))
+    longest = max(abs(vectors[i]) for i in tiny)
+    factor = _magnification(INSET_TARGET / (longest * ppd))
     if factor < MIN_MAGNIFICATION:
         return None
-    return centre, width_data / factor / 2, factor
+    side_pt = max(max(x1 - x0, y1 - y0) * factor * ppd + 2 * INSET_MARGIN, 2.6 * INSET_MARGIN)
+    width_pt = ax.get_position().width * ax.figure.get_figwidth() * 72.0
+    frac = min(side_pt / width_pt, INSET_WIDTH)
+    half = frac * width_pt / ppd / factor / 2
+    return centre, half, factor, frac
 
 
-def _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles):
-    """Paint the vectors ``drawn`` ((start, vector) pairs) with ``paint``, and
-    those too short to see again in a magnified inset when there is room for
-    one; returns the label layer."""
-    labels = LabelLayer(ax)
-    tiny = _tiny([v for _, v in drawn], span, ppd) if inset else []
-    plan = _inset_plan(ax, box, [s for s, _ in drawn], [v for _, v in drawn], tiny)
+def _magnification(x):
+    """A round magnification (1, 2, 3, 4 or 5 times a power of ten) not above x."""
+    if not x > 0 or not math.isfinite(x):
+        return 1.0
+    e = math.floor(math.log10(x))
+    for m in (5, 4, 3, 2, 1):
+        if m * 10**e <= x * (1 + 1e-12):
+            return m * 10**e
+    return 10**e
+
+
+def _inset_layout(ax, box, every, span, ppd, inset, obstacles):
+    """The inset of a drawing, decided on its complete diagram (``every``: the
+    (start, vector) pairs of all its steps), so that a walk through the steps
+    keeps it in one place: ``(plan, spot, tiny)`` with ``tiny`` the indices of
+    ``every`` it magnifies, or None. Widens the axes when no spot is free."""
+    if not inset:
+        return None
+    tiny = _tiny([v for _, v in every], span, ppd)
+    plan = _inset_plan(ax, box, [s for s, _ in every], [v for _, v in every], tiny, ppd)
     if plan is None:
-        tiny = []
+        return None
+    centre, half, _, frac = plan
+    region = (centre.real - half, centre.real + half, centre.imag - half, centre.imag + half)
+    spot, covered = _inset_spot(ax, region, box, obstacles, frac)
+    if covered > 1.5:  # no free corner: make room beside the drawing
+        spot, plan = _inset_beside(ax, box, plan, obstacles)
+    return plan, spot, tiny
+
+
+def _inset_beside(ax, box, plan, obstacles):
+    """Widen the axes by a strip for the inset, on the side (right or left) and
+    at the height (top, middle, bottom) where its leader crosses the fewest
+    lines; returns ``(spot, plan)``, the plan's region grown as the drawing
+    shrank (the inset magnifies by the same factor)."""
+    centre, half, factor, frac = plan
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    grow = frac / (1 - frac) * (x1 - x0)
+    half = half / (1 - frac)
+    region = (centre.real - half, centre.real + half, centre.imag - half, centre.imag + half)
+    h = frac * (x1 - x0 + grow) / (y1 - y0)
+    tol = 0.012 * (x1 - x0 + grow)
+    top = (box[3] - y0) / (y1 - y0) - h
+    bottom = (box[2] - y0) / (y1 - y0)
+    best = None
+    for side, lims in (("right", (x0, x1 + grow)), ("left", (x0 - grow, x1))):
+        fx = 1 - frac if side == "right" else 0.0
+        for fy in (top, (top + bottom) / 2, bottom):
+            rect = (
+                lims[0] + fx * (lims[1] - lims[0]),
+                lims[0] + (fx + frac) * (lims[1] - lims[0]),
+                y0 + fy * (y1 - y0),
+                y0 + (fy + h) * (y1 - y0),
+            )
+            leader = _leader(region, rect)
+            crossed = 0
+            if leader is not None:
+                crossed = sum(
+                    1
+                    for z in obstacles
+                    if not (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3])
+                    and _near_segment(z, leader[0], leader[1], tol)
+                )
+            if best is None or crossed < best[0]:
+                best = (crossed, lims, (fx, fy, frac, h))
+    assert best is not None  # the loops try at least one spot
+    ax.set_xlim(*best[1])
+    return best[2], (centre, half, factor, frac)
+
+
+def _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles, every=None):
+    """Paint the vectors ``drawn`` ((start, vector) pairs) with ``paint``, and
+    those too short to see again in a magnified inset. ``every`` holds the
+    vectors of the complete diagram (``drawn`` is its first part): the inset
+    is placed for it, and shown once a vector it magnifies is drawn.
+    ``obstacles``: points of the complete diagram. Returns the label layer."""
+    every = drawn if every is None else every
+    layout = _inset_layout(ax, box, every, span, ppd, inset, obstacles)
+    labels = LabelLayer(ax)
+    tiny = [i for i in layout[2] if i < len(drawn)] if layout else []
     paint(ax, labels, None, tiny)
-    if plan:
-        _magnifier(ax, box, plan, tiny, paint, obstacles)
+    if tiny:
+        _magnifier(ax, layout[0], layout[1], tiny, paint)
     return labels
 
 
-def _magnifier(ax, box, plan, tiny, draw, obstacles):
-    """A magnified inset of the region ``plan`` (see :func:`_inset_plan`) around
-    the vectors ``tiny``. ``draw(inset_ax, labels, region, tiny)`` paints the
-    scene into the inset, labelling the tiny vectors."""
-    centre, half, factor = plan
+def _magnifier(ax, plan, spot, tiny, draw):
+    """A magnified inset at ``spot`` (axes fraction) of the region ``plan`` (see
+    :func:`_inset_plan`) around the vectors ``tiny``. ``draw(inset_ax, labels,
+    region, tiny)`` paints the scene into the inset, labelling the tiny vectors."""
+    centre, half, factor, _ = plan
     region = (centre.real - half, centre.real + half, centre.imag - half, centre.imag + half)
-    frac = INSET_WIDTH
-    spot, covered = _inset_spot(ax, region, box, obstacles, frac)
-    if covered > 1.5:  # no free corner: make room beside the drawing, on the right
-        xl = ax.get_xlim()
-        ax.set_xlim(xl[0], xl[1] + frac / (1 - frac) * (xl[1] - xl[0]))
-        xl, yl = ax.get_xlim(), ax.get_ylim()
-        h = frac * (xl[1] - xl[0]) / (yl[1] - yl[0])
-        spot = (1 - frac, (box[3] - yl[0]) / (yl[1] - yl[0]) - h, frac, h)
     inset = ax.inset_axes(spot)
     inset.set_xlim(region[0], region[1])
     inset.set_ylim(region[2], region[3])
@@ -451,6 +613,13 @@ def _magnifier(ax, box, plan, tiny, draw, obstacles):
     inset.patch.set_facecolor("white")
     inset.patch.set_alpha(0.95)
     labels = LabelLayer(inset)
+    # the factor's corner (top left): the labels keep off it
+    w, h = region[1] - region[0], region[3] - region[2]
+    corner = [
+        complex(region[0] + fx * w, region[2] + fy * h) for fx, fy in ((0.0, 0.8), (0.3, 1.0))
+    ]
+    labels.avoid(corner[0], corner[1], width=1.0)
+    labels.avoid(complex(corner[0].real, corner[1].imag), complex(corner[1].real, corner[0].imag))
     draw(inset, labels, region, tiny)
     inset.text(
         0.04,
@@ -480,18 +649,18 @@ def _magnifier(ax, box, plan, tiny, draw, obstacles):
     ix0, iy0, iw, ih = spot
     fx = ax.get_xlim()
     fy = ax.get_ylim()
-    inset_centre = complex(
-        fx[0] + (ix0 + iw / 2) * (fx[1] - fx[0]), fy[0] + (iy0 + ih / 2) * (fy[1] - fy[0])
+    leader = _leader(
+        region,
+        (
+            fx[0] + ix0 * (fx[1] - fx[0]),
+            fx[0] + (ix0 + iw) * (fx[1] - fx[0]),
+            fy[0] + iy0 * (fy[1] - fy[0]),
+            fy[0] + (iy0 + ih) * (fy[1] - fy[0]),
+        ),
     )
-    d = inset_centre - centre
-    if abs(d) > 0:
-        a = centre + d / abs(d) * half * 1.05
-        hw = 0.5 * iw * (fx[1] - fx[0])
-        hh = 0.5 * ih * (fy[1] - fy[0])
-        t = min(hw / abs(d.real) if d.real else math.inf, hh / abs(d.imag) if d.imag else math.inf)
-        b = inset_centre - d * min(t, 1.0)
-        if abs(b - centre) > abs(a - centre):
-            ax.plot([a.real, b.real], [a.imag, b.imag], color="#999999", lw=0.8, zorder=9)
+    if leader is not None:
+        a, b = leader
+        ax.plot([a.real, b.real], [a.imag, b.imag], color="#999999", lw=0.8, zorder=9)
     return True
 
 
@@ -599,6 +768,8 @@ def draw_linkage(
     notes=None,
     colour=None,
     kinds=None,
+    highlight=False,
+    diagram="linkage",
 ):
     """The linkage to scale with the acceleration components at their points.
 
@@ -638,6 +809,12 @@ def draw_linkage(
         Magnify vectors too short to see in an inset.
     lines : bool
         Draw the construction lines (pp, qq).
+    highlight : bool
+        Lay a pale band under what ``step`` itself adds (a walk through the
+        construction shows each step's stroke this way).
+    diagram : str
+        The diagram of the construction whose vectors are drawn on the
+        linkage (default ``"linkage"``).
 
     Returns
     -------
@@ -653,13 +830,14 @@ def draw_linkage(
     lk = con.linkage
     pts = {k: z * lf for k, z in lk.points.items()}
     size = max((abs(p - q) for p in pts.values() for q in pts.values()), default=1.0) or 1.0
-    arrows_all = con.items("linkage")[0] if vectors else []
-    arrows, clines, _ = con.items("linkage", step) if vectors else ([], [], {})
+    arrows_all, clines_all, _ = con.items(diagram) if vectors else ([], [], {})
+    arrows, clines, _ = con.items(diagram, step) if vectors else ([], [], {})
     if kinds is not None:
         arrows_all = [a for a in arrows_all if a.kind in kinds]
         arrows = [a for a in arrows if a.kind in kinds]
     if not lines:
-        clines = []
+        clines = clines_all = []
+    new = _added_by(con, step) if highlight else ()
     if scale is None:
         big = max((abs(a.vector) * af for a in arrows_all), default=0.0)
         scale = 0.55 * size / big if big > 0 else 1.0
@@ -687,7 +865,11 @@ def draw_linkage(
         d = d / abs(d)
         guides.append((p0 * lf - 10 * size * d, p0 * lf + 10 * size * d))
     offsets = _beside(drawn, guides, size)
-    obstacles: list[complex] = []
+    pairs = []
+    for link in lk.links:
+        zs = [pts[n] for n in link]
+        pairs += list(zip(zs, zs[1:] + zs[:1] if len(zs) == 3 else zs[1:]))
+    obstacles = _obstacles(pairs, every, [(ln.point * lf, ln.direction) for ln in clines_all], box)
 
     def paint(target, labels, region=None, tiny=()):
         """Draw the scene on ``target``; the main axes or a magnifying inset."""
@@ -709,8 +891,6 @@ def draw_linkage(
                 pairs = list(zip(zs, zs[1:]))
             for z0, z1 in pairs:
                 labels.avoid(z0, z1, width=style.LINK["linewidth"] if len(link) == 2 else 1.2)
-                if main:
-                    obstacles.extend(z0 + (z1 - z0) * k / 40 for k in range(41))
             if symbols and len(link) == 2:
                 table = link_symbols(con.mechanism)  # the registry's
                 sym = table.get(tuple(link)) or table.get(tuple(reversed(link)))
@@ -767,15 +947,15 @@ def draw_linkage(
                 ln.name,
                 box if main else (region[0], region[1], region[2], region[3]),
                 letters=main,
-                obstacles=obstacles if main else None,
+                halo=_among(ln, new),
             )
         for i, (a, (s, v)) in enumerate(zip(arrows, drawn)):
+            if _among(a, new) and abs(v) > 0:
+                _halo(target, s, v, offsets[i])
             if _arrow(target, s, v, a.kind, ppd_t, offsets[i]):
                 labels.avoid(
                     s, s + v, width=style.component(a.kind)["linewidth"], offset=offsets[i]
                 )
-                if main:
-                    obstacles.extend(s + v * k / 20 for k in range(21))
         for name, z in pts.items():
             if _pretty(name, names) and (
                 main or (region[0] <= z.real <= region[1] and region[2] <= z.imag <= region[3])
@@ -797,7 +977,7 @@ def draw_linkage(
                     priority=1 + (0 if a.kind == "resultant" else 0.5),
                 )
 
-    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
+    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles, every)
     kinds = {a.kind for a in arrows}
     if scale_bars:
         x0, x1, y0, y1 = box
@@ -857,18 +1037,21 @@ def draw_polygon(
     scale_bar=True,
     box=None,
     pole=True,
+    highlight=False,
 ):
     """One polygon: ``diagram`` is ``"velocity"``, ``"acceleration"`` or
     ``"point"``. ``box`` (x0, x1, y0, y1 in the drawing's unit) fixes the frame,
-    so that several polygons are drawn at one scale. Returns ``(figure, kinds
-    drawn, whether construction lines were drawn)``."""
+    so that several polygons are drawn at one scale. ``highlight`` lays a pale
+    band under what ``step`` itself adds. Returns ``(figure, kinds drawn,
+    whether construction lines were drawn)``."""
     own = ax is None
     if own:
         _, ax = plt.subplots(figsize=(6.4, 5.6), layout="constrained")
     quantity, default_title = DIAGRAMS[diagram]
     uname, uf = units_of(con, units)[quantity]
-    arrows_all = con.items(diagram)[0]
+    arrows_all, clines_all, _ = con.items(diagram)
     arrows, clines, _ = con.items(diagram, step)
+    new = _added_by(con, step) if highlight else ()
     drawn = [(a.start * uf, a.vector * uf) for a in arrows]
     every = [(a.start * uf, a.vector * uf) for a in arrows_all]
     ends = [0j] + [s for s, _ in every] + [s + v for s, v in every]
@@ -879,7 +1062,7 @@ def draw_polygon(
     box = _frame(ax, ends, 0.14 * size, strip=0.12 if scale_bar else 0.0, box=box)
     span = max(box[1] - box[0], box[3] - box[2])
     ppd = _pts_per_data(ax)
-    obstacles: list[complex] = []
+    obstacles = _obstacles([], every, [(ln.point * uf, ln.direction) for ln in clines_all], box)
 
     def paint(target, labels, region=None, tiny=()):
         main = region is None
@@ -894,13 +1077,13 @@ def draw_polygon(
                 ln.name,
                 frame,
                 letters=main,
-                obstacles=obstacles if main else None,
+                halo=_among(ln, new),
             )
         for a, (s, v) in zip(arrows, drawn):
+            if _among(a, new) and abs(v) > 0:
+                _halo(target, s, v)
             if _arrow(target, s, v, a.kind, ppd_t):
                 labels.avoid(s, s + v, width=style.component(a.kind)["linewidth"])
-                if main:
-                    obstacles.extend(s + v * k / 20 for k in range(21))
         if pole:
             target.scatter([0.0], [0.0], s=22, color="black", zorder=9)
             labels.avoid_pin(0j, 3.0)
@@ -916,7 +1099,7 @@ def draw_polygon(
                     priority=1 + (0 if a.kind == "resultant" else 0.5),
                 )
 
-    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles)
+    labels = _paint_with_inset(ax, box, drawn, span, ppd, inset, paint, obstacles, every)
     kinds = {a.kind for a in arrows}
     if scale_bar:
         L = nice(0.22 * size)

@@ -15,7 +15,8 @@ resultant     black            solid, bold absolute vectors that close a polygon
 velocity      orange           solid       velocity-polygon vectors
 ============  ===============  ==========  =========================
 
-Construction lines (pp, qq, rr) are thin grey long-dashed lines.
+Construction lines (pp, qq, rr) are thin grey long-dashed lines. In a walk
+through a construction, what the step being shown adds lies on a pale yellow band.
 """
 
 from typing import Any
@@ -72,6 +73,14 @@ COMPONENT = {
 }
 
 CONSTRUCTION_LINE: dict[str, Any] = {"color": "#8c8c8c", "linestyle": (0, (8, 4)), "linewidth": 0.9}
+#: the pale band under what the step being shown adds (a walk through a construction)
+HIGHLIGHT: dict[str, Any] = {
+    "color": "#FFD84D",
+    "alpha": 0.55,
+    "linewidth": 9.0,
+    "solid_capstyle": "round",
+    "zorder": 2.5,
+}
 LINK: dict[str, Any] = {
     "color": "#4d4d4d",
     "linewidth": 4.0,
