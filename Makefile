@@ -44,7 +44,7 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto
 
 test-fast: $(STAMP)
-	$(BIN)/python -m pytest -q -m "not slow"
+	$(BIN)/python -m pytest -q -n auto -m "not slow"
 
 demo: $(STAMP)
 	$(BIN)/accelab demo
