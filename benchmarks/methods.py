@@ -34,6 +34,8 @@ import math
 
 import numpy as np
 
+from accelab.solver.registry import DRAWABLE
+
 from .cases import MOTION
 
 #: finite-difference steps in theta2 [rad]
@@ -300,7 +302,8 @@ def _wrap(x):
 
 
 # --- the graphical construction ---------------------------------------------------
-GRAPHICAL = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar")
+#: the mechanisms with a graphical construction (the registry says which)
+GRAPHICAL = DRAWABLE
 
 
 def _graphical(case, theta2):
