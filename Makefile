@@ -7,7 +7,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv test test-fast demo figures docs bench bench-grading clean
+.PHONY: venv lint typecheck test test-fast demo figures docs bench bench-grading clean
 
 venv: $(STAMP)
 
@@ -25,11 +25,29 @@ $(STAMP): pyproject.toml
 	ln -sfn $(CURDIR)/exercises/lab $(VENV)/share/jupyter/labextensions/accelab-lab
 	touch $(STAMP)
 
+# the linters' versions are pinned in pyproject's `lint` extra
+LINT_STAMP := $(VENV)/.installed-lint
+$(LINT_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e ".[test,lint]"
+	touch $(LINT_STAMP)
+
+# ruff (lint and format, pyproject's rules) and mypy (pyproject's [tool.mypy])
+lint: $(LINT_STAMP)
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+	$(MAKE) --no-print-directory typecheck
+
+# mypy on the package as installed: .ci/layout.py writes its layout as links in build/typecheck
+typecheck: $(LINT_STAMP)
+	$(BIN)/python .ci/layout.py build/typecheck >/dev/null
+	$(BIN)/mypy
+
+# in parallel on every core (pytest-xdist); pyproject's addopts keep shared builds in one worker
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n auto
 
 test-fast: $(STAMP)
-	$(BIN)/python -m pytest -q -m "not slow"
+	$(BIN)/python -m pytest -q -n auto -m "not slow"
 
 demo: $(STAMP)
 	$(BIN)/accelab demo

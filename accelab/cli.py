@@ -25,7 +25,7 @@ EPILOG = """examples:
   accelab solve fourbar a="2 in" b="6 in" c="9 in" d="7 in" theta2="30 deg" omega2="10 rad/s" alpha2="-5 rad/s^2"
   accelab solve --cases cases.json
   accelab demo
-run 'accelab COMMAND --help' for each command's options and an example."""
+run 'accelab COMMAND --help' for each command's options and an example."""  # noqa: E501 - one command a user copies
 
 
 def layers():

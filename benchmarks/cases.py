@@ -380,8 +380,8 @@ def all_cases():
 
 
 def description(case, guess=None):
-    """The case as a loops description (docs/conventions.md#vector-loop-format) (quantity strings), with
-    guesses (default: the case's) for :class:`accelab.solver.VectorLoopLinkage`."""
+    """The case as a loops description (docs/conventions.md#vector-loop-format; quantity
+    strings), with guesses (default: the case's) for :class:`accelab.solver.VectorLoopLinkage`."""
     guess = case.guess if guess is None else guess
     vectors = {}
     for name, v in case.vectors.items():

@@ -34,6 +34,8 @@ import math
 
 import numpy as np
 
+from accelab.solver.registry import DRAWABLE
+
 from .cases import MOTION
 
 #: finite-difference steps in theta2 [rad]
@@ -271,7 +273,7 @@ def fd_with(h):
         def run():
             m = module.solve(**p, theta2=stencil, omega2=0.0, circuit=case.circuit, order=0)
             out = {}
-            for (vec, kind), names in groups.items():
+            for (_vec, kind), names in groups.items():
                 f = np.asarray(getattr(m, names[0]), dtype=float).reshape(5, N)
                 if kind == "angle":  # differences of angles, unwrapped about the centre
                     f = f[2] + np.angle(np.exp(1j * (f - f[2])))
@@ -300,7 +302,8 @@ def _wrap(x):
 
 
 # --- the graphical construction ---------------------------------------------------
-GRAPHICAL = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar")
+#: the mechanisms with a graphical construction (the registry says which)
+GRAPHICAL = DRAWABLE
 
 
 def _graphical(case, theta2):
@@ -326,7 +329,7 @@ def _graphical(case, theta2):
                         alpha2=m["alpha2"],
                     ).values
                 )
-            except Exception:  # a construction that fails reports nothing there
+            except Exception:  # noqa: BLE001 - a construction that fails reports nothing there
                 out.append({})
         return out
 

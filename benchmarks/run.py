@@ -151,7 +151,7 @@ def peer_comparison(n_values, repeats):
     out = []
     for n in n_values:
         t2 = case.theta2(n)
-        fns = [lambda: case.kernel(t2, order=2), lambda: case.kernel(t2)]
+        fns = [lambda t2=t2: case.kernel(t2, order=2), lambda t2=t2: case.kernel(t2)]
         keys = []
         for key in ("pylinkage", "mechanism"):  # kimech (ms per position): see the cycles
             if key in table and (key == "pylinkage" or n <= 1000):

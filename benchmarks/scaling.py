@@ -138,7 +138,7 @@ def units(sizes=(1, 360, 10**5), repeats=7, case_name="fourbar-open"):
     for n in sizes:
         t2 = case.theta2(n) if n > 1 else float(case.theta2(2)[1])
         free, aware = measure_interleaved(
-            [lambda: case.kernel(t2), _unit_scalar(case, t2)], repeats=repeats
+            [lambda t2=t2: case.kernel(t2), _unit_scalar(case, t2)], repeats=repeats
         )
         rows.append(
             {

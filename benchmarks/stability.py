@@ -149,7 +149,7 @@ def _one_by_one(m, case, theta2):
             run, extract = m.prepare(case, np.array([t]))
             with np.errstate(all="ignore"):
                 values = extract(run())
-        except Exception:  # raised: reported, so counted as refused
+        except Exception:  # noqa: BLE001 - raised: reported, so counted as refused
             continue
         for k, v in values.items():
             out[k][i] = v[0]

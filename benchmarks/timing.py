@@ -136,7 +136,7 @@ def machine():
             {k: p.get(k) for k in ("internal_api", "version", "num_threads", "architecture")}
             for p in threadpool_info()
         ]
-    except Exception:  # threadpoolctl is optional
+    except Exception:  # noqa: BLE001 - threadpoolctl is optional: the report is whole without it
         pass
     info["OPENBLAS_CORETYPE"] = os.environ.get("OPENBLAS_CORETYPE")
     try:

@@ -37,9 +37,9 @@ import numpy as np
 
 from accelab.course.animation import animate
 from accelab.course.kit import explore, in_g, point_label, stated, use_style, vector
+from accelab.course.practice import practice
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.course.practice import practice
 from accelab.solver import Q_, RotatingPoint
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage

@@ -39,9 +39,9 @@ import numpy as np
 
 from accelab.course.animation import animate
 from accelab.course.kit import CIRCUIT_COLORS, explore, stated, use_style
+from accelab.course.practice import practice
 from accelab.course.renditions import panels, show
 from accelab.course.text import num, say, sci, table, vec, xy
-from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage

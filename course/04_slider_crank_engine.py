@@ -40,9 +40,9 @@ import numpy as np
 
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style
+from accelab.course.practice import practice
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.course.practice import practice
 from accelab.solver import Q_, NotAssemblable, Singular, SliderCrank
 from accelab.solver.graphical import construct_case
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon

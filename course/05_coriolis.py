@@ -83,9 +83,9 @@ import numpy as np
 
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, LINESTYLES, explore, in_g, stated, use_style, vector
+from accelab.course.practice import practice
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table
-from accelab.course.practice import practice
 from accelab.solver import Q_, InvertedSliderCrank, SlottedLink
 from accelab.solver.graphical import Arrow, Construction, Line, Step, invertedslidercrank, slotted
 from accelab.solver.graphical.draw import draw_linkage, draw_polygon

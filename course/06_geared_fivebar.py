@@ -41,9 +41,9 @@ from matplotlib.colors import Normalize
 
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style
+from accelab.course.practice import practice
 from accelab.course.renditions import legend, panels, show
 from accelab.course.text import num, say, table, vec
-from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar
 from accelab.solver.graphical import fivebar as fivebar_construction
 from accelab.solver.graphical.draw import draw_linkage

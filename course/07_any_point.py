@@ -38,9 +38,9 @@ from matplotlib.colors import Normalize
 
 from accelab.course.animation import animate
 from accelab.course.kit import COLORS, explore, in_g, stated, use_style, vector
+from accelab.course.practice import practice
 from accelab.course.renditions import show
 from accelab.course.text import num, say, table, vec, xy
-from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar
 
 use_style()

@@ -36,9 +36,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.kit import COLORS, G0, explore, in_g, stated, use_style
+from accelab.course.practice import practice
 from accelab.course.renditions import show
 from accelab.course.text import num, say, table
-from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar
 
 use_style()

@@ -34,9 +34,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from accelab.course.kit import COLORS, explore, stated, use_style
+from accelab.course.practice import practice
 from accelab.course.renditions import panels, show
 from accelab.course.text import num, say, sci, table, vec
-from accelab.course.practice import practice
 from accelab.solver import Q_, FourBar, GearedFiveBar, InvertedSliderCrank, SliderCrank
 
 use_style()

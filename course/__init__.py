@@ -14,7 +14,8 @@ move (a player with play, pause and step), and ``accelab.exercises.practice`` fo
 self-study problems with instant feedback. ``benchmark.json`` holds the numbers of the
 benchmark run that notebook 11 quotes.
 ``errata.md`` lists the misprints of the chapter the course found, and
-``FAMILIES.md`` which notebook teaches each graded exercise family.
+``FAMILIES.md`` (written from the families' registry, :mod:`accelab.course.families`)
+which notebook teaches each graded exercise family.
 """
 
 from pathlib import Path
@@ -30,5 +31,10 @@ def notebooks():
 
 
 def pages():
-    """The course's markdown pages (the errata, the families table)."""
-    return sorted(p for p in HERE.glob("*.md"))
+    """The course's Markdown pages, name -> text: the errata, and the families table
+    written from the registry (:func:`accelab.course.families.page`)."""
+    from . import families
+
+    out = {p.name: p.read_text() for p in sorted(HERE.glob("*.md"))}
+    out[families.NAME] = families.page()
+    return out

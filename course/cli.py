@@ -17,7 +17,6 @@ The ``accelab`` command calls :func:`register` to add the subcommand.
 """
 
 import argparse
-import shutil
 import sys
 from pathlib import Path
 
@@ -80,12 +79,12 @@ def write(out, force=False, log=print):
         nbformat.write(to_notebook(src), target)
         written.append(target)
         log(str(target))
-    for page in pages():
-        target = out / page.name
+    for name, text in pages().items():
+        target = out / name
         if target.exists() and not force:
             kept.append(target)
             continue
-        shutil.copyfile(page, target)
+        target.write_text(text)
         written.append(target)
         log(str(target))
     return written, kept

@@ -51,7 +51,6 @@ exclude_patterns = [
     "course/[!0-9]*.py",
     "course/site",
     "**/*.ipynb",
-    "course/FAMILIES.md",  # shipped with `accelab course`; the guide has the table
     "api/generated/*.rst.txt",
 ]
 templates_path = ["_templates"]

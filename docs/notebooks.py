@@ -1,9 +1,9 @@
 """The course notebooks as the documentation build and the tests execute them.
 
 Every ``course/NN_slug.py`` (jupytext percent format) is executed headless:
-working directory ``course/``, ``ACCELAB_STATIC=1`` (so ``coursekit.explore``
-draws its static small multiples instead of sliders), matplotlib's inline
-backend, and the repository and ``course/`` importable.
+working directory ``course/``, ``ACCELAB_STATIC=1`` (so ``accelab.course.kit.explore``
+draws its static small multiples instead of sliders) and matplotlib's inline
+backend; the notebooks import the installed package, never the repository's folders.
 
 Executed notebooks are kept in a jupyter-cache folder, the one MyST-NB reads
 when ``make docs`` builds the site (``nb_execution_mode = "cache"``). The

@@ -117,7 +117,8 @@ def register(subparsers):
         description="Print a student's variant (instructor side: it reads the course folder): "
         "given values, and for each graded answer its name, unit, the batch cases "
         "it depends on and the expr over their outputs.",
-        epilog="example:\n  accelab variant --course mycourse --assignment A --student alice --json",
+        epilog="example:\n"
+        "  accelab variant --course mycourse --assignment A --student alice --json",
         formatter_class=fmt,
     )
     p.add_argument("--course", required=True)
@@ -171,7 +172,8 @@ def register(subparsers):
         "roster and a randomized assignment, simulate submissions (honest and "
         "dishonest), grade them in the sandbox, generate feedback and print the "
         "grade table.",
-        epilog="example:\n  accelab demo\n  accelab grade --course build/demo-course --assignment A",
+        epilog="example:\n  accelab demo\n"
+        "  accelab grade --course build/demo-course --assignment A",
         formatter_class=fmt,
     )
     p.add_argument(

@@ -291,8 +291,9 @@ def check(course_dir, config, accounts=(), say=print):
         )
 
 
-#: what ``accelab assign`` adds to the configuration of a course made before accelab's
-#: collect and formgrader templates existed
+# what ``accelab assign`` adds to the configuration of a course made before accelab's
+# collect and formgrader templates existed (a comment, not a doc comment: the API page would
+# print the whole text, whose long names overflow a phone's width)
 CONFIG_ADDED = """
 # added by accelab assign: the submitter and the time of a submission from what a student
 # cannot forge, only regular files collected (accelab.exercises.grader.collect); formgrader's

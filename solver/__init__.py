@@ -13,8 +13,9 @@ Two layers (see the README, "How the code is laid out"):
 
 The general vector-loop solver (:mod:`accelab.solver.vectorloops`, section 7.8) and
 the graphical constructions (:mod:`accelab.solver.graphical`, section 7.2) sit beside
-them; :mod:`accelab.solver.parameters` declares every mechanism's parameters once and
-:mod:`accelab.solver.cases` reads a case of the batch format into SI floats once.
+them; :mod:`accelab.solver.registry` registers every mechanism once (its parameters,
+class, construction) and :mod:`accelab.solver.cases` reads a case of the batch format
+into SI floats once.
 
 References
 ----------

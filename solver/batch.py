@@ -9,9 +9,11 @@ one bad case never stops the others. A ``"loops"`` case goes to the
 vector-loop solver (:func:`accelab.solver.vectorloops.solve_loops_case`).
 """
 
+from typing import Any
+
 from .cases import Case, check_mechanism, read_case
 from .errors import error_object
-from .mechanisms import MECHANISMS
+from .mechanisms import MECHANISMS, Result
 from .results import finite_or_refused
 from .vectorloops import solve_loops_case
 
@@ -26,20 +28,21 @@ __all__ = [
 ]
 
 
-def solve(case):
+def solve(case: Case) -> Result:
     """The :class:`~accelab.solver.mechanisms.Result` of a case read by :func:`read_case`.
 
     Raises the :class:`~accelab.solver.errors.AccelabError` family (not assemblable,
     singular ...).
     """
     mech = MECHANISMS[case.mechanism].from_si(case.geometry(), given=case.given, units=case.units)
-    return mech.solve_si(case.motion(), circuit=case.circuit, **case.point())
+    point: dict[str, Any] = case.point()  # p, delta3: only a mechanism that declares them has them
+    return mech.solve_si(case.motion(), circuit=case.circuit, **point)
 
 
-def result_object(case, result):
+def result_object(case: Case, result: Result) -> dict[str, Any]:
     """The batch contract's answer for a solved case: ``{"ok": true, "circuit":
     ..., outputs in SI (vectors as [x, y]), "condition": ...}``."""
-    out = {"ok": True}
+    out: dict[str, Any] = {"ok": True}
     if case.circuit:
         out["circuit"] = case.circuit
     out.update(result.to_dict())
@@ -47,8 +50,9 @@ def result_object(case, result):
     return finite_or_refused(out)
 
 
-def solve_case(case):
-    """Solve one batch case; never raises (errors become error objects)."""
+def solve_case(case: Any) -> dict[str, Any]:
+    """Solve one batch case (a dict of docs/conventions.md#batch-format, or anything a
+    JSON reader gave); never raises (errors become error objects)."""
     try:
         if check_mechanism(case) == "loops":
             return solve_loops_case(case)
@@ -58,6 +62,6 @@ def solve_case(case):
         return error_object(exc)
 
 
-def solve_cases(cases):
+def solve_cases(cases: list[Any]) -> list[dict[str, Any]]:
     """Solve a list of cases in order (see :func:`solve_case`)."""
     return [solve_case(c) for c in cases]

@@ -4,15 +4,16 @@ A case is a dict like ``{"mechanism": "fourbar", "a": "2 in", ..., "theta2":
 "30 deg", "omega2": "10 rad/s", "alpha2": "-5 rad/s^2"}``: the mechanism, its
 quantities as text with units (or Quantities), and optionally ``circuit``.
 :func:`read_case` checks it against the mechanism's declared parameters
-(:mod:`accelab.solver.parameters`) and converts every quantity to an SI float, the
+(its entry of :mod:`accelab.solver.registry`) and converts every quantity to an SI float, the
 only conversion on its way to the kernels; the command line reads its
 ``name=value`` arguments into the same dict.
 """
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from .errors import InvalidInput
-from .parameters import BATCH_MECHANISMS, PARAMETERS
+from .registry import BATCH_MECHANISMS, PARAMETERS
 from .units import parse_quantity, to_si
 
 __all__ = ["Case", "read_case", "MECHANISM_NAMES"]
@@ -35,12 +36,12 @@ class Case:
     """
 
     mechanism: str
-    circuit: str = None
-    params: dict = field(default_factory=dict)
-    given: dict = field(default_factory=dict)
-    units: dict = field(default_factory=dict)
+    circuit: str | None = None
+    params: dict[str, float] = field(default_factory=dict)
+    given: dict[str, Any] = field(default_factory=dict)
+    units: dict[str, Any] = field(default_factory=dict)
 
-    def geometry(self):
+    def geometry(self) -> dict[str, float]:
         """The constructor's parameters (SI)."""
         return {
             p.name: self.params[p.name]
@@ -48,7 +49,7 @@ class Case:
             if p.name in self.params
         }
 
-    def point(self):
+    def point(self) -> dict[str, float]:
         """The extra ``solve`` parameters given (the coupler point), SI."""
         return {
             p.name: self.params[p.name]
@@ -56,12 +57,12 @@ class Case:
             if p.name in self.params
         }
 
-    def motion(self):
+    def motion(self) -> dict[str, float]:
         """theta2, omega2, alpha2, jerk2 in SI."""
         return {k: self.params[k] for k in ("theta2", "omega2", "alpha2", "jerk2")}
 
 
-def check_mechanism(case):
+def check_mechanism(case: Any) -> str:
     """The case's mechanism name (one of :data:`MECHANISM_NAMES`), or
     InvalidInput naming the choices."""
     if not isinstance(case, dict):
@@ -86,7 +87,7 @@ def check_mechanism(case):
     return mech
 
 
-def read_case(case):
+def read_case(case: Any) -> Case:
     """Check a case dict and convert its quantities to SI.
 
     Raises

@@ -5,6 +5,8 @@ contract (``invalid_input``, ``not_assemblable``, ``singular``), and a message
 that says what to change.
 """
 
+from typing import Any
+
 __all__ = [
     "AccelabError",
     "InvalidInput",
@@ -18,7 +20,7 @@ __all__ = [
 class AccelabError(Exception):
     """Base class of every error raised by accelab."""
 
-    kind = "error"
+    kind: str = "error"
 
 
 class InvalidInput(AccelabError, ValueError):
@@ -29,7 +31,7 @@ class InvalidInput(AccelabError, ValueError):
 
     kind = "invalid_input"
 
-    def __init__(self, message, parameter=None):
+    def __init__(self, message: str, parameter: str | None = None) -> None:
         super().__init__(message)
         self.parameter = parameter
 
@@ -50,7 +52,7 @@ class Singular(AccelabError):
 
     kind = "singular"
 
-    def __init__(self, message, condition=None):
+    def __init__(self, message: str, condition: float | None = None) -> None:
         super().__init__(message)
         self.condition = condition
 
@@ -61,13 +63,15 @@ class NoConvergence(NotAssemblable):
     ``residual`` is the norm of the loop residual it reached [m].
     """
 
-    def __init__(self, message, residual=None, iterations=None):
+    def __init__(
+        self, message: str, residual: float | None = None, iterations: int | None = None
+    ) -> None:
         super().__init__(message)
         self.residual = residual
         self.iterations = iterations
 
 
-def error_object(exc):
+def error_object(exc: BaseException) -> dict[str, Any]:
     """The batch contract's error object for an exception raised by one case.
 
     Errors of the :class:`AccelabError` family give their own kind and message;

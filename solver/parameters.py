@@ -1,11 +1,12 @@
-"""What each mechanism takes, declared once.
+"""How a mechanism declares what it takes: :class:`Parameter`, :class:`Declaration`.
 
-Every parameter is declared here with its kind of quantity (a key of
+Every parameter is declared once, in the mechanism's entry of the registry
+(:mod:`accelab.solver.registry`), with its kind of quantity (a key of
 :data:`accelab.solver.units.KINDS`), whether it must be given, whether it must be
 positive, its default and what it means. The unit-aware classes
 (:mod:`accelab.solver.mechanisms`), the batch format and the command line
 (:mod:`accelab.solver.cases`) read these declarations, and so can the exercise
-generators: a parameter added here is taken, checked and listed everywhere.
+generators: a parameter added there is taken, checked and listed everywhere.
 
 Defaults, one policy for the Python API, the batch and the command line: a
 parameter with a default may be left out and then means that default (SI):
@@ -19,9 +20,9 @@ Everything else (the link lengths, ``theta2``, ``omega2``, the inverted
 slider-crank's ``gamma``, the fivebar's ``lam`` and ``phi``) must be given.
 """
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
-__all__ = ["Parameter", "Declaration", "MOTION", "PARAMETERS", "BATCH_MECHANISMS"]
+__all__ = ["Parameter", "Declaration", "MOTION", "THETA1", "OPEN_CROSSED", "length", "angle"]
 
 
 class Parameter(NamedTuple):
@@ -32,7 +33,7 @@ class Parameter(NamedTuple):
     kind: str
     required: bool
     positive: bool
-    default: object
+    default: Any
     meaning: str
 
 
@@ -41,33 +42,44 @@ class Declaration(NamedTuple):
     (extra arguments of ``solve``: the coupler point, or the slotted link's
     block) and its ``circuits`` (empty: it has one assembly)."""
 
-    geometry: tuple
-    point: tuple
-    circuits: tuple
+    geometry: tuple[Parameter, ...]
+    point: tuple[Parameter, ...]
+    circuits: tuple[str, ...]
 
-    def every(self):
+    def every(self) -> tuple[Parameter, ...]:
         """Geometry, point and motion parameters, in that order."""
         return self.geometry + self.point + MOTION
 
-    def names(self):
+    def names(self) -> list[str]:
+        """The names of :meth:`every` parameter."""
         return [p.name for p in self.every()]
 
 
-def _length(name, meaning, positive=True, required=True, default=None):
+def length(
+    name: str,
+    meaning: str,
+    positive: bool = True,
+    required: bool = True,
+    default: float | None = None,
+) -> Parameter:
+    """A length parameter [m]: positive (a link's length) and required unless told."""
     return Parameter(name, "length", required, positive, default, meaning)
 
 
-def _angle(name, meaning, required=True, default=None):
+def angle(
+    name: str, meaning: str, required: bool = True, default: float | None = None
+) -> Parameter:
+    """An angle parameter [rad], required unless told."""
     return Parameter(name, "angle", required, False, default, meaning)
 
 
-THETA1 = _angle(
+THETA1 = angle(
     "theta1", "angle of the ground line O2->O4 (slide axis) [angle]", required=False, default=0.0
 )
 
 #: the input motion every mechanism takes (theta2 from the global x axis)
 MOTION = (
-    _angle("theta2", "input (crank) angle from the x axis [angle]"),
+    angle("theta2", "input (crank) angle from the x axis [angle]"),
     Parameter("omega2", "angular_velocity", True, False, None, "input angular velocity"),
     Parameter(
         "alpha2",
@@ -81,76 +93,3 @@ MOTION = (
 )
 
 OPEN_CROSSED = ("open", "crossed")
-
-PARAMETERS = {
-    "fourbar": Declaration(
-        (
-            _length("a", "crank O2A"),
-            _length("b", "coupler AB"),
-            _length("c", "rocker O4B"),
-            _length("d", "ground O2O4"),
-            THETA1,
-        ),
-        (
-            _length("p", "coupler point P: distance from A", required=False),
-            _angle("delta3", "coupler point P: angle from line AB", required=False, default=0.0),
-        ),
-        OPEN_CROSSED,
-    ),
-    "slidercrank": Declaration(
-        (
-            _length("a", "crank O2A"),
-            _length("b", "connecting rod AB"),
-            _length("c", "slider offset (signed)", positive=False, required=False, default=0.0),
-            THETA1,
-        ),
-        (),
-        OPEN_CROSSED,
-    ),
-    "invertedslidercrank": Declaration(
-        (
-            _length("a", "crank O2A"),
-            _length("c", "O4B, >= 0 (0: slide line through O4)", positive=False),
-            _length("d", "ground O2O4"),
-            _angle("gamma", "angle from O4B to the slide line"),
-            THETA1,
-        ),
-        (),
-        OPEN_CROSSED,
-    ),
-    "fivebar": Declaration(
-        (
-            _length("a", "crank O2A"),
-            _length("b", "coupler AB"),
-            _length("c", "coupler CB"),
-            _length("d", "crank O5C"),
-            _length("f", "ground O2O5"),
-            Parameter(
-                "lam",
-                "dimensionless",
-                True,
-                False,
-                None,
-                "gear ratio theta5/theta2 (signed, a plain number)",
-            ),
-            _angle("phi", "phase of link 5: theta5 = lam theta2 + phi"),
-            THETA1,
-        ),
-        (),
-        OPEN_CROSSED,
-    ),
-    "rotation": Declaration((_length("p", "radius of the point"),), (), ()),
-    "slotted": Declaration(
-        (),
-        (
-            _length("p", "distance of the block from the pivot", positive=False),
-            Parameter("p_dot", "velocity", True, False, None, "slip velocity"),
-            Parameter("p_ddot", "acceleration", False, False, 0.0, "slip acceleration"),
-            Parameter("p_dddot", "jerk", False, False, 0.0, "slip jerk"),
-        ),
-        (),
-    ),
-}
-
-#: the mechanisms of the batch format (docs/conventions.md#batch-format), besides "loops"
-BATCH_MECHANISMS = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")

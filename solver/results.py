@@ -18,12 +18,15 @@ loops' per vector and point (``r.vectors["R3"].alpha``, ``r.points["B"].A``;
 """
 
 import math
+from collections.abc import Iterable
+from typing import Any, cast
 
 import numpy as np
+import pint
 
 from .errors import InvalidInput, error_object
 from .status import OK, STATUS_NAMES
-from .units import quantity
+from .units import SIValue, quantity
 
 __all__ = ["Kinematics", "as_plain", "finite_or_refused"]
 
@@ -35,61 +38,64 @@ class Kinematics:
     ``_scalar``, and implement :meth:`si`, :meth:`kind` and :meth:`outputs`.
     """
 
-    _scalar = True
+    _scalar: bool = True
+    _status: Any  # int8, or an int8 array: one status per position
+    _condition: Any  # float, or a float array
 
-    def si(self, name):
+    def si(self, name: str) -> SIValue:
         """The SI value (float, complex, or array) of an output, unit-free."""
         raise NotImplementedError
 
-    def kind(self, name):
+    def kind(self, name: str) -> str:
         """The kind of quantity (a key of :data:`accelab.solver.units.KINDS`) of an output."""
         raise NotImplementedError
 
-    def outputs(self):
+    def outputs(self) -> list[str]:
         """The names of the outputs this result gives."""
         raise NotImplementedError
 
-    def __getitem__(self, name):
+    def __getitem__(self, name: str) -> pint.Quantity:
         return quantity(self.si(name), self.kind(name))
 
-    def _one(self, x):
+    def _one(self, x: Any) -> Any:
         x = np.asarray(x)
         return x[()] if self._scalar and x.ndim == 0 else (x[0] if self._scalar else x)
 
     @property
-    def valid(self):
+    def valid(self) -> bool | np.ndarray:
         """True where the result can be vouched for (bool or bool array)."""
         v = np.asarray(self._status) == OK
         return bool(self._one(v)) if self._scalar else v
 
     @property
-    def status(self):
+    def status(self) -> str | np.ndarray:
         """'ok', 'not_assemblable' or 'singular' (a str, or an array of str)."""
         s = np.vectorize(STATUS_NAMES.get, otypes=[object])(np.asarray(self._status))
         return str(self._one(s)) if self._scalar else s
 
     @property
-    def condition(self):
+    def condition(self) -> float | np.ndarray:
         """Dimensionless condition measure (1 best, 0 at a singular position)."""
         c = self._condition
         return float(self._one(c)) if self._scalar else np.asarray(c)
 
-    def to_dict(self, names=None):
+    def to_dict(self, names: Iterable[str] | None = None) -> dict[str, Any]:
         """SI values as plain Python (vectors as [x, y]; arrays as lists)."""
         return {name: as_plain(self.si(name)) for name in (names or self.outputs())}
 
 
-def as_plain(v):
+def as_plain(v: SIValue) -> Any:
     """An SI value as plain Python: a float, [x, y] for a complex vector, or
     (nested) lists for arrays."""
     if np.iscomplexobj(v):
-        return np.stack([np.real(v), np.imag(v)], axis=-1).tolist()
+        z = np.asarray(v)
+        return np.stack([z.real, z.imag], axis=-1).tolist()
     if isinstance(v, np.ndarray):
         return v.tolist()
-    return float(v)
+    return float(cast(float, v))
 
 
-def finite_or_refused(answer):
+def finite_or_refused(answer: dict[str, Any]) -> dict[str, Any]:
     """A batch answer if every number in it is finite, else the error object
     that names the output that overflowed: the batch output is strict JSON
     (no NaN or Infinity) and never holds a number the solver cannot vouch for."""
@@ -105,7 +111,7 @@ def finite_or_refused(answer):
     )
 
 
-def _non_finite(value, path=""):
+def _non_finite(value: Any, path: str = "") -> str | None:
     """The path of the first non-finite number in a (nested) answer, or None."""
     if isinstance(value, dict):
         for k, v in value.items():

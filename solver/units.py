@@ -26,6 +26,7 @@ import math
 import numbers
 import re
 from functools import lru_cache
+from typing import Any, TypeAlias
 
 import numpy as np
 import pint
@@ -44,11 +45,19 @@ __all__ = [
     "SI_UNITS",
     "MAX_TEXT",
     "show",
+    "QuantityLike",
+    "SIValue",
 ]
+
+#: what the unit-aware API reads as a quantity: a Quantity, text with units
+#: ("30 deg", "10 rad/s"), or a bare number where no unit is needed (a ratio, zero)
+QuantityLike: TypeAlias = pint.Quantity | str | float | int | np.ndarray
+#: a value in SI units, unit-free: a float, a complex number (a vector x + jy) or an array
+SIValue: TypeAlias = float | complex | np.ndarray
 
 #: The package's one pint registry: every Quantity that accelab reads or
 #: returns belongs to it (a Quantity of another registry is converted once).
-ureg = pint.UnitRegistry()
+ureg: pint.UnitRegistry = pint.UnitRegistry()
 ureg.define("rev = revolution")  # '10 rev/s', the unambiguous way to say 10 Hz of a crank
 pint.set_application_registry(ureg)
 #: ``Q_(value, unit)``: a Quantity of :data:`ureg`, e.g. ``Q_(30, "deg")``.
@@ -90,7 +99,7 @@ _POWER = re.compile(r"(\*\*|\^)")
 _EXPONENT = re.compile(r"\s*\(?\s*[+-]?\s*\d{1,2}(\.\d*)?\s*\)?")
 
 
-def show(value):
+def show(value: Any) -> str:
     """The user's value as it reads in a message: text quoted, a long one cut
     (with its length), a Quantity or number as written."""
     if isinstance(value, str):
@@ -204,7 +213,7 @@ def _parse_units(text):
     return units
 
 
-def read_units(text, name="units"):
+def read_units(text: Any, name: str = "units") -> pint.Unit:
     """Read a unit text, such as ``"in/s^2"`` or pint's ``"inch / second ** 2"``,
     by the same rules as :func:`parse_quantity` (at most :data:`MAX_TEXT`
     characters, bounded nesting, no power of a power), in bounded time.
@@ -245,7 +254,7 @@ def _unit_reason(exc):
     return "not a product of units and powers"
 
 
-def parse_quantity(value, kind, name):
+def parse_quantity(value: QuantityLike, kind: str, name: str) -> pint.Quantity | float | np.ndarray:
     """Read ``value`` as a quantity of ``kind``: the one reading rule of the package.
 
     Parameters
@@ -283,7 +292,7 @@ def parse_quantity(value, kind, name):
             )
         try:
             q = _parse_text(text)
-        except Exception as exc:  # pint raises many unrelated types
+        except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types: InvalidInput says which
             raise InvalidInput(
                 f"{name} = {show(value)} could not be read as a quantity "
                 f"({_reason(exc)}). Example: {name}={example}",
@@ -294,7 +303,7 @@ def parse_quantity(value, kind, name):
         if not isinstance(value, Q_):  # another registry: read its units by name
             try:
                 q = Q_(value.magnitude, str(value.units))
-            except Exception as exc:
+            except Exception as exc:  # noqa: BLE001 - any failure means: units this registry cannot read
                 raise InvalidInput(
                     f"{name} = {show(value)} comes from another pint "
                     f"registry whose units this one cannot read "
@@ -414,7 +423,9 @@ def _check_units(q, name, kind, value):
         raise InvalidInput(f"{name} needs units. Example: {name}={example}", name)
 
 
-def to_si(value, name, kind, *, positive=False, nonzero=False):
+def to_si(
+    value: QuantityLike, name: str, kind: str, *, positive: bool = False, nonzero: bool = False
+) -> float | np.ndarray:
     """Convert ``value`` to SI floats (a float or a float ndarray).
 
     Parameters
@@ -448,7 +459,7 @@ def _text_to_si(value, name, kind, positive, nonzero):
 
 #: (unit items, kind) -> factor to SI, for the units of Quantities already read once
 #: by :func:`parse_quantity` (a Quantity's checks depend only on its units and kind)
-_ACCEPTED = {}
+_ACCEPTED: dict[tuple[Any, str], float] = {}
 
 
 def _to_si(value, name, kind, positive, nonzero):
@@ -469,9 +480,9 @@ def _to_si(value, name, kind, positive, nonzero):
             and not nonzero
         ):
             with np.errstate(over="ignore"):
-                out = mag * factor if factor != 1.0 else mag
-            if np.isfinite(out).all():
-                return out
+                scaled = mag * factor if factor != 1.0 else mag
+            if np.isfinite(scaled).all():
+                return scaled
     if type(value) is int and value == 0 or type(value) is float and value == 0.0:
         if positive or nonzero:
             raise InvalidInput(f"{name} must be positive (got 0). Example: {name}={example}", name)
@@ -548,6 +559,6 @@ def _not_finite(name, value, example, si):
     return f"{name} must be finite (got {show(value)}). Example: {name}={example}"
 
 
-def quantity(si_value, kind):
+def quantity(si_value: SIValue, kind: str) -> pint.Quantity:
     """Wrap an SI float or array (real or complex) as one Quantity of :data:`ureg`."""
     return Q_(si_value, _SI_CONTAINERS[kind])

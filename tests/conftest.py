@@ -1,11 +1,13 @@
 """Shared test configuration: a non-interactive matplotlib backend, hypothesis
 profiles, and the strategies for random well-conditioned linkages."""
 
+import math
 import os
 
-os.environ.setdefault("MPLBACKEND", "Agg")
+from hypothesis import HealthCheck, assume, settings
+from hypothesis import strategies as st
 
-from hypothesis import HealthCheck, settings
+os.environ.setdefault("MPLBACKEND", "Agg")  # before anything imports matplotlib
 
 settings.register_profile(
     "default", deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow]
@@ -25,11 +27,6 @@ settings.load_profile("ci" if os.environ.get("CI") else "default")
 # Each builds the geometry from an assembled position, so every draw closes
 # its loop with the transmission angle (or its analogue) far from a toggle:
 # the sine of it stays above about 0.08.
-
-import math  # noqa: E402
-
-from hypothesis import assume  # noqa: E402
-from hypothesis import strategies as st
 
 lengths = st.floats(0.05, 2.0)
 angles = st.floats(-math.pi, math.pi)

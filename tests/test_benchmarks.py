@@ -15,6 +15,8 @@ from accelab.benchmarks.run import run_benchmark
 from accelab.benchmarks.stability import STUDY_CASE, near_toggle, newton_guesses
 from accelab.solver import Q_, FourBar, NoConvergence, NotAssemblable, Singular, VectorLoopLinkage
 
+#: the benchmark (the tiny run) and the study near a toggle: built once, in one worker
+pytestmark = pytest.mark.xdist_group("benchmarks")
 #: an answer near a toggle must be this close to the reference, or refused
 NEAR_TOGGLE_TOLERANCE = 1e-6
 

@@ -46,7 +46,9 @@ def test_reference_derivatives_match_mpmath_differentiation(cases, name, theta2)
             return ref.solve_one([float(x) for x in q[0]], t, 0, 0, 0, strict=True)[0][k]
 
         for k in range(len(ref.unknowns)):
-            d1, d2, d3 = (mp.diff(lambda t: position(t, k), mp.mpf(theta2), n) for n in (1, 2, 3))
+            d1, d2, d3 = (
+                mp.diff(lambda t, k=k: position(t, k), mp.mpf(theta2), n) for n in (1, 2, 3)
+            )
             expect = [d1 * w, d2 * w**2 + d1 * al, d3 * w**3 + 3 * d2 * w * al + d1 * jk]
             for n in range(3):
                 assert abs(q[n + 1][k] - expect[n]) <= 1e-20 * (1 + abs(expect[n]))
@@ -92,7 +94,7 @@ def _by_differentiation(mechanism, g, theta2, motion, theta1, circuit, points=()
     for name, value in state(mpf(0)).items():
         result[name] = value
         for n in (1, 2, 3):
-            d = mp.diff(lambda t: state(t)[name], mpf(0), n)
+            d = mp.diff(lambda t, name=name: state(t)[name], mpf(0), n)
             if name.startswith("theta"):
                 result[ANGLE_NAMES[n] + name[5:]] = d
             elif name.startswith("R_"):

@@ -1,4 +1,5 @@
-"""The ``accelab solve`` command: batch contract (docs/conventions.md#batch-format) and the table."""
+"""The ``accelab solve`` command: the batch contract (docs/conventions.md#batch-format) and
+the table."""
 
 import json
 import subprocess
@@ -191,7 +192,7 @@ def test_table_in_the_users_units(capsys):
     assert status == 0
     assert "fourbar (open circuit)" in out
     assert "in/s²" in out and "deg" in out and "rad/s²" in out
-    line = next(l for l in out.splitlines() if l.startswith("alpha3"))
+    line = next(row for row in out.splitlines() if row.startswith("alpha3"))
     assert float(line.split()[1]) == pytest.approx(8.76875, rel=1e-5)
 
 

@@ -31,6 +31,7 @@ import pytest
 
 import accelab.course
 from accelab.course import cli as course_cli
+from accelab.exercises.families import REGISTRY
 from docs.notebooks import problems
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -41,19 +42,12 @@ RUN = ROOT / "build" / "course-run"  # the kernels' working folder: not course/
 BUDGET = 20.0  # s per notebook: the course's execution budget (a warning)
 CELL_TIMEOUT = 300  # s
 MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
-#: graded exercise families (exercises/families) and their sections of the chapter
-FAMILIES = (
-    "rotation",
-    "fourbar",
-    "coupler",
-    "slidercrank",
-    "coriolis",
-    "fivebar",
-    "jerk",
-    "tolerance",
-)
+#: graded exercise families, from their registry
+FAMILIES = tuple(REGISTRY)
 
 NOTEBOOKS = accelab.course.notebooks()
+#: one worker executes the notebooks, once, then builds the site from them (tests/test_docs.py)
+pytestmark = pytest.mark.xdist_group("course")
 
 _executed = {}  # stem -> (path of the executed notebook, seconds) or the exception
 
@@ -359,9 +353,7 @@ def test_course_command_writes_notebooks_a_student_can_run(tmp_path):
     args = parser.parse_args(["course", "--out", str(out)])
     assert args.func(args) == 0
     names = sorted(p.name for p in out.iterdir())
-    assert names == sorted(
-        [p.stem + ".ipynb" for p in NOTEBOOKS] + [p.name for p in accelab.course.pages()]
-    )
+    assert names == sorted([p.stem + ".ipynb" for p in NOTEBOOKS] + list(accelab.course.pages()))
     import nbformat
 
     nb = nbformat.read(out / NOTEBOOKS[0].with_suffix(".ipynb").name, as_version=4)
@@ -533,7 +525,7 @@ def test_topic_notebooks_practise_and_name_their_families(source):
 
 
 def test_families_page_maps_every_family_to_a_notebook():
-    page = (COURSE / "FAMILIES.md").read_text()
+    page = accelab.course.pages()["FAMILIES.md"]
     stems = {p.stem for p in NOTEBOOKS}
     for family in FAMILIES:
         row = next((line for line in page.splitlines() if line.startswith(f"| `{family}`")), None)
@@ -541,7 +533,10 @@ def test_families_page_maps_every_family_to_a_notebook():
         linked = re.findall(r"\]\((\d\d_[a-z_]+)\.ipynb\)", row)
         assert linked and set(linked) <= stems, row
         for stem in linked:  # and that notebook names the family back
-            assert f"`{family}`" in (COURSE / f"{stem}.py").read_text(), (family, stem)
+            assert f"`{family}`" in (COURSE / f"{stem}.py").read_text(), (
+                f"course/{stem}.py teaches {family} (exercises/families/__init__.py): name "
+                f"the family `{family}` in its text, where it says which families practise it"
+            )
 
 
 def test_errata_page_lists_corrections_and_checks():

@@ -44,7 +44,8 @@ DOCTREES = ROOT / "build" / "docs-doctrees"
 sys.path.insert(0, str(DOCS))
 import shoot  # noqa: E402  (docs/shoot.py: the local server and the browser set-up)
 
-pytestmark = pytest.mark.slow
+# "course": after tests/test_course.py, in its worker (it fills the cache the site build reads)
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("course")]
 
 CHROMIUM = "/usr/bin/chromium"
 DRIVER = "/usr/bin/chromedriver"

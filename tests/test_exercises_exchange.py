@@ -30,7 +30,9 @@ from _exercises_helpers import answers_code
 
 from accelab.exercises.variant import variant_json
 
-pytestmark = pytest.mark.slow
+# one term (module fixture) in one worker; the students' accounts (tests/_accounts.py) are made
+# by one worker at a time
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("accounts")]
 
 SECRET = "instructor-only-7dx9"
 #: roster id -> account (the roster maps them: an account need not be its id)

@@ -19,6 +19,8 @@ from accelab.exercises.layout import (
     private_course,
 )
 
+#: the students' accounts (tests/_accounts.py) are made by one worker at a time
+pytestmark = pytest.mark.xdist_group("accounts")
 #: the tests that make a second account need root (as the tests run in CI)
 as_root = pytest.mark.skipif(os.geteuid() != 0, reason="makes local accounts: run as root")
 

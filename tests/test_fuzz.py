@@ -361,7 +361,7 @@ def test_duplicate_keys_are_refused_not_the_last_winning(tmp_path):
     assert "'a' more than once" in out[0]["message"]
 
 
-# --- the command line ------------------------------------------------------------------------------
+# --- the command line -------------------------------------------------------------------------
 def run(args, stdin=None, stdout=subprocess.PIPE):
     p = subprocess.run(
         [sys.executable, "-m", "accelab", *args],
@@ -440,8 +440,7 @@ def test_a_full_disk_and_a_closed_pipe_are_said_in_one_line(tmp_path):
     p = subprocess.run(
         f"{sys.executable} -m accelab solve --cases {path} | head -c 10",
         shell=True,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
+        capture_output=True,
         text=True,
         timeout=120,
     )
@@ -461,7 +460,7 @@ def test_bench_without_mpmath_says_what_to_install(tmp_path):
     assert "Traceback" not in p.stderr
 
 
-# --- the Python API --------------------------------------------------------------------------------
+# --- the Python API ---------------------------------------------------------------------------
 FOURBAR = dict(a="2 in", b="6 in", c="9 in", d="7 in")
 
 

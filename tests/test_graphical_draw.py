@@ -10,6 +10,7 @@ import matplotlib.pyplot as plt
 import pytest
 from matplotlib.testing.compare import compare_images
 
+from accelab.exercises.families import REGISTRY
 from accelab.solver.graphical import (
     construct_case,
     style,
@@ -251,7 +252,7 @@ if __name__ == "__main__":  # regenerate the baselines
 
 @pytest.mark.parametrize(
     "family",
-    ["rotation", "fourbar", "coupler", "slidercrank", "coriolis", "fivebar", "jerk", "tolerance"],
+    list(REGISTRY),
 )
 def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
     """accelab.exercises.figure.statement_figure(problem) -> PNG bytes, drawn by draw_linkage (the

@@ -83,7 +83,8 @@ def test_batch_solves_loops_with_a_coupler_point_and_a_gear_ratio():
                 assert got == pytest.approx(ref, rel=1e-8, abs=1e-8 * abs(closed["alpha3"]))
     for pt, key in (("B", "A_B"), ("C", "A_C"), ("A", "A_A")):
         assert abs(xy(loops5["points"][pt]["A"]) - xy(closed[key])) <= 1e-8 * abs(xy(closed[key]))
-    # the coupler point P, as a rigid point of link 3 (eq. 7.32): A_P = A_A + p (j alpha3 - omega3^2) e^{j(theta3 + delta)}
+    # the coupler point P, as a rigid point of link 3 (eq. 7.32):
+    # A_P = A_A + p (j alpha3 - omega3^2) e^{j(theta3 + delta)}
     p, delta = 2.5 * 0.0254, np.radians(35.0)
     a_p = xy(closed["A_A"]) + p * (1j * closed["alpha3"] - closed["omega3"] ** 2) * np.exp(
         1j * (closed["theta3"] + delta)

@@ -100,9 +100,8 @@ def fivebar_limits(g, lo, hi, dps=DPS):
             sf = float(s)
             for i in range(n):
                 if (dist[i] - sf) * (dist[i + 1] - sf) < 0:
-                    root = mp.findroot(
-                        lambda t: gap(t, s), (mpf(grid[i]), mpf(grid[i + 1])), solver="anderson"
-                    )
+                    bracket = (mpf(grid[i]), mpf(grid[i + 1]))
+                    root = mp.findroot(lambda t, s=s: gap(t, s), bracket, solver="anderson")
                     out.append((root, kind))
     return out
 

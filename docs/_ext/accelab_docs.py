@@ -571,22 +571,11 @@ def _literal(text):
 
 
 def family_specs():
-    """``[(name, title, module, {param: (lo, hi, step, kind)})]`` of every family."""
-    import importlib
+    """``[(name, title, module, {param: (lo, hi, step, kind)})]`` of every family
+    (accelab.exercises.families.REGISTRY)."""
+    from accelab.exercises.families import REGISTRY
 
-    from accelab.exercises import families
-
-    out = []
-    for name, generator in families.FAMILIES.items():
-        module = importlib.import_module(generator.__module__)
-        defaults = getattr(module, "DEFAULTS", None)
-        if defaults is None:  # a family that reuses another's table (FOURBAR_DEFAULTS)
-            used = [
-                v for k, v in vars(module).items() if k.endswith("DEFAULTS") and isinstance(v, dict)
-            ]
-            defaults = used[0] if used else {}
-        out.append((name, getattr(module, "TITLE", name), module, defaults))
-    return out
+    return [(f.name, f.title, f.load(), f.defaults) for f in REGISTRY.values()]
 
 
 def _range_text(lo, hi, step, unit):
@@ -644,40 +633,15 @@ class FamiliesTable(Directive):
         return result
 
 
-#: the docs' own reading of the notebooks, for a family that no notebook names
-#: yet as one that practises it (the family, its chapter section, the notebook
-#: that teaches that section)
-TAUGHT_IN = {
-    "rotation": ["01_rotating_point"],
-    "fourbar": ["03_analytic_fourbar"],
-    "coupler": ["07_any_point"],
-    "slidercrank": ["04_slider_crank_engine"],
-    "coriolis": ["05_coriolis"],
-    "fivebar": ["06_geared_fivebar"],
-    "jerk": ["09_jerk"],
-    "tolerance": ["08_human_tolerance"],
-}
-
-
 def family_notebooks(course):
-    """``{family: [notebook stems]}``: the notebooks whose text names a family
-    (a line that says "famil..." and has the family's name in backticks), else
-    :data:`TAUGHT_IN`."""
-    from accelab.exercises import families
+    """``{family: [notebook stems]}``: the notebooks that teach each family, as the
+    registry says (accelab.exercises.families.REGISTRY), those the course has."""
+    from accelab.exercises.families import REGISTRY
 
-    names = list(families.FAMILIES)
-    found = {n: [] for n in names}
-    for path in sorted(Path(course).glob("[0-9][0-9]_*.py")):
-        for line in path.read_text().splitlines():
-            if "famil" not in line.lower():
-                continue
-            for n in names:
-                if f"`{n}`" in line and path.stem not in found[n]:
-                    found[n].append(path.stem)
-    for n in names:
-        if not found[n]:
-            found[n] = [s for s in TAUGHT_IN.get(n, []) if (Path(course) / f"{s}.py").exists()]
-    return found
+    return {
+        f.name: [s for s in f.notebooks if (Path(course) / f"{s}.py").exists()]
+        for f in REGISTRY.values()
+    }
 
 
 class FamilyNotebooks(Directive):
@@ -689,17 +653,14 @@ class FamilyNotebooks(Directive):
         env = self.state.document.settings.env
         course = Path(env.srcdir) / "course"
         try:
-            from accelab.exercises import families
+            from accelab.exercises.families import REGISTRY
 
             mapping = family_notebooks(course)
         except Exception as exc:  # noqa: BLE001  said on the page and in a warning
             logger.warning(f"accelab-family-notebooks: {exc}")
             return [nodes.paragraph(text=f"(The families could not be read: {exc}.)")]
         rows = []
-        for name, generator in families.FAMILIES.items():
-            import importlib
-
-            module = importlib.import_module(generator.__module__)
+        for name, family in REGISTRY.items():
             cell = nodes.paragraph()
             for k, stem in enumerate(mapping.get(name, [])):
                 if k:
@@ -716,7 +677,7 @@ class FamilyNotebooks(Directive):
                 cell += ref
             if not mapping.get(name):
                 cell += nodes.Text("(none yet)")
-            rows.append([_literal(name), getattr(module, "TITLE", name), cell])
+            rows.append([_literal(name), family.title, cell])
         return [_table(["family", "what the student solves", "taught in"], rows)]
 
 

@@ -89,7 +89,7 @@ def _in_unit(value, unit, name):
         q = ureg.Quantity(value)
         try:
             return float(q.to(unit).magnitude) if unit else float(q.to("").magnitude)
-        except Exception:
+        except Exception:  # noqa: BLE001 - pint raises many types; each means: not in this unit
             raise ValueError(f"range {name!r}: {value!r} is not convertible to {unit}") from None
     return float(value)
 
@@ -131,7 +131,7 @@ def solve_checked(cases, min_condition=MIN_CONDITION):
     try:
         outputs = solve_cases(cases)
     except ValueError:
-        raise Reject()
+        raise Reject() from None  # a variant the solver refuses: draw another
     for out in outputs.values():
         if out.get("condition", 1.0) < min_condition:
             raise Reject()

@@ -15,6 +15,7 @@ from .common import (
 
 FAMILY = "fourbar"
 TITLE = "Accelerations in a fourbar linkage"
+DEFAULTS = FOURBAR_DEFAULTS
 STATEMENT = (
     "A fourbar linkage has crank $a$ (link 2), coupler $b$ (link 3), rocker $c$ (link 4) and "
     "ground link $d$ along the x axis, in the given circuit. The crank is at $\\theta_2$ and "
@@ -25,7 +26,7 @@ STATEMENT = (
 
 
 def generate_problem(seed, ranges=None, units="US"):
-    r = ranges_for(FOURBAR_DEFAULTS, ranges, units)
+    r = ranges_for(DEFAULTS, ranges, units)
     L, acc = UNITS[units]["length"], UNITS[units]["acceleration"]
 
     def build(rng):

@@ -15,6 +15,7 @@ from .common import (
 
 FAMILY = "jerk"
 TITLE = "Jerk in a fourbar linkage"
+DEFAULTS = FOURBAR_DEFAULTS
 STATEMENT = (
     "A fourbar linkage ($a$ crank, $b$ coupler, $c$ rocker, $d$ ground along x, in the given "
     "circuit) is driven with the crank at $\\theta_2$, $\\omega_2$ and a constant "
@@ -24,7 +25,7 @@ STATEMENT = (
 
 
 def generate_problem(seed, ranges=None, units="US"):
-    r = ranges_for(FOURBAR_DEFAULTS, ranges, units)
+    r = ranges_for(DEFAULTS, ranges, units)
     L, jerk = UNITS[units]["length"], UNITS[units]["jerk"]
 
     def build(rng):

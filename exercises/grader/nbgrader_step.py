@@ -28,8 +28,8 @@ from traitlets import Bool, Float, Instance, Integer
 from ..files import fault, write_atomic
 from ..nbgrader_course import roster_ids
 from ..notebook import read_spec
-from .intake import notes_of, submissions
 from .construction import records_of
+from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of

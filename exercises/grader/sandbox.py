@@ -265,7 +265,8 @@ def sandbox():
     """
     builder = SandboxCommand()
     probe = (
-        "import os, sys; import accelab.exercises.student.kernel, accelab.exercises.student.runtime; "
+        "import os, sys; "
+        "import accelab.exercises.student.kernel, accelab.exercises.student.runtime; "
         "from accelab import exercises; "
         "hidden = not os.path.exists(os.path.join(os.path.dirname(exercises.__file__), "
         "'grader')); print(os.getuid() != 0 and hidden and len(os.listdir('/proc')) > 0)"

@@ -7,6 +7,7 @@ import os
 import sys
 
 from ..errors import InvalidInput, error_object
+from ..registry import DRAWABLE
 from ..results import finite_or_refused
 from .io import read_batch
 
@@ -23,10 +24,12 @@ Figure 7-4b/c), and prints a JSON list with one object per case: the values
 read off the construction in SI (alpha3, alpha4 or d_ddot, A_A, A_B, A_C,
 A_P, A_coriolis ..., vectors as [x, y]) and the figure paths, or the error object
 of 'accelab solve' ({"ok": false, "error": KIND, "message": ...}).
-Mechanisms with a construction: fourbar, slidercrank, invertedslidercrank,
-fivebar, rotation. --step K draws only the first K steps of each construction.
+Mechanisms with a construction: MECHANISMS.
+--step K draws only the first K steps of each construction.
 
-exit status: 0 every case drawn, 1 some case reported an error, 2 FILE unusable."""
+exit status: 0 every case drawn, 1 some case reported an error, 2 FILE unusable.""".replace(
+    "MECHANISMS", ", ".join(DRAWABLE)
+)
 
 
 def register(sub):

@@ -16,7 +16,7 @@ import numpy as np
 from ..batch import read_case, result_object, solve, solve_cases
 from ..errors import AccelabError, error_object
 from ..mechanisms.base import kind_of
-from ..parameters import BATCH_MECHANISMS, PARAMETERS
+from ..registry import BATCH_MECHANISMS, PARAMETERS
 from ..units import SI_UNITS
 from .io import read_batch, write_json
 

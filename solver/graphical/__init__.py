@@ -15,6 +15,8 @@ never call the analytic solver; the tests compare the two.
 39.4252
 """
 
+from ..registry import DRAWABLE, PARAMETERS
+from ..registry import construction as construction_of
 from . import fivebar, fourbar, invertedslidercrank, slidercrank, slotted
 from .construction import Arrow, Construction, Line, Linkage, Step
 
@@ -34,9 +36,6 @@ __all__ = [
     "slotted",
 ]
 
-#: batch mechanisms that have a construction
-DRAWABLE = ("fourbar", "slidercrank", "invertedslidercrank", "fivebar", "rotation")
-
 #: the range the constructions draw: lengths (non-zero) between these [m] and
 #: |omega2| up to MAX_RATE [rad/s], |alpha2| up to its square, keep every vector
 #: of a construction (lengths times rates squared, and their squares) within
@@ -48,7 +47,6 @@ MAX_RATE = 1e50
 def _check_range(mechanism, params):
     """InvalidInput for a parameter outside what the constructions draw."""
     from ..errors import InvalidInput
-    from ..parameters import PARAMETERS
 
     decl = PARAMETERS.get(mechanism)
     lengths = [p.name for p in decl.geometry + decl.point if p.kind == "length"] if decl else []
@@ -74,27 +72,16 @@ def _check_range(mechanism, params):
 def construct(mechanism, circuit=None, **params):
     """Build the construction of ``mechanism`` from SI parameters (the names
     of the batch format: a, b, c, d, theta1, theta2, omega2, alpha2, p,
-    delta3, gamma). ``jerk2`` is accepted and ignored (no jerk polygon)."""
+    delta3, gamma). ``jerk2`` is accepted and ignored (no jerk polygon).
+    The registry (:mod:`accelab.solver.registry`) names each mechanism's construction."""
     from ..errors import InvalidInput
 
     params = dict(params)
     params.pop("jerk2", None)
     _check_range(mechanism, params)
-    kw = {"circuit": circuit} if circuit else {}
-    if mechanism == "fourbar":
-        return fourbar.construct(**params, **kw)
-    if mechanism == "slidercrank":
-        return slidercrank.construct(**params, **kw)
-    if mechanism == "invertedslidercrank":
-        return invertedslidercrank.construct(**params, **kw)
-    if mechanism == "fivebar":
-        return fivebar.construct(**params, **kw)
-    if mechanism == "rotation":
-        return slotted.construct(
-            params["theta2"], params["omega2"], params["alpha2"], params["p"], mechanism="rotation"
-        )
-    if mechanism == "slotted":
-        return slotted.construct(**params)
+    build = construction_of(mechanism) if isinstance(mechanism, str) else None
+    if build is not None:
+        return build(**params, **({"circuit": circuit} if circuit else {}))
     raise InvalidInput(
         f"there is no graphical construction for {mechanism!r}; draw one of "
         f"{', '.join(DRAWABLE)} (use 'accelab solve' for the others)",

@@ -72,7 +72,7 @@ class Stroke(Step):
 
     diagram: str = ""
     title: str = ""
-    quantity: dict = None
+    quantity: dict | None = None
     turns: list = field(default_factory=list)
     tags: dict = field(default_factory=dict)  # line name -> its label (velocity lines)
 
@@ -84,8 +84,8 @@ class Walk(Construction):
     vectors on the linkage [drawing length per acceleration, in the drawing's
     units]; ``source`` the construction it was made from."""
 
-    source: Construction = None
-    scale: float = None
+    source: Construction | None = None
+    scale: float | None = None
     angles: dict = field(default_factory=dict)  # theta2 etc. [rad], for the position figure
 
     @property
@@ -681,7 +681,7 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     st = walk.stroke(label)
     fig = plt.figure(figsize=(width, 2 * width), layout="none")
     left, right = 0.02, 0.02
-    ax = fig.add_axes([left, 0.1, 1 - left - right, 0.8])
+    ax = fig.add_axes((left, 0.1, 1 - left - right, 0.8))
     u = units_of(walk)
     if st.diagram in ("linkage", "reading", "results"):
         draw_linkage(
@@ -722,7 +722,7 @@ def draw_stroke(walk, label, width=FIGURE_WIDTH):
     bottom = badge + 0.04 + 0.2 * math.ceil(n_legend / 2) if n_legend else badge
     height = ax_h + top + bottom
     fig.set_size_inches(width, height)
-    ax.set_position([left, bottom / height, 1 - left - right, ax_h / height])
+    ax.set_position((left, bottom / height, 1 - left - right, ax_h / height))
     fig.text(
         0.02,
         1 - 0.08 / height,

@@ -92,9 +92,9 @@ class Construction:
     linkage: Linkage
     steps: list
     values: dict
-    circuit: str = None
+    circuit: str | None = None
     title: str = ""
-    units: str = None  # "US" or "SI": how the case gave its lengths (the drawings follow)
+    units: str | None = None  # "US" or "SI": how the case gave its lengths (the drawings follow)
 
     def step(self, label, phase, text):
         s = Step(label, phase, text)

@@ -24,6 +24,7 @@ as the caption, so a notebook can walk through the method.
 import math
 import re
 import textwrap
+from typing import Any
 
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
@@ -32,6 +33,7 @@ from matplotlib.patches import FancyArrowPatch, Polygon
 from matplotlib.path import Path
 from matplotlib.transforms import Affine2D, ScaledTranslation
 
+from ..registry import link_symbols
 from . import style
 from .labels import LabelLayer, labels_of
 
@@ -69,27 +71,6 @@ _HEAD = Path(
     [(0, 0), (-1, 0.36), (-0.82, 0), (-1, -0.36), (0, 0)],
     [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY],
 )
-#: the chapter's symbol of each link of each mechanism (for schematic figures)
-LINK_SYMBOLS = {
-    "fourbar": {
-        ("O2", "A"): "a",
-        ("A", "B"): "b",
-        ("O4", "B"): "c",
-        ("O2", "O4"): "d",
-        ("A", "P"): "p",
-    },
-    "slidercrank": {("O2", "A"): "a", ("A", "B"): "b"},
-    "invertedslidercrank": {("O2", "A"): "a", ("O4", "B"): "c", ("O2", "O4"): "d"},
-    "fivebar": {
-        ("O2", "A"): "a",
-        ("A", "B"): "b",
-        ("C", "B"): "c",
-        ("O5", "C"): "d",
-        ("O2", "O5"): "f",
-    },
-    "rotation": {("O2", "P"): "p"},
-    "slotted": {},
-}
 __all__ = [
     "draw_linkage",
     "draw_polygon",
@@ -499,6 +480,7 @@ def _inset_spot(ax, region, box, obstacles, frac):
         cost = inside + crossed + (10**6 if covers else 0)
         if best is None or cost < best[0]:
             best = (cost, (cx, cy, w, h))
+    assert best is not None  # the loop tries at least one spot
     return best[1], best[0]
 
 
@@ -595,6 +577,7 @@ def _inset_beside(ax, box, plan, obstacles):
                 )
             if best is None or crossed < best[0]:
                 best = (crossed, lims, (fx, fy, frac, h))
+    assert best is not None  # the loops try at least one spot
     ax.set_xlim(*best[1])
     return best[2], (centre, half, factor, frac)
 
@@ -739,7 +722,7 @@ def _beside(arrows, segments, size):
     link (or slide) it would otherwise lie on, and beside another vector along
     the same line from the same point."""
     offsets = []
-    taken = {}
+    taken: dict[Any, Any] = {}
     tol = 1e-9 * size
     for start, v in arrows:
         off = 0j
@@ -913,9 +896,8 @@ def draw_linkage(
             for z0, z1 in pairs:
                 labels.avoid(z0, z1, width=style.LINK["linewidth"] if len(link) == 2 else 1.2)
             if symbols and len(link) == 2:
-                sym = LINK_SYMBOLS.get(con.mechanism, {}).get(tuple(link)) or LINK_SYMBOLS.get(
-                    con.mechanism, {}
-                ).get(tuple(reversed(link)))
+                table = link_symbols(con.mechanism)  # the registry's
+                sym = table.get(tuple(link)) or table.get(tuple(reversed(link)))
                 if sym:
                     labels.add_vector(
                         f"${sym}$", zs[0], zs[1] - zs[0], color="#333333", priority=0.5

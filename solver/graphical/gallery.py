@@ -7,6 +7,8 @@ negative (CW) alpha2 and a positive (CCW) omega2 as in Figure 7-4), with a
 coupler point P standing for the chapter's point C.
 """
 
+from typing import Any
+
 EXAMPLE_7_1 = {
     "mechanism": "fourbar",
     "a": "2 in",
@@ -69,7 +71,7 @@ SLOTTED = {
     "p_ddot": 3.0,
 }
 
-GALLERY = {
+GALLERY: dict[str, dict[str, Any]] = {
     "graphical-fourbar": EXAMPLE_7_1,
     "graphical-slidercrank": SLIDER_CRANK,
     "graphical-invertedslidercrank": INVERTED_SLIDER_CRANK,

@@ -14,6 +14,7 @@ engine, of the DPI it is saved at and of the format (PNG or SVG).
 """
 
 import math
+from typing import Any
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -33,7 +34,8 @@ COST_LEADER = 120.0  # a spot that needs a leader line
 COST_DISTANCE = 1.5  # per pixel from the anchor
 
 
-_SIZES = {}  # (text, size, style, weight) -> (width, height) [pt]
+#: (text, size, style, weight) -> (width, height) [pt]
+_SIZES: dict[tuple[Any, ...], tuple[float, float]] = {}
 
 
 def _segments_hit(seg, halfwidth, boxes):
@@ -283,6 +285,7 @@ class LabelLayer(Artist):
                             cost += COST_PIN
                 if best is None or cost < best[0]:
                     best = (cost, c, tuple(box), leader)
+            assert best is not None  # every label has at least one candidate spot
             _, c, box, leader = best
             if lab["kind"] == "fixed":
                 text.set_position((c.real, c.imag))
@@ -320,7 +323,7 @@ def labels_of(ax, auto=True):
 
 def layers(fig):
     """Every LabelLayer of a figure, in its axes and in their insets."""
-    out = []
+    out: list[LabelLayer] = []
     stack = list(fig.axes)
     while stack:
         ax = stack.pop()

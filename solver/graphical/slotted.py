@@ -12,6 +12,12 @@ import cmath
 from .construction import Arrow, Construction, Linkage
 
 
+def rotating_point(theta2, omega2, alpha2, p):
+    """Velocity and acceleration polygons of a point at radius ``p`` [m] on a link
+    turning about O2 (section 7.1): :func:`construct` with the block fixed."""
+    return construct(theta2, omega2, alpha2, p, mechanism="rotation")
+
+
 def construct(theta2, omega2, alpha2, p, p_dot=0.0, p_ddot=0.0, mechanism="slotted"):
     """Velocity and acceleration polygons of a block at P on a link turning about O2.
 

@@ -19,6 +19,8 @@ Construction lines (pp, qq, rr) are thin grey long-dashed lines. In a walk
 through a construction, what the step being shown adds lies on a pale yellow band.
 """
 
+from typing import Any
+
 OKABE_ITO = {
     "black": "#000000",
     "orange": "#E69F00",
@@ -70,18 +72,34 @@ COMPONENT = {
     "known": {"color": "#555555", "linestyle": "-", "linewidth": 1.5, "label": "known"},
 }
 
-CONSTRUCTION_LINE = {"color": "#8c8c8c", "linestyle": (0, (8, 4)), "linewidth": 0.9}
+CONSTRUCTION_LINE: dict[str, Any] = {"color": "#8c8c8c", "linestyle": (0, (8, 4)), "linewidth": 0.9}
 #: the pale band under what the step being shown adds (a walk through a construction)
-HIGHLIGHT = {
+HIGHLIGHT: dict[str, Any] = {
     "color": "#FFD84D",
     "alpha": 0.55,
     "linewidth": 9.0,
     "solid_capstyle": "round",
     "zorder": 2.5,
 }
-LINK = {"color": "#4d4d4d", "linewidth": 4.0, "solid_capstyle": "round", "zorder": 2}
-COUPLER_FILL = {"facecolor": "#d9d9d9", "edgecolor": "#4d4d4d", "linewidth": 1.2, "zorder": 1}
-PIN = {"s": 38, "facecolor": "white", "edgecolor": "#222222", "linewidths": 1.3, "zorder": 5}
+LINK: dict[str, Any] = {
+    "color": "#4d4d4d",
+    "linewidth": 4.0,
+    "solid_capstyle": "round",
+    "zorder": 2,
+}
+COUPLER_FILL: dict[str, Any] = {
+    "facecolor": "#d9d9d9",
+    "edgecolor": "#4d4d4d",
+    "linewidth": 1.2,
+    "zorder": 1,
+}
+PIN: dict[str, Any] = {
+    "s": 38,
+    "facecolor": "white",
+    "edgecolor": "#222222",
+    "linewidths": 1.3,
+    "zorder": 5,
+}
 GROUND_HATCH = "////"
 FONT_SIZE = 11
 LABEL_SIZE = 12

@@ -22,13 +22,20 @@ Each helper returns the (x, y) components of such a term.
 
 import functools
 import math
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, fields
+from typing import TYPE_CHECKING, Any, ClassVar, ParamSpec, TypeAlias, TypeGuard, TypeVar
 
 import numpy as np
 
 from ..status import NOT_ASSEMBLABLE, OK, SINGULAR
 
 EPS = float(np.finfo(float).eps)
+
+#: what the kernels take and give: a float, or an array of floats (SI: m, rad, s)
+Floats: TypeAlias = float | np.ndarray
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
 
 #: The closed-form kernels refuse (report ``singular``) a position where the
 #: estimated relative round-off of their outputs exceeds this. Near a limit
@@ -54,7 +61,7 @@ MAX_ROUNDOFF = 1e-6
 ROUNDOFF_GAIN = 4.0
 
 
-def classify(gap, span):
+def classify(gap: Any, span: float) -> tuple[Any, Any]:
     """Status and estimated relative round-off of positions from their gap.
 
     Parameters
@@ -80,8 +87,8 @@ def classify(gap, span):
     if np.ndim(gap) == 0:  # one position: plain floats are ten times faster
         gap = float(gap)
         roundoff = ROUNDOFF_GAIN * EPS * span / gap if gap > 0 else math.inf
-        status = NOT_ASSEMBLABLE if not gap > -tol else OK if roundoff <= MAX_ROUNDOFF else SINGULAR
-        return np.int8(status), roundoff
+        code = NOT_ASSEMBLABLE if not gap > -tol else OK if roundoff <= MAX_ROUNDOFF else SINGULAR
+        return np.int8(code), roundoff
     if gap.size and gap.min() > 0.0:  # every position closes (the usual sweep): fewer passes
         roundoff = ROUNDOFF_GAIN * EPS * span / gap
         if roundoff.max() <= MAX_ROUNDOFF:
@@ -95,7 +102,7 @@ def classify(gap, span):
     return status, roundoff
 
 
-def length_unit(*lengths):
+def length_unit(*lengths: Floats) -> float:
     """A power of two near the longest of ``lengths`` [m] (1.0 if none is
     finite and non-zero).
 
@@ -118,7 +125,7 @@ def length_unit(*lengths):
     return math.ldexp(1.0, math.frexp(m)[1])
 
 
-def scale_lengths(motion, names, unit):
+def scale_lengths(motion: "_MotionT", names: Iterable[str], unit: float) -> "_MotionT":
     """Multiply the outputs ``names`` of ``motion`` (a Motion; lengths and their
     derivatives) by ``unit`` [m], the :func:`length_unit` the kernel divided by;
     returns ``motion``."""
@@ -130,7 +137,7 @@ def scale_lengths(motion, names, unit):
     return motion
 
 
-def as_input(x):
+def as_input(x: Any) -> Floats:
     """A float for a scalar, else a float ndarray (the kernels keep a single
     position in Python floats: numpy's 0-d arrays cost a microsecond an operation)."""
     if type(x) is float:
@@ -153,90 +160,114 @@ def masked(bad, x):
     return np.where(bad, np.nan, x) if bad.any() else x
 
 
-def without_float_warnings(func):
+def without_float_warnings(func: Callable[_P, _R]) -> Callable[_P, _R]:
     """Run a kernel with numpy's floating-point warnings off: NaN marks the
     positions that do not assemble, and the status says so; an overflow
     (inputs too large for float64's range) is refused by the unit-aware layer
     and the batch, which check the outputs they give."""
 
     @functools.wraps(func)
-    def wrapper(*args, **kwargs):
+    def wrapper(*args: _P.args, **kwargs: _P.kwargs) -> _R:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return func(*args, **kwargs)
 
     return wrapper
 
 
-@dataclass(eq=False)
+#: the input motion every closed-form kernel echoes in its Motion [rad, rad/s, rad/s^2, rad/s^3]
+INPUTS = ("theta2", "omega2", "alpha2", "jerk2")
+
+
+def angles(*links: int) -> tuple[str, ...]:
+    """The angular outputs of ``links`` (3, 4 ...), position to jerk, in the order
+    results report them (docs/conventions.md#outputs): ``angles(3, 4)`` is theta3,
+    theta4, omega3, omega4, alpha3, alpha4, jerk3, jerk4 [rad, rad/s, rad/s^2, rad/s^3]."""
+    return tuple(f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in links)
+
+
+def slider(name: str) -> tuple[str, ...]:
+    """A varying length and its derivatives: ``slider("d")`` is d, d_dot, d_ddot,
+    d_dddot [m, m/s, m/s^2, m/s^3]."""
+    return tuple(name + s for s in ("", "_dot", "_ddot", "_dddot"))
+
+
+@dataclass(eq=False, slots=True)
 class Motion:
     """Kinematic state of a mechanism over one or many positions (SI floats).
 
-    Every kernel fills the fields its mechanism has and leaves the rest None:
-    link angles and their derivatives (``theta2`` .. ``jerk5`` [rad, rad/s,
-    rad/s^2, rad/s^3]), a slider's position and derivatives (``d`` ..
-    ``d_dddot``, ``b`` .. ``b_dddot`` [m, m/s, ...]), or a single point's
-    vectors (``R`` .. ``J``, complex). Always: ``status`` (int8 per position,
-    :mod:`accelab.solver.status`), ``condition`` (dimensionless; 1 best, 0 at a
-    toggle), ``roundoff`` (estimated relative round-off of the derivatives)
-    and ``order``, the highest derivative computed (0 position .. 3 jerk).
-    ``directions`` maps a link number ("2", "3" ...) to the cosine and sine
-    of its angle in the ground frame, which the kernel computed anyway (the
-    points of the links are built from them).
+    Each kernel declares what it computes with :func:`outputs`, a subclass
+    whose fields are exactly the kernel's: its ``OUTPUTS`` (link angles and
+    their derivatives ``theta3`` .. ``jerk4`` [rad, rad/s, rad/s^2, rad/s^3],
+    a slider's ``d`` .. ``d_dddot`` [m, m/s, ...], or a point's vectors
+    ``R`` .. ``J``, complex), the input motion it echoes (``theta2`` ..
+    ``jerk2``) and its ``EXTRA`` fields; a field not computed at the order
+    asked stays None, and a name the kernel did not declare cannot be set
+    (AttributeError: no output is ever lost silently). Results read the
+    declaration: ``OUTPUTS`` are the names they report, ``SOLVED`` those
+    the overflow check vouches for when the result is made.
+
+    Always: ``status`` (int8 per position, :mod:`accelab.solver.status`),
+    ``condition`` (dimensionless; 1 best, 0 at a toggle), ``roundoff``
+    (estimated relative round-off of the derivatives) and ``order``, the
+    highest derivative computed (0 position .. 3 jerk). ``directions`` maps a
+    link number ("2", "3" ...) to the cosine and sine of its angle in the
+    ground frame, which the kernel computed anyway (the points of the links
+    are built from them).
     """
 
-    status: object
-    condition: object = 1.0
-    roundoff: object = 0.0
+    status: Any
+    condition: Any = 1.0
+    roundoff: Any = 0.0
     order: int = 3
-    circuit: str = None
-    directions: dict = field(default_factory=dict)
-    theta2: object = None
-    theta3: object = None
-    theta4: object = None
-    theta5: object = None
-    omega2: object = None
-    omega3: object = None
-    omega4: object = None
-    omega5: object = None
-    alpha2: object = None
-    alpha3: object = None
-    alpha4: object = None
-    alpha5: object = None
-    jerk2: object = None
-    jerk3: object = None
-    jerk4: object = None
-    jerk5: object = None
-    gamma: object = None
-    d: object = None
-    d_dot: object = None
-    d_ddot: object = None
-    d_dddot: object = None
-    b: object = None
-    b_dot: object = None
-    b_ddot: object = None
-    b_dddot: object = None
-    R: object = None
-    V: object = None
-    V_t: object = None
-    V_slip: object = None
-    A: object = None
-    A_t: object = None
-    A_n: object = None
-    A_coriolis: object = None
-    A_slip: object = None
-    J: object = None
+    circuit: str | None = None
+    directions: dict[str, tuple[Any, Any]] = field(default_factory=dict)
 
-    def get(self, name):
-        """The field ``name``, or None when this mechanism has no such field
+    #: the outputs a result of this kernel reports, in their order
+    OUTPUTS: ClassVar[tuple[str, ...]] = ()
+    #: the real outputs the kernel solves its loop for (checked for overflow when a
+    #: result is made, see Result._verify); by default all of OUTPUTS
+    SOLVED: ClassVar[frozenset[str]] = frozenset()
+    #: fields beyond the inputs and OUTPUTS (a constant the result reads back ...)
+    EXTRA: ClassVar[tuple[str, ...]] = ()
+    #: every field, the kinematic ones and the bookkeeping above
+    NAMES: ClassVar[frozenset[str]] = frozenset(
+        ("status", "condition", "roundoff", "order", "circuit", "directions")
+    )
+
+    if TYPE_CHECKING:  # the fields are each kernel's declaration (outputs): any name to mypy
+
+        def __init__(self, status: Any, **values: Any) -> None: ...
+        def __getattr__(self, name: str) -> Any: ...
+        def __setattr__(self, name: str, value: Any) -> None: ...
+
+    def get(self, name: str) -> Any:
+        """The field ``name``, or None when this kernel has no such field
         (or it was not computed at this order)."""
-        return getattr(self, name, None) if name in _MOTION_FIELDS else None
+        return getattr(self, name) if name in self.NAMES else None
 
-    def keys(self):
+    def keys(self) -> list[str]:
         """The names of the fields that hold values."""
-        return [f for f in _MOTION_FIELDS if getattr(self, f) is not None]
+        return [f.name for f in fields(self) if getattr(self, f.name) is not None]
 
 
-_MOTION_FIELDS = frozenset(f.name for f in fields(Motion))
+_MotionT = TypeVar("_MotionT", bound=Motion)
+
+
+def outputs(cls: type[_MotionT]) -> type[_MotionT]:
+    """Make ``cls``, a subclass of :class:`Motion` that sets ``OUTPUTS`` (and
+    perhaps ``SOLVED``, ``EXTRA``), the record of one kernel: a dataclass
+    whose fields are the inputs, the outputs and the extras, None by default
+    (with ``__slots__``: setting an undeclared name raises). The fourbar's is
+    ``@outputs class FourbarMotion(Motion)`` with ``OUTPUTS = angles(3, 4)``.
+    """
+    names = tuple(dict.fromkeys(INPUTS + tuple(cls.OUTPUTS) + tuple(cls.EXTRA)))
+    cls.__annotations__ = {n: Any for n in names}
+    for n in names:
+        setattr(cls, n, None)
+    if "SOLVED" not in vars(cls):
+        cls.SOLVED = frozenset(cls.OUTPUTS)
+    cls.NAMES = Motion.NAMES | frozenset(names)
+    return dataclass(eq=False, slots=True)(cls)
 
 
 def rotate(x, y, cos1, sin1):
@@ -312,12 +343,14 @@ def pieces(n):
     return [slice(start, min(start + PIECE, n)) for start in range(0, n, PIECE)]
 
 
-def piecewise(theta2, motion, others):
+def piecewise(
+    theta2: Floats, motion: Iterable[Any], others: Iterable[Any]
+) -> TypeGuard[np.ndarray]:
     """Whether :func:`in_pieces` takes a sweep: theta2 an array of at least
     :data:`MIN_PIECEWISE` positions, each of ``motion`` (omega2, alpha2,
     jerk2) a scalar or an array of theta2's shape, and ``others`` (lengths,
     angles) scalars."""
-    if type(theta2) is float or theta2.size < max(MIN_PIECEWISE, PIECE + 1):
+    if not isinstance(theta2, np.ndarray) or theta2.size < max(MIN_PIECEWISE, PIECE + 1):
         return False
     return same_shapes(theta2, motion, others)
 
@@ -330,7 +363,9 @@ def same_shapes(theta2, motion, others):
     )
 
 
-def in_pieces(solve, theta2, omega2, alpha2, jerk2):
+def in_pieces(
+    solve: Callable[..., _MotionT], theta2: np.ndarray, omega2: Any, alpha2: Any, jerk2: Any
+) -> _MotionT:
     """A kernel's Motion over a long sweep, solved :data:`PIECE` positions at a time.
 
     ``solve(theta2, omega2, alpha2, jerk2)`` solves one piece (the same
@@ -344,36 +379,40 @@ def in_pieces(solve, theta2, omega2, alpha2, jerk2):
     n = flat.size
     motion = [np.ravel(x) if np.ndim(x) else x for x in (omega2, alpha2, jerk2)]
     inputs = {"theta2": theta2, "omega2": omega2, "alpha2": alpha2, "jerk2": jerk2}
-    out = full = directions = None
-    for sl in pieces(n):
-        part = solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
-        if out is None:
-            m = min(n, PIECE)
 
-            def per_position(v):
-                return isinstance(v, np.ndarray) and v.shape == (m,)
+    def solved(sl):
+        return solve(flat[sl], *(x[sl] if np.ndim(x) else x for x in motion))
 
-            full = {
-                k: np.empty(n, getattr(part, k).dtype)
-                for k in part.keys()
-                if k not in inputs and per_position(getattr(part, k))
-            }
-            directions = {
-                k: [np.empty(n) if per_position(x) else x for x in v]
-                for k, v in part.directions.items()
-            }
-            out = Motion(**{f: (None if f in full else getattr(part, f)) for f in _MOTION_FIELDS})
+    slices = pieces(n)
+    first = solved(slices[0])
+    one_each = (min(n, PIECE),)  # the shape of a field with one value per position
+
+    def per_position(v):
+        return isinstance(v, np.ndarray) and v.shape == one_each
+
+    full = {
+        k: np.empty(n, getattr(first, k).dtype)
+        for k in first.keys()
+        if k not in inputs and per_position(getattr(first, k))
+    }
+    gathered = {
+        k: [np.empty(n) if per_position(x) else x for x in v] for k, v in first.directions.items()
+    }
+    names = [f.name for f in fields(first)]
+    out = type(first)(**{k: (None if k in full else getattr(first, k)) for k in names})
+    for sl in slices:
+        part = first if sl is slices[0] else solved(sl)
         for k, v in full.items():
             v[sl] = getattr(part, k)
-        for k, v in directions.items():
-            for whole, piece in zip(v, part.directions[k]):
+        for k, parts in gathered.items():
+            for whole, piece in zip(parts, part.directions[k]):
                 if whole is not piece:
                     whole[sl] = piece
     for k, v in full.items():
         setattr(out, k, v.reshape(shape))
     out.directions = {
         k: tuple(x.reshape(shape) if isinstance(x, np.ndarray) else x for x in v)
-        for k, v in directions.items()
+        for k, v in gathered.items()
     }
     for k, v in inputs.items():
         if getattr(out, k) is not None:

@@ -1,6 +1,7 @@
 """The geared fivebar, position to jerk, in closed form (unit-free).
 
-Vector loop (docs/conventions.md#mechanisms; its first and second derivatives are eqs. 6.32a and 7.28a):
+Vector loop (docs/conventions.md#mechanisms; its first and second derivatives are eqs. 6.32a
+and 7.28a):
     a e^{j theta2} + b e^{j theta3} - c e^{j theta4} - d e^{j theta5} - f e^{j theta1} = 0
     theta5 = lam theta2 + phi   (angles measured from the ground line O2->O5)
 
@@ -25,14 +26,17 @@ import numpy as np
 
 from .common import (
     OK,
+    Floats,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     triangle_angles,
     without_float_warnings,
@@ -41,23 +45,30 @@ from .common import (
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
+@outputs
+class FiveBarMotion(Motion):
+    """What :func:`solve` returns: links 3, 4 and the geared link 5, position to jerk."""
+
+    OUTPUTS = angles(3, 4, 5)
+
+
 @without_float_warnings
 def solve(
-    a,
-    b,
-    c,
-    d,
-    f,
-    lam,
-    phi,
-    theta2,
-    omega2,
-    alpha2=0.0,
-    jerk2=0.0,
-    theta1=0.0,
-    circuit="open",
-    order=3,
-):
+    a: float,
+    b: float,
+    c: float,
+    d: float,
+    f: float,
+    lam: float,
+    phi: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> FiveBarMotion:
     """Geared fivebar kinematics from position to jerk.
 
     Parameters
@@ -78,7 +89,7 @@ def solve(
 
     Returns
     -------
-    Motion
+    FiveBarMotion
         theta3, theta4, theta5 [rad]; omega3..5; alpha3..5; jerk3..5;
         ``status``; ``condition`` = |sin(theta3 - theta4)|; ``roundoff``
         (see :func:`accelab.solver.kernels.fourbar.solve`).
@@ -90,7 +101,9 @@ def solve(
     a, b, c, d, f = a / unit, b / unit, c / unit, d / unit, f / unit
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, d, f, lam, phi, theta1)):
         return in_pieces(
-            lambda *motion: solve(a, b, c, d, f, lam, phi, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: solve(
+                a, b, c, d, f, lam, phi, t2, w2, a2, j2, theta1, circuit, order
+            ),
             theta2,
             omega2,
             alpha2,
@@ -117,7 +130,7 @@ def solve(
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
-    out = Motion(
+    out = FiveBarMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

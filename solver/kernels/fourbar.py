@@ -65,17 +65,28 @@ from .common import (
     OK,
     ROUNDOFF_GAIN,
     SINGULAR,
+    Floats,
     Motion,
+    angles,
     as_input,
     classify,
     length_unit,
     masked,
+    outputs,
     pieces,
     same_shapes,
     without_float_warnings,
 )
 
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
+
+
+@outputs
+class FourbarMotion(Motion):
+    """What :func:`solve` returns: links 3 and 4, position to jerk."""
+
+    OUTPUTS = angles(3, 4)
+
 
 #: fewer positions than this are solved by plain whole-array expressions, whose
 #: fixed cost per call is lower (the same formulas: the same bits); from here
@@ -143,7 +154,19 @@ def _coefficients(a, omega2, alpha2, jerk2):
 
 
 @without_float_warnings
-def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
+def solve(
+    a: float,
+    b: float,
+    c: float,
+    d: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> FourbarMotion:
     """Fourbar kinematics from position to jerk.
 
     Parameters
@@ -164,7 +187,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
 
     Returns
     -------
-    Motion
+    FourbarMotion
         theta3, theta4 [rad]; omega3, omega4 [rad/s]; alpha3, alpha4
         [rad/s^2]; jerk3, jerk4 [rad/s^3]; ``status``; ``condition``
         (|sin(theta3 - theta4)|, the sine of the transmission angle) and
@@ -183,7 +206,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
     unit = length_unit(a, b, c, d)  # scale-free: lengths near 1, exactly
     a, b, c, d = a / unit, b / unit, c / unit, d / unit
     if (
-        type(theta2) is not float
+        isinstance(theta2, np.ndarray)
         and theta2.size >= MIN_IN_PLACE
         and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))
     ):
@@ -211,7 +234,7 @@ def solve(a, b, c, d, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit
     theta4 = np.arctan2(s4, c4)
     if turned:
         theta3, theta4 = theta3 + theta1, theta4 + theta1
-    out = Motion(
+    out = FourbarMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,
@@ -425,7 +448,7 @@ def _solve_in_place(a, b, c, d, theta2, omega2, alpha2, jerk2, theta1, sigma, ci
         np.multiply(p4, w4, out=t)
         j4 += t
     res = {k: v.reshape(shape) for k, v in res.items()}
-    out = Motion(
+    out = FourbarMotion(
         order=order,
         theta2=theta2,
         theta3=res["theta3"],

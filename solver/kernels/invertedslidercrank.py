@@ -33,16 +33,20 @@ import numpy as np
 from .common import (
     EPS,
     OK,
+    Floats,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     scale_lengths,
+    slider,
     where,
     without_float_warnings,
 )
@@ -50,10 +54,29 @@ from .common import (
 CIRCUITS = {"open": 1.0, "crossed": -1.0}
 
 
+@outputs
+class InvertedSliderCrankMotion(Motion):
+    """What :func:`solve` returns: links 3 and 4 and the block's position b along the
+    slide line, position to jerk; ``gamma`` echoed."""
+
+    OUTPUTS = angles(3, 4) + slider("b")
+    EXTRA = ("gamma",)
+
+
 @without_float_warnings
 def solve(
-    a, c, d, gamma, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3
-):
+    a: float,
+    c: float,
+    d: float,
+    gamma: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> InvertedSliderCrankMotion:
     """Inverted slider-crank kinematics from position to jerk.
 
     Parameters
@@ -73,7 +96,7 @@ def solve(
 
     Returns
     -------
-    Motion
+    InvertedSliderCrankMotion
         theta3, theta4 [rad] (theta3 = theta4 + gamma); omega3 = omega4;
         alpha3 = alpha4; jerk3 = jerk4; b [m], b_dot, b_ddot, b_dddot;
         ``status``; ``condition`` = |b + c cos gamma| / |A - O4|; ``roundoff``
@@ -83,7 +106,7 @@ def solve(
     out = _solve(
         a / unit, c / unit, d / unit, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     )
-    return scale_lengths(out, ("b", "b_dot", "b_ddot", "b_dddot"), unit)
+    return scale_lengths(out, slider("b"), unit)
 
 
 def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -93,7 +116,7 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, c, d, gamma, theta1)):
         return in_pieces(
-            lambda *motion: _solve(a, c, d, gamma, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: _solve(a, c, d, gamma, t2, w2, a2, j2, theta1, circuit, order),
             theta2,
             omega2,
             alpha2,
@@ -123,7 +146,7 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1
     theta3 = theta4 + gamma
-    out = Motion(
+    out = InvertedSliderCrankMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

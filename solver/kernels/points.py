@@ -54,7 +54,8 @@ def relative_velocity(L, theta, omega, offset=0.0, e=None, je=None):
 
 
 def relative_acceleration_parts(L, theta, omega, alpha, offset=0.0, e=None, je=None):
-    """(A_XY^t, A_XY^n) [m/s^2]: tangential L alpha j e^{j..}, normal -L omega^2 e^{j..} (eq. 7.2)."""
+    """(A_XY^t, A_XY^n) [m/s^2]: tangential L alpha j e^{j..}, normal -L omega^2 e^{j..}
+    (eq. 7.2)."""
     e, je = _pair(theta, offset, e, je)
     return (L * alpha) * je, (-L * omega * omega) * e
 

@@ -15,20 +15,38 @@ and the jerk of the same variable-length vector (see common.py).
 
 import numpy as np
 
-from .common import OK, Motion, without_float_warnings
+from .common import OK, Floats, Motion, outputs, without_float_warnings
+
+
+@outputs
+class RotatingPointMotion(Motion):
+    """What :func:`rotating_point` returns: the point's vectors, complex."""
+
+    OUTPUTS = ("R", "V", "A", "A_t", "A_n", "J")
+    SOLVED = frozenset()  # complex vectors: checked for overflow where they are read
+
+
+@outputs
+class SlotMotion(Motion):
+    """What :func:`slotted_link` returns: the block's vectors, complex."""
+
+    OUTPUTS = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
+    SOLVED = frozenset()  # complex vectors: checked for overflow where they are read
 
 
 @without_float_warnings
-def rotating_point(p, theta, omega, alpha=0.0, jerk=0.0):
+def rotating_point(
+    p: Floats, theta: Floats, omega: Floats, alpha: Floats = 0.0, jerk: Floats = 0.0
+) -> RotatingPointMotion:
     """Position to jerk of a point at radius ``p`` [m] on a link turning about
     the origin. Returns complex arrays R [m], V [m/s], A_t, A_n, A [m/s^2],
-    J [m/s^3] in a Motion (every position ``OK``: a point in rotation has no
+    J [m/s^3] in a :class:`RotatingPointMotion` (every position ``OK``: a point in rotation has no
     limit position)."""
     e = np.exp(1j * np.asarray(theta, dtype=float))
     je = 1j * e
     A_t = p * alpha * je
     A_n = -p * omega * omega * e
-    return Motion(
+    return RotatingPointMotion(
         _all_ok(A_t),
         R=p * e,
         V=p * omega * je,
@@ -45,7 +63,16 @@ def _all_ok(x):
 
 
 @without_float_warnings
-def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.0):
+def slotted_link(
+    theta: Floats,
+    omega: Floats,
+    alpha: Floats,
+    p: Floats,
+    p_dot: Floats,
+    p_ddot: Floats = 0.0,
+    p_dddot: Floats = 0.0,
+    jerk: Floats = 0.0,
+) -> SlotMotion:
     """A block sliding along a rotating link (Figure 7-7, eq. 7.19).
 
     Parameters
@@ -58,7 +85,7 @@ def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.
 
     Returns
     -------
-    Motion
+    SlotMotion
         Complex R, V, A_t, A_n, A_coriolis, A_slip, A, J; the velocity parts
         V_t (p omega j e^{j theta}) and V_slip (p' e^{j theta}).
     """
@@ -75,7 +102,7 @@ def slotted_link(theta, omega, alpha, p, p_dot, p_ddot=0.0, p_dddot=0.0, jerk=0.
         - 3.0 * p * omega * alpha
         + 1j * (3.0 * p_ddot * omega + 3.0 * p_dot * alpha + p * jerk - p * w2 * omega)
     ) * e
-    return Motion(
+    return SlotMotion(
         _all_ok(A_t),
         R=p * e,
         V_t=p * omega * je,

@@ -23,16 +23,20 @@ import numpy as np
 from .common import (
     EPS,
     OK,
+    Floats,
     Motion,
     acc_term,
+    angles,
     as_input,
     classify,
     in_pieces,
     jerk_term,
     length_unit,
     masked,
+    outputs,
     piecewise,
     scale_lengths,
+    slider,
     where,
     without_float_warnings,
 )
@@ -40,8 +44,27 @@ from .common import (
 CIRCUITS = {"open": -1.0, "crossed": 1.0}
 
 
+@outputs
+class SliderCrankMotion(Motion):
+    """What :func:`solve` returns: the connecting rod (link 3) and the slider's position d,
+    position to jerk."""
+
+    OUTPUTS = angles(3) + slider("d")
+
+
 @without_float_warnings
-def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="open", order=3):
+def solve(
+    a: float,
+    b: float,
+    c: float,
+    theta2: Floats,
+    omega2: Floats,
+    alpha2: Floats = 0.0,
+    jerk2: Floats = 0.0,
+    theta1: float = 0.0,
+    circuit: str = "open",
+    order: int = 3,
+) -> SliderCrankMotion:
     """Slider-crank kinematics from position to jerk.
 
     Parameters
@@ -61,7 +84,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="o
 
     Returns
     -------
-    Motion
+    SliderCrankMotion
         theta3 [rad], omega3, alpha3, jerk3; d [m] (slider position along the
         slide axis from O2), d_dot [m/s], d_ddot [m/s^2], d_dddot [m/s^3];
         ``status``; ``condition`` = |cos theta3 (relative to the slide)|;
@@ -71,7 +94,7 @@ def solve(a, b, c, theta2, omega2, alpha2=0.0, jerk2=0.0, theta1=0.0, circuit="o
     out = _solve(
         a / unit, b / unit, c / unit, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     )
-    return scale_lengths(out, ("d", "d_dot", "d_ddot", "d_dddot"), unit)
+    return scale_lengths(out, slider("d"), unit)
 
 
 def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
@@ -81,7 +104,7 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     order = min(order, 3)
     if piecewise(theta2, (omega2, alpha2, jerk2), (a, b, c, theta1)):
         return in_pieces(
-            lambda *motion: _solve(a, b, c, *motion, theta1, circuit, order),
+            lambda t2, w2, a2, j2: _solve(a, b, c, t2, w2, a2, j2, theta1, circuit, order),
             theta2,
             omega2,
             alpha2,
@@ -101,7 +124,7 @@ def _solve(a, b, c, theta2, omega2, alpha2, jerk2, theta1, circuit, order):
     status, roundoff = classify(gap, span)
     theta3 = np.arctan2(s3, c3) + theta1
     d = a * cos2 - b * c3
-    out = Motion(
+    out = SliderCrankMotion(
         order=order,
         theta2=theta2,
         theta3=theta3,

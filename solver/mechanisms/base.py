@@ -5,14 +5,23 @@ the errors raised for one position."""
 import cmath
 import functools
 import math
+from collections.abc import Mapping
+from typing import Any, TypeVar
 
 import numpy as np
+import pint
 
 from ..errors import InvalidInput, NotAssemblable, Singular
 from ..kernels import MAX_ROUNDOFF, NOT_ASSEMBLABLE, OK, points
-from ..parameters import MOTION, PARAMETERS
+from ..parameters import MOTION, Declaration
+from ..registry import PARAMETERS
 from ..results import Kinematics
-from ..units import SI_UNITS, parse_quantity, quantity, show, to_si
+from ..units import SI_UNITS, QuantityLike, SIValue, parse_quantity, quantity, show, to_si
+
+#: a point's spec: (base point or pivot, length parameter or SI length or function, theta key,
+#: offset angle [rad])
+_PointSpec = tuple[Any, Any, Any, float]
+_M = TypeVar("_M", bound="Mechanism")
 
 #: name prefixes -> kind of quantity, longest prefix first
 _KINDS = [
@@ -44,7 +53,7 @@ _EXACT = {
 
 
 @functools.lru_cache(maxsize=1024)
-def kind_of(name):
+def kind_of(name: str) -> str:
     """The kind of quantity a result attribute holds, from its name."""
     if name in _EXACT:
         return _EXACT[name]
@@ -58,7 +67,7 @@ def kind_of(name):
 
 
 @functools.lru_cache(maxsize=1024)
-def order_of(name):
+def order_of(name: str) -> int:
     """The derivative an output needs (0 position .. 3 jerk)."""
     for prefix, n in _ANGLE_ORDER.items():
         if name.startswith(prefix):
@@ -72,7 +81,7 @@ def order_of(name):
     return 0
 
 
-def check_order(order):
+def check_order(order: Any) -> int:
     """``order`` as an int 0..3 (position .. jerk), or InvalidInput."""
     if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or not 0 <= order <= 3:
         raise InvalidInput(
@@ -83,8 +92,8 @@ def check_order(order):
     return int(order)
 
 
-#: (mechanism class, order) -> the kernel outputs of that order (see Result._verify)
-_TOPS = {}
+#: (kernel's Motion class, order) -> its solved outputs of that order (see Result._verify)
+_TOPS: dict[tuple[type, int], list[str]] = {}
 
 
 def _fmt_angle(rad):
@@ -108,19 +117,26 @@ class Result(Kinematics):
     dimensionless condition measure (1 best, 0 at a toggle).
     """
 
-    def __init__(self, mechanism, motion, scalar, inputs, pts=None):
+    def __init__(
+        self,
+        mechanism: "Mechanism",
+        motion: Any,
+        scalar: bool,
+        inputs: Mapping[str, Any],
+        pts: Mapping[str, _PointSpec] | None = None,
+    ) -> None:
         self._mech = mechanism
         self._pts = mechanism._points if pts is None else pts
         self._motion = motion
         self._scalar = scalar
         self._inputs = inputs
-        self._cache = {}
+        self._cache: dict[Any, Any] = {}
         self._status = motion.status
         self._condition = motion.condition
         self._verified = ()
 
     # --- unit-free access -------------------------------------------------
-    def si(self, name):
+    def si(self, name: str) -> SIValue:
         """The SI value (float, complex, or array) of an output, unit-free.
 
         Raises InvalidInput where it overflows float64 at a position the
@@ -156,7 +172,7 @@ class Result(Kinematics):
         else:
             for name in names:
                 self._check_finite(name, getattr(motion, name))
-        self._verified = self._mech._solved
+        self._verified = type(motion).SOLVED
 
     def _check_finite(self, name, value):
         if self._scalar:
@@ -173,10 +189,10 @@ class Result(Kinematics):
             name,
         )
 
-    def kind(self, name):
+    def kind(self, name: str) -> str:
         return kind_of(name)
 
-    def has_point(self, name):
+    def has_point(self, name: str) -> bool:
         """Whether this result has the point ``name`` (A, B, P ...)."""
         return name in self._pts
 
@@ -301,7 +317,9 @@ class Result(Kinematics):
         )
         return t if comp == "t" else nn
 
-    def point(self, link, p, delta=0, base=None):
+    def point(
+        self, link: int, p: QuantityLike, delta: QuantityLike = 0, base: str | None = None
+    ) -> "PointMotion":
         """Position to jerk of any point on a link (section 7.5, eqs. 7.30-7.32, 7.41).
 
         Parameters
@@ -364,22 +382,22 @@ class Result(Kinematics):
         return PointMotion(parts)
 
     # --- unit-aware access ------------------------------------------------
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> pint.Quantity:
         if name.startswith("_"):
             raise AttributeError(name)
         value = self.si(name)
         return quantity(value, kind_of(name))
 
-    def __dir__(self):
+    def __dir__(self) -> list[str]:
         return sorted(set(super().__dir__()) | set(self.outputs()))
 
-    def outputs(self):
+    def outputs(self) -> list[str]:
         """Names of the outputs this result reports (as the batch contract
         lists them), those of its order."""
         return [n for n in self._mech.outputs(self) if order_of(n) <= self._motion.order]
 
     @property
-    def roundoff(self):
+    def roundoff(self) -> float | np.ndarray:
         """Estimated relative round-off of the derivative outputs (float or
         array); above :data:`~accelab.solver.kernels.MAX_ROUNDOFF` a position is
         ``singular``. Zero for mechanisms without limit positions."""
@@ -387,10 +405,11 @@ class Result(Kinematics):
         return float(r) if self._scalar else np.broadcast_to(r, np.shape(self._motion.status))
 
     @property
-    def circuit(self):
+    def circuit(self) -> str | None:
+        """The assembly solved ('open', 'crossed'; None for a mechanism with one)."""
         return self._motion.circuit
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         mech = type(self._mech).__name__
         if not self._scalar:
             n = np.size(self._motion.status)
@@ -406,7 +425,7 @@ class PointMotion:
     """Position, velocity, acceleration and jerk of one point, as Quantities
     (``R``, ``V``, ``A``, ``J``, and ``A_t``, ``A_n`` about its base pin)."""
 
-    _KINDS = {
+    _KINDS: dict[str, str] = {
         "R": "length",
         "V": "velocity",
         "A": "acceleration",
@@ -415,15 +434,15 @@ class PointMotion:
         "J": "jerk",
     }
 
-    def __init__(self, parts):
+    def __init__(self, parts: dict[str, SIValue]) -> None:
         self._si = parts
 
-    def si(self, name):
+    def si(self, name: str) -> SIValue:
         """The SI value of ``name`` (``R`` [m], ``V`` [m/s], ``A``, ``A_t``,
         ``A_n`` [m/s^2], ``J`` [m/s^3]; complex: x + jy), unit-free."""
         return self._si[name]
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> pint.Quantity:
         if name.startswith("_") or name not in self._KINDS:
             raise AttributeError(name)
         if name not in self._si:
@@ -433,7 +452,7 @@ class PointMotion:
             )
         return quantity(self._si[name], self._KINDS[name])
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (
             "<PointMotion "
             + ", ".join(f"{k}={getattr(self, k):.5g~P}" for k in self._KINDS if k in self._si)
@@ -444,27 +463,28 @@ class PointMotion:
 class Mechanism:
     """Base of the unit-aware mechanisms.
 
-    Subclasses name their declaration in :data:`accelab.solver.parameters.PARAMETERS`
+    Subclasses name their entry of the registry, :data:`accelab.solver.registry.REGISTRY`
     (``name``) and declare ``_points`` (point -> (base point or pivot key,
     length parameter, theta key, offset)), ``_pivots`` (fixed pins),
-    ``_outputs`` and a ``solve``/``solve_si`` pair: ``solve`` takes
-    Quantities or text and converts them to SI once; ``solve_si`` takes SI
-    floats (what the batch format has already read) and calls the kernel.
+    ``_point_outputs`` (the outputs they build from the points, beyond the
+    kernel's own: the kernel's record declares those, see
+    :func:`accelab.solver.kernels.common.outputs`) and a ``solve``/``solve_si``
+    pair: ``solve`` takes Quantities or text and converts them to SI once;
+    ``solve_si`` takes SI floats (what the batch format has already read) and
+    calls the kernel.
     """
 
-    name = None
-    _points = {}
-    _relative = {}  # "XY" -> (length parameter, theta key, offset) for X, Y on one link
-    _link_bases = {}  # link number -> the pin a point on it is measured from
-    _pivots = ("O2",)
-    _outputs = ()
-    #: the real outputs a kernel computes (links' angles and derivatives, sliders)
-    _solved = frozenset(
-        [f"{q}{k}" for q in ("theta", "omega", "alpha", "jerk") for k in "345"]
-        + [f"{s}{d}" for s in "db" for d in ("", "_dot", "_ddot", "_dddot")]
-    )
+    #: its name in the registry (accelab.solver.registry), set by each mechanism
+    name: str = ""
+    _points: dict[str, _PointSpec] = {}
+    #: "XY" -> (length parameter, theta key, offset) for X, Y on one link
+    _relative: dict[str, tuple[str, str, float]] = {}
+    _link_bases: dict[int, str] = {}  # link number -> the pin a point on it is measured from
+    _pivots: tuple[str, ...] = ("O2",)
+    #: outputs built from the points (R_A, A_BA ...), reported after the kernel's
+    _point_outputs: tuple[str, ...] = ()
 
-    def __init__(self, **geometry):
+    def __init__(self, **geometry: QuantityLike) -> None:
         decl = self.declaration()
         names = [p.name for p in decl.geometry]
         unknown = sorted(set(geometry) - set(names))
@@ -498,12 +518,18 @@ class Mechanism:
         self._init(si, geometry, units)
 
     @classmethod
-    def declaration(cls):
-        """This mechanism's parameters (:class:`accelab.solver.parameters.Declaration`)."""
+    def declaration(cls) -> Declaration:
+        """This mechanism's parameters (:class:`accelab.solver.parameters.Declaration`), as its
+        entry of the registry declares them."""
         return PARAMETERS[cls.name]
 
     @classmethod
-    def from_si(cls, geometry, given=None, units=None):
+    def from_si(
+        cls: type[_M],
+        geometry: Mapping[str, float],
+        given: Mapping[str, Any] | None = None,
+        units: Mapping[str, Any] | None = None,
+    ) -> _M:
         """The mechanism from geometry already read into SI floats (the batch
         format's path: no second conversion). ``given`` holds the user's own
         values and ``units`` the units they were written in, for messages."""
@@ -536,7 +562,7 @@ class Mechanism:
     def _validate(self):
         """Hook for geometry checks beyond positivity."""
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> pint.Quantity:
         if name.startswith("_"):
             raise AttributeError(name)
         for p in type(self).declaration().geometry:
@@ -544,7 +570,7 @@ class Mechanism:
                 return quantity(self._si[name], p.kind)
         raise AttributeError(name)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         args = ", ".join(f"{k}={self._given_text(k)!r}" for k in self._si)
         return f"{type(self).__name__}({args})"
 
@@ -584,13 +610,22 @@ class Mechanism:
         """Mechanism-specific outputs (Coriolis term, slider point ...)."""
         return None
 
-    def outputs(self, result):
+    def outputs(self, result: Result) -> tuple[str, ...]:
         """Names of every output a ``result`` of this mechanism can report, in
-        the order of docs/conventions.md#outputs (SI units: m, rad, s)."""
-        return self._outputs
+        the order of docs/conventions.md#outputs (SI units: m, rad, s): those its
+        kernel declares (``OUTPUTS`` of the kernel's Motion), then the points'."""
+        return type(result._motion).OUTPUTS + self._point_outputs
 
     # --- solving ----------------------------------------------------------
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit=None, order=3):
+    def solve(
+        self,
+        theta2: QuantityLike,
+        omega2: QuantityLike,
+        alpha2: QuantityLike = 0,
+        jerk2: QuantityLike = 0,
+        circuit: str | None = None,
+        order: int = 3,
+    ) -> Result:
         """Solve at one or many input angles.
 
         Parameters
@@ -620,7 +655,9 @@ class Mechanism:
         circuit = self._circuit(circuit)
         return self.solve_si(self._motion_inputs(theta2, omega2, alpha2, jerk2), circuit, order)
 
-    def solve_si(self, motion, circuit=None, order=3):
+    def solve_si(
+        self, motion: Mapping[str, Any], circuit: str | None = None, order: int = 3
+    ) -> Result:
         """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
         and jerk2 [rad, rad/s, rad/s^2, rad/s^3] (what the batch format has
         already read)."""
@@ -636,7 +673,7 @@ class Mechanism:
             p.name: to_si(v, p.name, p.kind)
             for p, v in zip(MOTION, (theta2, omega2, alpha2, jerk2))
         }
-        arrays = {k: v.shape for k, v in inputs.items() if type(v) is not float}
+        arrays = {k: v.shape for k, v in inputs.items() if isinstance(v, np.ndarray)}
         if not arrays or len(arrays) == 1 and "theta2" in arrays:  # the common cases
             return inputs
         shapes = {k: np.shape(v) for k, v in inputs.items()}
@@ -676,12 +713,12 @@ class Mechanism:
         if scalar and raise_errors and motion.status != OK:
             self._raise(motion, inputs)
         # an overflow of the kernel's outputs is refused now, not when read
-        key = (type(self), motion.order)
+        key = (type(motion), motion.order)
         top = _TOPS.get(key)
         if top is None:
             top = _TOPS[key] = sorted(
                 n
-                for n in self._solved
+                for n in type(motion).SOLVED
                 if order_of(n) == motion.order and getattr(motion, n) is not None
             )
         result._verify(top)

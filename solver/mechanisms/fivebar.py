@@ -28,6 +28,15 @@ class GearedFiveBar(Mechanism):
     """
 
     name = "fivebar"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _b: float
+    _c: float
+    _d: float
+    _f: float
+    _lam: float
+    _phi: float
+    _theta1: float
     _pivots = ("O2", "O5")
     _points = {
         "A": ("O2", "a", "theta2", 0.0),
@@ -36,19 +45,7 @@ class GearedFiveBar(Mechanism):
     }
     _relative = {"BA": ("b", "theta3", 0.0), "BC": ("c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "C", 5: "O5"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "theta5",
-        "omega3",
-        "omega4",
-        "omega5",
-        "alpha3",
-        "alpha4",
-        "alpha5",
-        "jerk3",
-        "jerk4",
-        "jerk5",
+    _point_outputs = (
         "R_A",
         "R_B",
         "R_C",

@@ -1,10 +1,13 @@
 """The fourbar with Quantities in and out (kernel: accelab.solver.kernels.fourbar)."""
 
+from collections.abc import Mapping
+from typing import Any
+
 import numpy as np
 
 from ..kernels import fourbar as kernel
-from ..units import to_si
-from .base import Mechanism, check_order
+from ..units import QuantityLike, to_si
+from .base import Mechanism, Result, check_order
 
 
 class FourBar(Mechanism):
@@ -25,19 +28,17 @@ class FourBar(Mechanism):
     """
 
     name = "fourbar"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _b: float
+    _c: float
+    _d: float
+    _theta1: float
     _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _relative = {"BA": ("b", "theta3", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "omega3",
-        "omega4",
-        "alpha3",
-        "alpha4",
-        "jerk3",
-        "jerk4",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",
@@ -48,12 +49,24 @@ class FourBar(Mechanism):
         "J_A",
         "J_B",
     )
-    _point_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
+    _coupler_outputs = ("R_P", "V_P", "A_P", "A_PA", "J_P")
 
     def _pivot(self, key):
         return self._d * np.exp(1j * self._theta1) if key == "O4" else 0j
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, circuit="open", p=None, delta3=0, order=3):
+    # the coupler point (p, delta3) comes before order, as it has since 0.1: an override
+    # with more parameters than Mechanism.solve's, in the middle
+    def solve(  # type: ignore[override]
+        self,
+        theta2: QuantityLike,
+        omega2: QuantityLike,
+        alpha2: QuantityLike = 0,
+        jerk2: QuantityLike = 0,
+        circuit: str | None = "open",
+        p: QuantityLike | None = None,
+        delta3: QuantityLike = 0,
+        order: int = 3,
+    ) -> Result:
         """Solve the fourbar at one or many crank angles.
 
         Parameters
@@ -84,7 +97,7 @@ class FourBar(Mechanism):
         """
         circuit = self._circuit(circuit)
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
-        point = {}
+        point: dict[str, Any] = {}
         if p is not None:
             point = {
                 "p": to_si(p, "p", "length", positive=True),
@@ -92,7 +105,14 @@ class FourBar(Mechanism):
             }
         return self.solve_si(inputs, circuit, order, **point)
 
-    def solve_si(self, motion, circuit="open", order=3, p=None, delta3=0.0):
+    def solve_si(
+        self,
+        motion: Mapping[str, Any],
+        circuit: str | None = "open",
+        order: int = 3,
+        p: float | None = None,
+        delta3: float = 0.0,
+    ) -> Result:
         """:meth:`solve` from SI floats: ``motion`` holds theta2, omega2, alpha2
         and jerk2 [rad, rad/s, ...], ``p`` [m] and ``delta3`` [rad] the coupler point."""
         circuit = self._circuit(circuit)
@@ -117,10 +137,11 @@ class FourBar(Mechanism):
         )
         return self._finish(m, inputs, pts=pts)
 
-    def outputs(self, result):
+    def outputs(self, result: Result) -> tuple[str, ...]:
         """The fourbar's outputs, with those of the coupler point P (``R_P``,
         ``V_P``, ``A_P``, ``A_PA``, ``J_P``) when the mechanism has one."""
-        return self._outputs + (self._point_outputs if result.has_point("P") else ())
+        coupler = self._coupler_outputs if result.has_point("P") else ()
+        return super().outputs(result) + coupler
 
     def _not_assemblable_reason(self, motion, inputs):
         t = inputs["theta2"] - self._theta1

@@ -35,22 +35,16 @@ class InvertedSliderCrank(Mechanism):
     """
 
     name = "invertedslidercrank"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _c: float
+    _d: float
+    _gamma: float
+    _theta1: float
     _pivots = ("O2", "O4")
     _points = {"A": ("O2", "a", "theta2", 0.0), "B": ("O4", "c", "theta4", 0.0)}
     _link_bases = {2: "O2", 3: "A", 4: "O4"}
-    _outputs = (
-        "theta3",
-        "theta4",
-        "omega3",
-        "omega4",
-        "alpha3",
-        "alpha4",
-        "jerk3",
-        "jerk4",
-        "b",
-        "b_dot",
-        "b_ddot",
-        "b_dddot",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",
@@ -110,8 +104,8 @@ class InvertedSliderCrank(Mechanism):
         reach = self._c * abs(np.sin(self._gamma))
         return (
             f"the slide line passes at least c |sin gamma| = {self._show(reach)} from O4, "
-            f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or reduce c or "
-            f"|sin gamma|."
+            f"but A is only |A - O4| = {self._show(s)} from O4. Choose another theta2, or "
+            f"reduce c or |sin gamma|."
         )
 
     def _singular_reason(self):

@@ -1,8 +1,11 @@
 """A point on a rotating link and a block on a slotted link, with Quantities."""
 
+from collections.abc import Mapping
+from typing import Any
+
 from ..kernels import rotation as kernel
-from ..units import to_si
-from .base import Mechanism
+from ..units import QuantityLike, to_si
+from .base import Mechanism, Result
 
 
 class RotatingPoint(Mechanism):
@@ -18,7 +21,8 @@ class RotatingPoint(Mechanism):
     """
 
     name = "rotation"
-    _outputs = ("R", "V", "A", "A_t", "A_n", "J")
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _p: float
 
     def _kernel(self, motion, circuit, order):
         return kernel.rotating_point(
@@ -41,15 +45,35 @@ class SlottedLink(Mechanism):
     """
 
     name = "slotted"
-    _outputs = ("R", "V", "V_t", "V_slip", "A", "A_t", "A_n", "A_coriolis", "A_slip", "J")
 
-    def solve(self, theta2, omega2, alpha2, p, p_dot, p_ddot=0, p_dddot=0, jerk2=0):
+    # the block's own motion (p and its rates) is a second input: not Mechanism.solve's signature
+    def solve(  # type: ignore[override]
+        self,
+        theta2: QuantityLike,
+        omega2: QuantityLike,
+        alpha2: QuantityLike,
+        p: QuantityLike,
+        p_dot: QuantityLike,
+        p_ddot: QuantityLike = 0,
+        p_dddot: QuantityLike = 0,
+        jerk2: QuantityLike = 0,
+    ) -> Result:
+        """Solve the block at one or many link angles: the link's angle and rates
+        [angle, 1/time, 1/time^2, 1/time^3] and the block's distance from the pivot
+        and its rates [length, velocity, acceleration, jerk]."""
         inputs = self._motion_inputs(theta2, omega2, alpha2, jerk2)
         values = {"p": p, "p_dot": p_dot, "p_ddot": p_ddot, "p_dddot": p_dddot}
         block = {q.name: to_si(values[q.name], q.name, q.kind) for q in self.declaration().point}
         return self.solve_si(inputs, **block)
 
-    def solve_si(self, motion, p, p_dot, p_ddot=0.0, p_dddot=0.0):
+    def solve_si(  # type: ignore[override]
+        self,
+        motion: Mapping[str, Any],
+        p: Any,
+        p_dot: Any,
+        p_ddot: Any = 0.0,
+        p_dddot: Any = 0.0,
+    ) -> Result:
         """:meth:`solve` from SI floats: the motion [rad, rad/s, ...] and the
         block's distance and rates [m, m/s, m/s^2, m/s^3]."""
         inputs = dict(motion, p=p, p_dot=p_dot, p_ddot=p_ddot, p_dddot=p_dddot)

@@ -1,4 +1,5 @@
-"""The offset slider-crank with Quantities in and out (kernel: accelab.solver.kernels.slidercrank)."""
+"""The offset slider-crank with Quantities in and out
+(kernel: accelab.solver.kernels.slidercrank)."""
 
 import numpy as np
 
@@ -30,17 +31,14 @@ class SliderCrank(Mechanism):
     """
 
     name = "slidercrank"
+    # the geometry in SI floats (Mechanism._init sets one attribute per parameter)
+    _a: float
+    _b: float
+    _c: float
+    _theta1: float
     _relative = {"BA": ("b", "theta3", np.pi)}
     _link_bases = {2: "O2", 3: "A"}
-    _outputs = (
-        "theta3",
-        "omega3",
-        "alpha3",
-        "jerk3",
-        "d",
-        "d_dot",
-        "d_ddot",
-        "d_dddot",
+    _point_outputs = (
         "R_A",
         "R_B",
         "V_A",
@@ -80,8 +78,8 @@ class SliderCrank(Mechanism):
         y = self._a * np.sin(inputs["theta2"] - self._theta1) - self._c
         return (
             f"the crank pin is {self._show(abs(y))} from the slide line but the rod is "
-            f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose another "
-            f"theta2, a longer rod or a smaller offset."
+            f"only b = {self._given_text('b')} long (need |a sin(theta2) - c| <= b). Choose "
+            f"another theta2, a longer rod or a smaller offset."
         )
 
     def _singular_reason(self):

@@ -1,10 +1,11 @@
 """Any planar linkage as vector loops, solved by Newton-Raphson (section 7.8).
 
-A linkage is a set of named vectors and the loops they close (docs/conventions.md#vector-loop-format,
-"Any linkage as vector loops"). Position comes from Newton-Raphson with the
-analytic Jacobian; velocity, acceleration and jerk from linear solves with
-the same Jacobian. :class:`VectorLoopLinkage` is the unit-aware class;
-:func:`solve_loops_case` is the batch contract's ``loops`` mechanism.
+A linkage is a set of named vectors and the loops they close
+(docs/conventions.md#vector-loop-format, "Any linkage as vector loops").
+Position comes from Newton-Raphson with the analytic Jacobian; velocity,
+acceleration and jerk from linear solves with the same Jacobian.
+:class:`VectorLoopLinkage` is the unit-aware class; :func:`solve_loops_case`
+is the batch contract's ``loops`` mechanism.
 
 A sweep over an array of theta2 follows one assembly by continuation on a
 coarse subset of the positions and solves the positions in between in one

@@ -1,6 +1,8 @@
 """The ``"mechanism": "loops"`` case of the batch contract (docs/conventions.md#batch-format), which
 :func:`accelab.solver.batch.solve_case` hands over to :func:`solve_loops_case`."""
 
+from typing import Any
+
 import numpy as np
 
 from ..errors import InvalidInput, error_object
@@ -62,7 +64,7 @@ def result_dict(system, motion, i=0):
     }
 
 
-def solve_loops_case(case):
+def solve_loops_case(case: Any) -> dict[str, Any]:
     """Solve one loops case; never raises (errors become error objects)."""
     try:
         unknown = sorted((k for k in case if k not in KEYS), key=str)

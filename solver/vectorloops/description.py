@@ -14,6 +14,7 @@ tail (the ground pivot O2 in the usual descriptions).
 
 import re
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -187,7 +188,9 @@ def read_description(case):
     def resolve(name):
         """(base, ratio, offset) of a vector's angle: the chain of follows
         walked to its end (without recursion: a chain may be long)."""
-        chain, k, o = [], 1.0, 0.0
+        chain: list[str] = []
+        k = 1.0
+        o: Any = 0.0  # the offsets summed [rad] (to_si gives a float or an array)
         while True:
             if name in chain:
                 shown = " -> ".join(chain[chain.index(name) :] + [name])

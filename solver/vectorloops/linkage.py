@@ -1,12 +1,15 @@
 """The unit-aware vector-loop linkage."""
 
+from collections.abc import Mapping, Sequence
+from typing import Any
+
 import numpy as np
 
 from ..errors import InvalidInput, NotAssemblable, Singular
 from ..parameters import MOTION
 from ..results import Kinematics
 from ..status import NOT_ASSEMBLABLE, OK
-from ..units import quantity, show, to_si
+from ..units import QuantityLike, SIValue, quantity, show, to_si
 from .newton import DEFAULT_TOL
 from .solve import solve, system_from_case
 
@@ -17,11 +20,11 @@ class VectorLoopLinkage:
     Parameters
     ----------
     vectors : dict
-        Named vectors as in docs/conventions.md#vector-loop-format: ``{"R2": {"length": "2 in", "angle":
-        "input"}, "R3": {"length": "6 in", "angle": "unknown", "guess":
-        "90 deg"}, "S": {"length": "unknown", "guess": "7 in", "angle":
-        "0 deg"}, "R5": {"length": "3 in", "angle": {"follow": "R3",
-        "offset": "40 deg"}}, ...}``. The guesses choose the assembly.
+        Named vectors as in docs/conventions.md#vector-loop-format:
+        ``{"R2": {"length": "2 in", "angle": "input"}, "R3": {"length": "6 in",
+        "angle": "unknown", "guess": "90 deg"}, "S": {"length": "unknown",
+        "guess": "7 in", "angle": "0 deg"}, "R5": {"length": "3 in", "angle":
+        {"follow": "R3", "offset": "40 deg"}}, ...}``. The guesses choose the assembly.
     loops : list of str
         Each a signed sum of vector names that closes to zero.
     points : dict, optional
@@ -39,15 +42,30 @@ class VectorLoopLinkage:
     >>> r.vectors["R4"].alpha, r.points["B"].A
     """
 
-    def __init__(self, vectors, loops, points=None):
+    def __init__(
+        self,
+        vectors: Mapping[str, Any],
+        loops: Sequence[str],
+        points: Mapping[str, str] | None = None,
+    ) -> None:
         self.description = {"vectors": vectors, "loops": loops, "points": points or {}}
         self.system = system_from_case(self.description)
 
     @classmethod
-    def from_case(cls, case):
-        return cls(case.get("vectors"), case.get("loops"), case.get("points"))
+    def from_case(cls, case: Mapping[str, Any]) -> "VectorLoopLinkage":
+        """The linkage of a ``loops`` case (docs/conventions.md#vector-loop-format)."""
+        get: Any = case.get  # a part left out is refused by the reader, which says what to give
+        return cls(get("vectors"), get("loops"), get("points"))
 
-    def solve(self, theta2, omega2, alpha2=0, jerk2=0, order=3, tol=DEFAULT_TOL):
+    def solve(
+        self,
+        theta2: QuantityLike,
+        omega2: QuantityLike,
+        alpha2: QuantityLike = 0,
+        jerk2: QuantityLike = 0,
+        order: int = 3,
+        tol: float = DEFAULT_TOL,
+    ) -> "LoopResult":
         """Solve at one input angle or along an array of them (one assembly).
 
         Parameters
@@ -159,7 +177,7 @@ class LoopResult(Kinematics):
     ``r.vectors["R3"].alpha`` and ``r["B.A"]`` is ``r.points["B"].A``.
     """
 
-    def __init__(self, system, motion, scalar):
+    def __init__(self, system: Any, motion: Any, scalar: bool) -> None:
         self._motion, self._scalar = motion, scalar
         self._status, self._condition = motion.status, motion.condition
         model = system.model
@@ -183,7 +201,7 @@ class LoopResult(Kinematics):
             self.points[name] = _Named(values, _POINT_KINDS, scalar)
             self._values.update({f"{name}.{k}": (x, _POINT_KINDS[k]) for k, x in values.items()})
 
-    def si(self, name):
+    def si(self, name: str) -> SIValue:
         if name not in self._values:
             raise KeyError(
                 f"this linkage has no output {name!r}; its outputs are {', '.join(self._values)}"
@@ -191,26 +209,27 @@ class LoopResult(Kinematics):
         v = self._values[name][0]
         return v[0] if self._scalar else v
 
-    def kind(self, name):
+    def kind(self, name: str) -> str:
         self.si(name)
         return self._values[name][1]
 
-    def outputs(self):
+    def outputs(self) -> list[str]:
         """``VECTOR.angle`` ... and ``POINT.A`` ... for every vector and point."""
         return list(self._values)
 
     @property
-    def iterations(self):
+    def iterations(self) -> Any:
+        """Newton-Raphson's iterations at each position (an int, or an int array)."""
         return self._one(self._motion.iterations)
 
     @property
-    def message(self):
+    def message(self) -> str | None:
         """Text: the first failed position's reason, else the sweep's notes,
         else the first singular position's (None when all is well)."""
         m = self._motion.message
         return None if m is None else str(m)
 
     @property
-    def notes(self):
+    def notes(self) -> dict[int, str]:
         """dict: position index -> what the sweep decided there."""
         return dict(self._motion.notes)

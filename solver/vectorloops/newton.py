@@ -171,8 +171,8 @@ class LoopSystem:
         rows = []
         for v in range(self.n_vectors):
             fterms, aterms, lterms, dterms = [], [], [], []
-            for l in np.flatnonzero(m.signs[:, v]):
-                sg, r = float(m.signs[l, v]), 2 * int(l)
+            for loop in np.flatnonzero(m.signs[:, v]):
+                sg, r = float(m.signs[loop, v]), 2 * int(loop)
                 fterms.append((r, sg))
                 if m.angle_unknown[v] >= 0:
                     aterms.append((r, int(m.angle_unknown[v]), sg * float(self.ratio[v])))

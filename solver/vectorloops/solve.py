@@ -31,11 +31,11 @@ class LoopMotion:
     condition: np.ndarray
     message: object = None
     notes: dict = field(default_factory=dict)
-    L: np.ndarray = None
-    theta: np.ndarray = None
-    dL: list = None
-    dth: list = None
-    points: list = None
+    L: np.ndarray | None = None
+    theta: np.ndarray | None = None
+    dL: list | None = None
+    dth: list | None = None
+    points: list | None = None
 
 
 def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TOL, batch=True):

@@ -22,6 +22,7 @@ imaginary part of each loop; columns: the unknowns, then -F, then
 """
 
 import math
+from typing import Any
 
 #: the generated function's source is kept on it, for reading and debugging
 SOURCE_ATTRIBUTE = "source"
@@ -44,8 +45,11 @@ def _entries(vectors, nu):
     ``c{v}``, ``s{v}``, ``lc{v}``, ``ls{v}``.
     """
     f, d = nu, nu + 1
-    setup, terms = [], {}
+    setup: list[Any] = []
+    terms: dict[tuple[int, int], list[tuple[float, str]]] = {}
     for v, (b, k, o, li, Lf, fterms, aterms, lterms, dterms) in enumerate(vectors):
+        angle: tuple[Any, ...]
+        length: tuple[Any, ...]
         if b == nu + 1:  # a fixed angle
             angle = ("fixed", math.cos(o), math.sin(o))
         else:
@@ -202,10 +206,9 @@ def plain_step(vectors, nu, q, theta2):
                 acc = acc + coef * value
         A[r][col] = acc
     res = math.hypot(*(A[r][f] for r in range(nu)))
-    norms = None
+    norms = 1.0
     for col in range(nu):
-        h = math.hypot(*(A[r][col] for r in range(nu)))
-        norms = h if norms is None else norms * h
+        norms *= math.hypot(*(A[r][col] for r in range(nu)))
     det = 1.0
     inv = [0.0] * nu
     for k in range(nu):

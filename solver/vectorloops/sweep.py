@@ -149,6 +149,7 @@ class Sweep:
         ):
             self.coarse = max(lo, 0.5 * self.coarse)
             return False
+        assert rec.state is not None  # called only from a solved position with a slope
         ta, qa, sa = rec.state
         h = t - ta
         error = max(
@@ -244,6 +245,7 @@ class Sweep:
                     and i > dense_until
                     and rec.last == i - 1
                     and not rec.gap
+                    and rec.state is not None
                     and rec.state[2] is not None
                 ):
                     b = self.coarse_end(i - 1)
