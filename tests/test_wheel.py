@@ -59,10 +59,11 @@ def build_wheel(out):
 
 
 def top_level_names(wheel):
-    """The names the wheel puts into site-packages (its .dist-info aside)."""
+    """The names the wheel puts into site-packages: its .dist-info aside, and its .data
+    folder, whose files go elsewhere (share/jupyter: the JupyterLab extension)."""
     with zipfile.ZipFile(wheel) as z:
         names = {n.split("/", 1)[0] for n in z.namelist()}
-    return {n for n in names if not n.endswith(".dist-info")}
+    return {n for n in names if not n.endswith((".dist-info", ".data"))}
 
 
 def fresh_venv(where):
