@@ -39,12 +39,14 @@ import math
 import matplotlib.pyplot as plt
 
 from accelab.course.kit import explore, stated, use_style
+from accelab.course.polygons import classic_mistakes, show_builder
 from accelab.course.practice import practice
+from accelab.exercises.student.polygon import PolygonBuilder
 from accelab.solver import Q_, FourBar, NotAssemblable, Singular
 from accelab.solver.graphical import construct, construct_case
 from accelab.solver.graphical.byhand import Markdown, by_hand, case_table
 from accelab.solver.graphical.draw import draw_polygon
-from accelab.solver.graphical.gallery import EXAMPLE_7_1
+from accelab.solver.graphical.gallery import EXAMPLE_7_1, INVERTED_SLIDER_CRANK
 
 use_style()
 
@@ -326,8 +328,8 @@ show("6k")
 show("7a")
 
 # %% [markdown]
-# The same for the coupler. $\mathbf{A}^t_{BA} = b\,\alpha_3\,je^{j\theta_3}$ is the
-# tangential acceleration of $B$ turning about $A$; placed at $B$ it points the way
+# The same for the coupler. $\mathbf{A}^t_{BA}$, which is $b\,\alpha_3\,je^{j\theta_3}$, is
+# the tangential acceleration of $B$ turning about $A$; placed at $B$ it points the way
 # $\alpha_3$ turns $AB$ about $A$. Link 3's $\alpha_3$ is a free vector: the same at every
 # point of the link.
 
@@ -615,13 +617,13 @@ r120 = FourBar(a="2 in", b="6 in", c="9 in", d="7 in").solve(
     theta2="120 deg", omega2="10 rad/s", alpha2="-5 rad/s^2"
 )
 assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
+
 # %% [markdown]
 # ## Your turn: the polygon builder
 #
-# Reading a construction is not doing one. The **polygon builder** below is a drawing board
-# for Example 7-1: the linkage drawn to scale beside a polygon canvas whose scale is stated
-# on it. Build the velocity polygon first, then the acceleration polygon, as the steps above
-# did:
+# Reading a construction is not doing one. The **polygon builder** is a drawing board for the
+# construction above: the linkage drawn to scale beside a polygon canvas whose scale is stated
+# on it. Build the velocity polygon first, then the acceleration polygon:
 #
 # - **Vector**: lay a known vector from the pole or from the tip of the last one. Drag from
 #   the point to its tip (the direction snaps to a link, or across it, within 2.5°, and the
@@ -639,30 +641,42 @@ assert math.isclose(r120.alpha4.magnitude, g120["alpha4"], rel_tol=1e-9)
 # Each step is checked as you make it: a direction is right within 1°, a length within 2% of
 # the polygon's largest vector. A wrong step turns red with a number, and the builder says
 # which rule it broke, in the chapter's terms; it never draws the answer unless you ask with
-# **Show the next step**. (On this web page the builder cannot run, so the figure shows the
-# finished construction. Download the notebook, or write the course with
-# `accelab course --out DIR`, to build it yourself.)
+# **Show the next step**.
+#
+# **One difference from step 6.** The builder lays each side of eq. 7.4 from the pole as it
+# stands, without moving $\mathbf{A}^n_B$ across: on the right, $\mathbf{A}^t_A$,
+# $\mathbf{A}^n_A$ and $\mathbf{A}^n_{BA}$ tip to tail, then the line of
+# $\mathbf{A}^t_{BA}$ ($qq$) through the end; on the left, $\mathbf{A}^n_B$ from the pole,
+# then the line of $\mathbf{A}^t_B$ ($pp$) through its tip. The lines cross at the tip of
+# $\mathbf{A}_B$ itself, not of $\mathbf{A}^t_B$: it is the other corner of step 6j's
+# parallelogram, and every value read off is the same.
+#
+# The cell below (its code folded) is the builder of Example 7-1, made by
+# `PolygonBuilder.from_case(EXAMPLE_7_1)`: `from_case` makes one for any fourbar, slider-crank
+# or inverted slider-crank case. On this web page the builder cannot run, so the figure shows
+# the finished construction; download the notebook, or write the course with
+# `accelab course --out DIR`, to build it yourself.
 
-# %% mystnb={"figure": {"caption": "Example 7-1 in the polygon builder: the finished velocity and acceleration polygons, one scale each. In a live notebook this cell is the builder itself, empty, and each step is checked as it is drawn."}, "image": {"alt": "The velocity and acceleration polygons of Example 7-1 as the polygon builder draws a finished construction."}}
-from accelab.exercises.student.polygon import PolygonBuilder
-from accelab.solver.graphical.gallery import EXAMPLE_7_1, INVERTED_SLIDER_CRANK
-
-PolygonBuilder.from_case(EXAMPLE_7_1, title="Example 7-1: your construction").show()
+# %% tags=["hide-input"] jupyter={"source_hidden": true} mystnb={"figure": {"caption": "Example 7-1 in the polygon builder: the finished velocity and acceleration polygons, one scale each, both sides of eq. 7.4 laid from the pole. In a live notebook this cell is the builder itself, empty, and each step is checked as it is drawn."}}
+board = PolygonBuilder.from_case(EXAMPLE_7_1, title="Example 7-1: your construction")
+show_builder(
+    board,
+    alt="The velocity and acceleration polygons of Example 7-1 as the polygon builder draws "
+    "a finished construction, each on a grid with its scale.",
+)
 
 # %% [markdown]
 # **What the builder says** when a step breaks a rule: the classic mistakes, made on
 # Example 7-1, and the builder's own words for each.
 
-# %%
-from accelab.course.polygons import classic_mistakes
-
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 classic_mistakes(EXAMPLE_7_1)
 
 # %% [markdown]
 # And on an inverted slider-crank, whose polygon needs the Coriolis component
 # $2\omega_4 V_{slip}$ of notebook 5:
 
-# %%
+# %% tags=["hide-input"] jupyter={"source_hidden": true}
 classic_mistakes(INVERTED_SLIDER_CRANK)
 
 # %% [markdown]
@@ -670,10 +684,14 @@ classic_mistakes(INVERTED_SLIDER_CRANK)
 #
 # Fresh problems of the three graded exercise families whose answer is a construction:
 # `polygon_fourbar`, `polygon_slidercrank` and `polygon_coriolis` (the inverted slider-crank,
-# with its Coriolis component). Each run draws a new position, never one of a graded
-# assignment's, and its builder checks each step. In a graded assignment the same builder
-# records your construction without checking it; the construction is saved with the notebook
-# and judged step by step when the assignment is graded, with partial credit.
+# with its Coriolis component). Each run of a cell below draws a new position, never one of a
+# graded assignment's, and shows it with its builder, which checks each step. In a graded
+# assignment the same builder records your construction without checking it; the construction
+# is saved with the notebook and judged step by step when the assignment is graded, with
+# partial credit.
+#
+# (The web page leaves these fresh problems out: there is nothing to draw in there. It shows
+# the problems of seed 3 of the slider-crank and the inverted slider-crank instead, below.)
 
 # %% tags=["remove-output"]
 practice("polygon_fourbar").builder().show()
@@ -685,24 +703,22 @@ practice("polygon_slidercrank").builder().show()
 practice("polygon_coriolis").builder().show()
 
 # %% [markdown]
-# **On this page**, the problems of seed 3 of the slider-crank and the inverted
-# slider-crank: draw them on paper (or in the notebook, with
+# **Two constructions to try on this page**, the slider-crank and the inverted slider-crank
+# of seed 3: draw them on paper (or in the notebook, in
 # `practice("polygon_slidercrank", seed=3).builder()`), then unfold the finished
 # constructions.
 
 # %%
-p = practice("polygon_slidercrank", seed=3)
-p
+example = practice("polygon_slidercrank", seed=3)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %%
-p = practice("polygon_coriolis", seed=3)
-p
+example = practice("polygon_coriolis", seed=3)
 
 # %% tags=["hide-output"]
-p.answers()
+example.answers()
 
 # %% [markdown]
 # ## Practice

@@ -1,5 +1,10 @@
-"""What the polygon builder says when a construction goes wrong, as a table a
-notebook (or a static page, where the builder cannot run) can show.
+"""The polygon builder in a course notebook, and on its static page where the
+builder cannot run.
+
+:func:`show_builder` shows a builder: the builder itself in a live notebook; executed
+headless (the site, the tests), its finished construction in two renditions (both
+polygons side by side, or one above the other on a phone; :mod:`accelab.course.renditions`).
+:func:`finished` draws that figure, for any construction task.
 
 :func:`classic_mistakes` makes each classic mistake of the graphical method on
 the exact construction of a case (the wrong sense of a normal component, a
@@ -16,7 +21,7 @@ from accelab.exercises.student.polygon.record import read_steps
 from accelab.exercises.student.polygon.rules import judge_phase
 from accelab.exercises.student.polygon.task import ideal_steps, task_of_case
 
-__all__ = ["classic_mistakes", "Table"]
+__all__ = ["classic_mistakes", "Table", "show_builder", "finished", "finished_markdown"]
 
 
 def _xy(z):
@@ -163,3 +168,58 @@ def classic_mistakes(case):
         said = tex(judgement.by_key()[key].message).replace("|", "\\|")
         rows.append(f"| {did} | {said} |")
     return Table("| the student | the builder says |\n|---|---|\n" + "\n".join(rows))
+
+
+def finished(task, narrow, title=None):
+    """A Figure of the finished construction of ``task``: its polygons side by side
+    (``narrow=False``, at most :data:`~accelab.course.renditions.WIDE` px across) or
+    one above the other (``narrow=True``, for a phone), each with its own scale."""
+    from accelab.exercises.student.polygon.figure import FONT, draw_phase
+    from accelab.exercises.student.polygon.record import read_steps as read
+
+    from .renditions import panels
+
+    names = list(task.phases)
+    n = len(names)
+    fig, axes = panels(
+        n, narrow, wide=(7.8, 4.4), tall=(4.6, 4.3 * n + 0.4), layout="constrained", squeeze=False
+    )
+    for ax, name in zip(axes.ravel(), names):
+        phase = task.phase(name)
+        draw_phase(ax, phase, read(ideal_steps(phase)), title=phase.title)
+    if title:
+        fig.suptitle(title, fontsize=FONT)
+    return fig
+
+
+def finished_markdown(task, alt, title=None):
+    """Markdown of the finished construction of ``task``: both renditions when executed
+    headless (the site shows the one that fits the screen), the wide one alone in a live
+    notebook."""
+    import base64
+
+    from accelab.course.kit import is_static
+
+    from .renditions import Renditions, _escape, png
+
+    wide = png(finished(task, False, title))
+    if is_static():
+        return Renditions(wide, png(finished(task, True, title)), alt)._repr_markdown_()
+    return f"![{_escape(alt)}](data:image/png;base64,{base64.b64encode(wide).decode('ascii')})\n"
+
+
+def show_builder(builder, alt):
+    """Show the polygon ``builder`` (a
+    :class:`~accelab.exercises.student.polygon.PolygonBuilder`): in a live notebook the
+    builder itself, empty, to construct in; executed headless (a page of the site, where
+    nothing can be drawn), its finished construction in two renditions, which the cell's
+    caption names. Returns None."""
+    from accelab.exercises.student.polygon.widget import live
+
+    from .renditions import show
+
+    if live():
+        builder.show()
+        return None
+    show(lambda narrow: finished(builder.task, narrow), alt=alt)
+    return None

@@ -63,6 +63,24 @@ def test_a_shown_problem_says_how_to_check_it():
     assert "example.check('alpha3'" in example._repr_markdown_()
 
 
+def test_a_shown_construction_problem_says_how_to_build_it(monkeypatch):
+    """A polygon family's answers are constructions: the problem says to build them in its
+    builder (no check to type), and its answers are the finished polygons as one figure
+    in two renditions under the table (a picture in a table cell has no caption)."""
+    monkeypatch.setenv("ACCELAB_STATIC", "1")
+    mine = practice("polygon_coriolis", show=False)
+    text = mine._repr_markdown_()
+    assert f"practice('polygon_coriolis', seed={mine.seed}).builder()" in text
+    assert ".check(" not in text and "1 deg" in text and "2%" in text
+    example = practice("polygon_slidercrank", seed=3, show=False)
+    assert "practice('polygon_slidercrank', seed=3).builder()" in example._repr_markdown_()
+    answers = example.answers()._repr_markdown_()
+    assert "**Answers** (seed 3)" in answers and "| `velocity_polygon` |" in answers
+    assert answers.count("{.accelab-wide}") == answers.count("{.accelab-narrow}") == 1
+    assert not re.search(r"\|[^\n]*data:image", answers), "no picture inside the table"
+    plt.close("all")
+
+
 @pytest.mark.parametrize("source", TOPICS, ids=[p.stem for p in TOPICS])
 def test_only_the_cell_that_shows_the_fresh_problem_binds_mine(source):
     """``mine`` is assigned by one cell, the one that draws and shows a fresh problem; the

@@ -480,7 +480,8 @@ def test_no_equation_is_cut_off(crawl):
         ]
         assert not wide, f"equations wider than the page at {width} px: {wide[:10]}"
     course = [m for p, st in states[390].items() if p.startswith("course/") for m in st["math"]]
-    assert sum(m["display"] for m in course) > 150, "the course shows its equations"
+    # the notebooks' sources hold 77 display equations (eq. 7.4's aligned lines are one)
+    assert sum(m["display"] for m in course) >= 75, "the course shows its equations"
 
 
 def test_wide_tables_scroll_on_a_phone_with_a_cue(crawl):

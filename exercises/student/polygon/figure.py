@@ -71,6 +71,33 @@ def _clip_line(p, u, box):
     return p + min(ts) * u, p + max(ts) * u
 
 
+def _label_pole(ax, box, span, taken):
+    """Write "pole" beside the pole, on the side farthest from every label and arrow
+    (a short vector at the pole has its label there too), inside the frame."""
+    import cmath
+
+    x0, x1, y0, y1 = box
+    r = 0.07 * span
+    spots = [r * cmath.exp(1j * math.radians(45 * k)) for k in range(8)]
+    inside = [
+        z
+        for z in spots
+        if x0 + 0.6 * r <= z.real <= x1 - 0.6 * r and y0 + r / 3 <= z.imag <= y1 - r / 3
+    ] or spots
+    spot = max(inside, key=lambda z: min((abs(z - t) for t in taken), default=span))
+    ax.text(
+        spot.real,
+        spot.imag,
+        "pole",
+        fontsize=FONT - 2,
+        color="#333333",
+        ha="center",
+        va="center",
+        zorder=9,
+        bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
+    )
+
+
 def draw_phase(ax, phase, steps, wrong=None, title=None):
     """Draw a student's ``steps`` (Drawn) of ``phase`` on ``ax``; ``wrong`` maps
     a step's index to the badge number it gets (drawn in red)."""
@@ -99,21 +126,9 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
         side.set_color("#bbbbbb")
     ax.plot([0], [0], "o", ms=7, mfc="white", mec="black", zorder=8)
     badges = []
+    taken = []  # points the pole's label keeps clear of: labels, and points along the arrows
     drawn = [z * f for st in steps for z in (st.tail, st.tip, st.at) if z is not None]
     centre = sum(drawn, 0j) / len(drawn) if drawn else 0j
-    away = -centre / abs(centre) if abs(centre) else -1 - 1j  # the pole's label: off the drawing
-    ax.annotate(
-        "pole",
-        (0, 0),
-        xytext=(12 * away.real, 12 * away.imag),
-        textcoords="offset points",
-        ha="right" if away.real < 0 else "left",
-        va="top" if away.imag < 0 else "bottom",
-        fontsize=FONT - 2,
-        color="#333333",
-        zorder=9,
-        bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
-    )
     for st in steps:
         bad = st.index in wrong
         colour = WRONG if bad else None
@@ -154,6 +169,8 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
                 if _dot(n, mid - centre) < 0:  # the label outside the polygon
                     n = -n
                 lab = mid + n * 0.045 * span
+                taken.append(lab)
+                taken += [a + (b - a) * k / 8 for k in range(9)]
                 ax.text(
                     lab.real,
                     lab.imag,
@@ -178,6 +195,7 @@ def draw_phase(ax, phase, steps, wrong=None, title=None):
                 zorder=7,
             )
             badges.append((st.index, st.at * f))
+    _label_pole(ax, box, span, taken)
     for index, z in badges:
         if index in wrong:
             r = 0.03 * span
