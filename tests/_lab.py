@@ -9,6 +9,7 @@ type an answer, press Validate, Fetch, Submit) is done with clicks and keys.
 """
 
 import contextlib
+import fcntl
 import hashlib
 import json
 import os
@@ -215,112 +216,94 @@ def _constraints():
     return "\n".join(sorted(lines)) + "\n"
 
 
+#: what a clean copy of the checkout leaves out when the wheel is built from it
+NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache")
+#: folders of the copy that do not go into the wheel (a change there installs nothing anew)
+NOT_PACKAGED = ("tests", "docs")
+
 _venv_ready = []
 
 
+def _source_digest(source):
+    """A digest of the path and content of every file of ``source`` that can go into the
+    wheel."""
+    digest = hashlib.sha256()
+    for path in sorted(p for p in Path(source).rglob("*") if p.is_file()):
+        rel = path.relative_to(source)
+        if rel.parts[0] not in NOT_PACKAGED:
+            digest.update(str(rel).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def _pip(argv, what):
+    """Run ``argv`` (a pip command); on failure, an AssertionError that shows pip's
+    output (its error is on stdout or stderr, at the end)."""
+    proc = subprocess.run(argv, capture_output=True, text=True)
+    assert proc.returncode == 0, (
+        f"{what} failed (exit {proc.returncode}): {' '.join(map(str, argv))}\n"
+        f"{proc.stdout[-2000:]}\n{proc.stderr[-4000:]}"
+    )
+
+
 def shared_venv():
-    """A venv of Debian's python3 in ``build/lab-venv`` that every account can run,
+    """A venv of Debian's python3 in ``SHARED/lab-venv`` that every account can run,
     with accelab (built from this checkout as a wheel, so with its JupyterLab
     extension) and the same versions of its dependencies as this environment, plus
     ipywidgets and JupyterHub. Dependencies are installed once (until the versions
-    change); accelab is installed afresh once per test session."""
+    change), accelab again when its source changed.
+
+    The wheel is built from a private copy of the checkout, never in place: two
+    in-place builds at once (test processes in parallel) share the checkout's build/
+    and remove each other's files ("error: [Errno 2] No such file or directory"), and
+    an old build/lib can leak stale modules into the wheel. Test processes take turns
+    (a file lock): one makes the venv, the others find it made."""
     if _venv_ready:
         return SHARED_VENV
-    SHARED_VENV.parent.mkdir(parents=True, exist_ok=True)
-    constraints = _constraints()
-    digest = hashlib.sha256(constraints.encode()).hexdigest()[:16]
-    stamp = SHARED_VENV / f".deps-{digest}"
-    py = SHARED_VENV / "bin" / "python"
-    wheels = BUILD / "lab-wheel"
-    shutil.rmtree(wheels, ignore_errors=True)
-    subprocess.run(
-        [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(wheels), str(ROOT)],
-        check=True,
-        capture_output=True,
-    )
-    wheel = next(wheels.glob("accelab-*.whl"))
-    if not stamp.exists():
-        shutil.rmtree(SHARED_VENV, ignore_errors=True)
-        subprocess.run(["/usr/bin/python3", "-m", "venv", str(SHARED_VENV)], check=True)
-        subprocess.run(
-            [str(py), "-m", "pip", "install", "-q", "--upgrade", "pip"],
-            check=True,
-            capture_output=True,
-        )
-        stamp.write_text(constraints)
-    cfile = BUILD / "lab-constraints.txt"
-    cfile.write_text(constraints)
-    # accelab's dependencies as this checkout declares them (quick when they are there)
-    proc = subprocess.run(
-        [str(py), "-m", "pip", "install", "-q", "-c", str(cfile), str(wheel), *SHARED_EXTRAS],
-        capture_output=True,
-        text=True,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
-    proc = subprocess.run(
-        [str(py), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)],
-        capture_output=True,
-        text=True,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
+    SHARED.mkdir(parents=True, exist_ok=True)
+    with open(SHARED / ".lab-venv.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        _make_shared_venv()
     os.chmod(SHARED, 0o755)
     _venv_ready.append(True)
     return SHARED_VENV
 
 
-# ---------------------------------------------------------------- per-role configuration
-#: nbgrader's JupyterLab plugins a student has no use for (the instructor's menus)
-INSTRUCTOR_PLUGINS = (
-    "@jupyter/nbgrader:formgrader",
-    "@jupyter/nbgrader:create-assignment",
-    "@jupyter/nbgrader:course-list",
-)
-#: and their server extensions
-INSTRUCTOR_SERVER_EXTENSIONS = (
-    "nbgrader.server_extensions.formgrader",
-    "nbgrader.server_extensions.course_list",
-)
-
-
-def role_config(folder, role, exchange, course_id=None, hub=False, course_root=None):
-    """Write the Jupyter configuration of ``role`` ("student" or "instructor") into
-    ``folder`` (a directory for ``JUPYTER_CONFIG_PATH``), as docs/guide/deploy.md gives
-    it: nbgrader's exchange, on a hub its JupyterHub authentication, and for a student
-    the instructor's menus and server extensions turned off. Returns ``folder``."""
-    folder = Path(folder)
-    (folder / "labconfig").mkdir(parents=True, exist_ok=True)
-    lines = ["c = get_config()  # noqa: F821", f"c.Exchange.root = {str(exchange)!r}"]
-    if course_id:
-        lines.append(f"c.CourseDirectory.course_id = {course_id!r}")
-    if course_root:  # the instructor's course folder, wherever the server starts
-        lines.append(f"c.CourseDirectory.root = {str(course_root)!r}")
-    if hub:
-        lines += [
-            "from nbgrader.auth import JupyterHubAuthPlugin",
-            "c.Authenticator.plugin_class = JupyterHubAuthPlugin",
-        ]
-    (folder / "nbgrader_config.py").write_text("\n".join(lines) + "\n")
-    if role == "student":
-        page = {"disabledExtensions": {name: True for name in INSTRUCTOR_PLUGINS}}
-        server = {
-            "ServerApp": {"jpserver_extensions": dict.fromkeys(INSTRUCTOR_SERVER_EXTENSIONS, False)}
-        }
-    else:
-        page, server = {"disabledExtensions": {}}, {}
-        if hub:  # formgrader is a frame of the instructor's JupyterLab, which JupyterHub's
-            # default policy (frame-ancestors 'none') would leave empty
-            server = {
-                "ServerApp": {
-                    "tornado_settings": {
-                        "headers": {"Content-Security-Policy": "frame-ancestors 'self'"}
-                    }
-                }
-            }
-    (folder / "labconfig" / "page_config.json").write_text(json.dumps(page, indent=1))
-    (folder / "jupyter_server_config.json").write_text(json.dumps(server, indent=1))
-    for path in (folder, *folder.rglob("*")):
-        os.chmod(path, 0o755 if path.is_dir() else 0o644)
-    return folder
+def _make_shared_venv():
+    constraints = _constraints()
+    stamp = SHARED_VENV / f".deps-{hashlib.sha256(constraints.encode()).hexdigest()[:16]}"
+    py = SHARED_VENV / "bin" / "python"
+    with tempfile.TemporaryDirectory(prefix="accelab-lab-wheel-") as work:
+        source, dist = Path(work) / "source", Path(work) / "dist"
+        shutil.copytree(ROOT, source, ignore=shutil.ignore_patterns(*NOT_SOURCE), symlinks=True)
+        built = SHARED_VENV / f".accelab-{_source_digest(source)}"
+        if stamp.exists() and built.exists():
+            return  # made from this source, with these versions
+        # offline, with this environment's setuptools (the test extra has it)
+        _pip(
+            [sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation", "-q"]
+            + ["-w", str(dist), str(source)],
+            "building accelab's wheel",
+        )
+        wheel = next(dist.glob("accelab-*.whl"))
+        if not stamp.exists():
+            shutil.rmtree(SHARED_VENV, ignore_errors=True)
+            _pip(["/usr/bin/python3", "-m", "venv", str(SHARED_VENV)], "making the venv")
+            _pip([str(py), "-m", "pip", "install", "-q", "--upgrade", "pip"], "upgrading pip")
+        cfile = Path(work) / "constraints.txt"
+        cfile.write_text(constraints)
+        # accelab's dependencies as this checkout declares them (quick when they are there)
+        _pip(
+            [str(py), "-m", "pip", "install", "-q", "-c", str(cfile), str(wheel), *SHARED_EXTRAS],
+            "installing accelab's dependencies into the shared venv",
+        )
+        _pip(
+            [str(py), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)],
+            "installing accelab into the shared venv",
+        )
+        stamp.write_text(constraints)
+        for old in SHARED_VENV.glob(".accelab-*"):
+            old.unlink()
+        built.write_text(wheel.name)
 
 
 # ---------------------------------------------------------------- servers

@@ -1,9 +1,11 @@
 """Shared test configuration: a non-interactive matplotlib backend, hypothesis
-profiles, and the strategies for random well-conditioned linkages."""
+profiles, a check that pytest-xdist keeps each ``xdist_group`` in one worker, and the
+strategies for random well-conditioned linkages."""
 
 import math
 import os
 
+import pytest
 from hypothesis import HealthCheck, assume, settings
 from hypothesis import strategies as st
 
@@ -20,6 +22,28 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow],
 )
 settings.load_profile("ci" if os.environ.get("CI") else "default")
+
+
+def pytest_runtest_setup(item):
+    """With ``-n N --dist loadgroup`` (make test), the tests of an ``xdist_group`` share
+    what one process builds and must run in one worker. pytest-xdist tells the groups
+    apart by a suffix it adds to each test's id, which pytest 9.2 drops without a word
+    (pytest-xdist issue 1386): the tests then run apart and break each other. Fail them
+    then, saying why, rather than run them so."""
+    config = item.config
+    if (
+        hasattr(config, "workerinput")
+        and config.getvalue("loadgroup")
+        and item.get_closest_marker("xdist_group")
+        and "@" not in item.nodeid
+    ):
+        pytest.fail(
+            f"pytest-xdist's --dist loadgroup does not keep the tests of an xdist_group in one "
+            f"worker with pytest {pytest.__version__} (pytest-xdist issue 1386): install the "
+            "pytest that pyproject's test extra allows (pip install -e '.[test]'), or run "
+            "without -n",
+            pytrace=False,
+        )
 
 
 # --------------------------------------------------------------------------

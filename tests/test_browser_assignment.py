@@ -20,6 +20,7 @@ import sys
 import time
 from pathlib import Path
 
+import _guide as guide
 import pytest
 from _lab import (
     LAPTOP,
@@ -46,7 +47,6 @@ from _lab import (
     need_accounts,
     need_browser,
     open_path,
-    role_config,
     shared_venv,
     shot,
     tracebacks,
@@ -55,7 +55,8 @@ from _lab import (
     wait_idle,
 )
 
-pytestmark = pytest.mark.slow
+#: one worker runs the module's tests, in order: they share the class its fixture makes
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("lab-class")]
 
 STUDENT = "lab_ann"
 COURSE_ID = "mech101"
@@ -64,46 +65,35 @@ CLASS = SHARED / "lab-class"
 
 @pytest.fixture(scope="module")
 def klass():
-    """The class: an exchange every account can use, the course (the instructor's), the
-    student's account and both roles' configuration."""
+    """The class on one machine, set up with the guide's own commands
+    (docs/guide/deploy.md, read by :mod:`_guide`): root makes the class's folder (the
+    instructor's: here this account), the instructor's ``accelab assign --exchange``
+    lays out the course (private) and the exchange beside it and releases A; the
+    student's account gets the guide's student configuration (the exchange, the course,
+    no instructor's menus)."""
     need_browser()
     need_accounts()
     shared_venv()
     shutil.rmtree(CLASS, ignore_errors=True)
-    exchange = CLASS / "exchange"
-    exchange.mkdir(parents=True)
-    os.chmod(CLASS, 0o755)
-    os.chmod(exchange, 0o777)
-    course = CLASS / "instructor" / COURSE_ID
-    roster = CLASS / "roster.csv"
+    CLASS.parent.mkdir(parents=True, exist_ok=True)
+    roster = CLASS.parent / "lab-class-roster.csv"  # the instructor's, outside the class's
     roster.write_text(f"id,first_name,last_name\n{STUDENT},Ann,Lab\n")
-    accelab(
-        "assign",
-        "--course",
-        str(course),
-        "--assignment",
-        "A",
-        "--course-id",
-        COURSE_ID,
-        "--roster",
-        str(roster),
-        "--families",
-        "tolerance",
-        cwd=CLASS,
-    )
-    with open(course / "nbgrader_config.py", "a") as fh:
-        fh.write(f"c.Exchange.root = {str(exchange)!r}\n")
-    nbgrader("release_assignment", "A", "--force", cwd=course)
-    user = account(STUDENT)
-    home = Path(user.pw_dir)
+    places = {"/srv/mech101": str(CLASS), "prof": "root", "~/roster.csv": str(roster)}
+    subprocess.run(guide.command(guide.block("sh", "install -d"), places), check=True)
+    argv = guide.command(guide.block("sh", "accelab assign", "--course-id"), places)
+    argv[argv.index("--families") + 1] = "tolerance"  # one family of the guide's three: time
+    assert argv[:2] == ["accelab", "assign"], argv
+    accelab(*argv[1:], cwd=CLASS)
+    guide.assert_layout(CLASS, os.geteuid())
+    course, exchange = CLASS / "course", CLASS / "exchange"
+    home = Path(account(STUDENT).pw_dir)
     for old in ("A", ".local/share/jupyter/nbgrader_cache"):  # a run before this one
         shutil.rmtree(home / old, ignore_errors=True)
     return {
         "exchange": exchange,
         "course": course,
         "home": home,
-        "student_cfg": role_config(CLASS / "config-student", "student", exchange, COURSE_ID),
-        "instructor_cfg": role_config(CLASS / "config-instructor", "instructor", exchange),
+        "student_cfg": guide.write_role(CLASS / "jupyter-student", "student", places, hub=False),
     }
 
 
@@ -141,8 +131,7 @@ def instructor_lab(klass):
     from accelab.exercises.nbgrader_course import JUPYTER_DATA
 
     server = Lab(
-        klass["course"],
-        config_dirs=[klass["instructor_cfg"]],
+        klass["course"],  # the course's own nbgrader_config.py: its exchange and collect
         env_extra={"JUPYTER_PATH": JUPYTER_DATA},  # formgrader's math offline (deploy guide)
         log_name="lab-instructor",
     ).start()

@@ -1,16 +1,20 @@
-"""A class on JupyterHub, as docs/guide/deploy.md configures it: JupyterHub (from PyPI)
-with its proxy (configurable-http-proxy, from npm), local system accounts created by the
-test (two students and an instructor), each user's server started as that account
-(LocalProcessSpawner) from an environment every account can run, nbgrader's JupyterHub
-authentication with the course's groups (``nbgrader-mech101`` for the students,
-``formgrade-mech101`` for the instructor), and per-role settings: the students' servers
-without the instructor's menus.
+"""A class on JupyterHub, as docs/guide/deploy.md configures it: the guide's own hub
+configuration and each role's configuration folder (read from the guide, its folders and
+names replaced by the test's: :mod:`_guide`), JupyterHub (from PyPI) with its proxy
+(configurable-http-proxy, from npm), local system accounts created by the test (two
+students and an instructor), each user's server started as that account from an
+environment every account can run, nbgrader's JupyterHub authentication with the course's
+groups, the students' servers without the instructor's menus. The class's folder is made
+as the guide says (root makes it, the instructor's ``accelab assign --exchange`` lays out
+the course and the exchange in it).
 
 Each person logs in through the hub's login page in headless Chromium. The students
 fetch the assignment from the Assignments panel (its notebook shows each one's own
-values: the JupyterHub user), submit as themselves, and cannot submit as each other; the
-instructor collects with formgrader and grades with ``accelab grade``. Screenshots in
-``build/screenshots/hub-*``.
+values: the JupyterHub user) and submit as themselves; one tries to submit as the other,
+which the hub refuses, then again with the hub's check turned off: collect goes by the
+folder's owner, so it is his own submission, hers is untouched and the instructor is
+told. The instructor collects with formgrader and grades with ``accelab grade``.
+Screenshots in ``build/screenshots/hub-*``.
 """
 
 import csv
@@ -18,10 +22,10 @@ import os
 import secrets
 import shutil
 import subprocess
-import sys
 import time
 from pathlib import Path
 
+import _guide as guide
 import pytest
 from _lab import (
     BUILD,
@@ -45,7 +49,6 @@ from _lab import (
     need_accounts,
     need_browser,
     open_path,
-    role_config,
     run_as,
     shared_venv,
     shot,
@@ -57,15 +60,21 @@ from _lab import (
 
 pytestmark = pytest.mark.slow
 
-STUDENTS = ("lab_ann", "lab_hal")
-INSTRUCTOR = "lab_prof"
+#: the guide's people (ann and hal study, prof teaches) as the test's accounts
+PEOPLE = {"ann": "hub_ann", "hal": "hub_hal", "prof": "hub_prof"}
+STUDENTS = (PEOPLE["ann"], PEOPLE["hal"])
+INSTRUCTOR = PEOPLE["prof"]
 COURSE_ID = "mech101"
 HUB = SHARED / "hub-class"
+#: the guide's /srv/mech101: the class's folder, the instructor's (course/ and exchange/)
+CLASS_DIR = HUB / "srv-mech101"
 PASSWORD = secrets.token_hex(8)
 
-HUB_CONFIG = """\
-# JupyterHub for one class (tests/test_browser_hub.py; docs/guide/deploy.md explains it)
-c = get_config()  # noqa: F821
+#: what the test adds to the guide's hub configuration: where it listens and keeps its
+#: files, one password for everyone in place of PAM (the accounts have none), the page's
+#: app exposed for the test to read, and patience on a loaded machine
+TEST_ONLY = """
+# ---- added by tests/test_browser_hub.py to the guide's configuration above
 c.JupyterHub.ip = "127.0.0.1"
 c.JupyterHub.port = {port}
 c.JupyterHub.hub_port = {hub_port}
@@ -73,45 +82,11 @@ c.ConfigurableHTTPProxy.api_url = "http://127.0.0.1:{proxy_port}"
 c.JupyterHub.db_url = "sqlite:///{folder}/jupyterhub.sqlite"
 c.JupyterHub.cookie_secret_file = "{folder}/jupyterhub_cookie_secret"
 c.ConfigurableHTTPProxy.pid_file = "{folder}/proxy.pid"
-
-# who may log in (a real class: PAM, LTI or OAuth; here one password)
 c.JupyterHub.authenticator_class = "dummy"
 c.DummyAuthenticator.password = {password!r}
-c.Authenticator.allowed_users = {users!r}
-
-# each user's own server, started as that user's local account
-c.JupyterHub.spawner_class = "localprocess"
-c.Spawner.cmd = ["{venv}/bin/jupyterhub-singleuser"]
-c.Spawner.default_url = "/lab"
-c.Spawner.args = ["--LabApp.expose_app_in_browser=True"]  # the test reads the page's app
+c.Spawner.args = ["--LabApp.expose_app_in_browser=True"]
 c.Spawner.start_timeout = 120
 c.Spawner.http_timeout = 120
-
-# the course's groups: nbgrader's JupyterHub authentication lists a course to its members
-c.JupyterHub.load_groups = {{
-    "nbgrader-{course}": {{"users": {students!r}}},
-    "formgrade-{course}": {{"users": [{instructor!r}]}},
-}}
-# a user's server may read its own user's groups (nbgrader asks the hub with its token)
-c.JupyterHub.load_roles = [{{"name": "server", "scopes": ["inherit"]}}]
-
-INSTRUCTORS = {{{instructor!r}}}
-CONFIG = {{"student": "{folder}/config-student", "instructor": "{folder}/config-instructor"}}
-
-
-def role_of(spawner):
-    return "instructor" if spawner.user.name in INSTRUCTORS else "student"
-
-
-c.Spawner.environment = {{
-    # per-role Jupyter configuration: the students' servers without the instructor's menus
-    "JUPYTER_CONFIG_PATH": lambda spawner: CONFIG[role_of(spawner)],
-    # formgrader's equations from the server's own MathJax (accelab's nbconvert template)
-    "JUPYTER_PATH": lambda spawner: (
-        "{jupyter_data}" if role_of(spawner) == "instructor" else ""
-    ),
-    "PATH": "{venv}/bin:/usr/local/bin:/usr/bin:/bin",
-}}
 """
 
 
@@ -126,22 +101,21 @@ def need_proxy():
 class Hub:
     """A JupyterHub started by the test (as root), and the address of each user's server."""
 
-    def __init__(self, folder, config):
-        self.folder = folder
-        self.port = config["port"]
+    def __init__(self, folder, venv, port):
+        self.folder, self.venv, self.port = folder, venv, port
         self.log_path = BUILD / "screenshots" / "hub.log"
         self.proc = None
 
     def start(self):
         env = dict(os.environ)
-        env["PATH"] = f"{os.path.dirname(sys.executable)}:/usr/local/bin:/usr/bin:/bin"
+        env["PATH"] = f"{self.venv}/bin:/usr/local/bin:/usr/bin:/bin"
         for var in ("JUPYTERHUB_USER", "JUPYTER_CONFIG_PATH", "JUPYTER_PATH", "PYTHONPATH"):
             env.pop(var, None)
         self.log_path.parent.mkdir(parents=True, exist_ok=True)
         self._log = open(self.log_path, "w")
         self.proc = subprocess.Popen(
             [
-                os.path.join(os.path.dirname(sys.executable), "jupyterhub"),
+                f"{self.venv}/bin/jupyterhub",
                 "-f",
                 str(self.folder / "jupyterhub_config.py"),
             ],
@@ -181,73 +155,79 @@ class Server:
         return self.hub.url(f"user/{self.user}/{path}")
 
 
+def venv_paths(venv):
+    """(site-packages, JUPYTER_DATA) of the shared venv, as its Python says."""
+    out = subprocess.run(
+        [
+            f"{venv}/bin/python",
+            "-c",
+            "import sysconfig; from accelab.exercises.nbgrader_course import JUPYTER_DATA; "
+            "print(sysconfig.get_paths()['purelib']); print(JUPYTER_DATA)",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd="/",  # not the checkout, whose accelab/ folder is not the package
+    ).stdout.split()
+    return out[0], out[1]
+
+
 @pytest.fixture(scope="module")
 def hub():
+    """The class of the guide: its hub configuration, each role's folder, the class's
+    folder made by root and the course made in it by the instructor, as the guide says."""
     need_browser()
     need_accounts()
     need_proxy()
     venv = shared_venv()
-    from accelab.exercises.nbgrader_course import JUPYTER_DATA
+    site, jupyter_data = venv_paths(venv)
 
     shutil.rmtree(HUB, ignore_errors=True)
     HUB.mkdir(parents=True)
     os.chmod(HUB, 0o755)
-    exchange = HUB / "exchange"
-    exchange.mkdir()
-    os.chmod(exchange, 0o777)
-    for name in (*STUDENTS, INSTRUCTOR):
+    for name in PEOPLE.values():
         home = Path(account(name).pw_dir)
-        for old in ("A", COURSE_ID, ".local/share/jupyter/nbgrader_cache", ".jupyter/lab"):
+        for old in ("A", ".local/share/jupyter/nbgrader_cache", ".jupyter/lab"):
             shutil.rmtree(home / old, ignore_errors=True)
-    prof_home = Path(account(INSTRUCTOR).pw_dir)
-    course = prof_home / COURSE_ID
-    role_config(HUB / "config-student", "student", exchange, hub=True)
-    role_config(HUB / "config-instructor", "instructor", exchange, hub=True, course_root=course)
-    config = {
-        "port": free_port(),
-        "hub_port": free_port(),
-        "proxy_port": free_port(),
-        "folder": str(HUB),
-        "password": PASSWORD,
-        "users": sorted((*STUDENTS, INSTRUCTOR)),
-        "students": list(STUDENTS),
-        "instructor": INSTRUCTOR,
-        "course": COURSE_ID,
-        "venv": str(venv),
-        "jupyter_data": JUPYTER_DATA,
+    places = {
+        "/srv/mech101": str(CLASS_DIR),
+        "/opt/accelab/lib/python3.11/site-packages": site,
+        "/opt/accelab": str(venv),
+        "/etc/jupyter-": f"{HUB}/jupyter-",
+        **PEOPLE,
     }
-    (HUB / "jupyterhub_config.py").write_text(HUB_CONFIG.format(**config))
-
-    # the instructor, in a terminal of their own: the course, the assignment, its release
-    roster = HUB / "roster.csv"
-    roster.write_text(
-        "id,first_name,last_name\n" + "".join(f"{s},{s[4:].title()},Lab\n" for s in STUDENTS)
+    config = guide.adapted(guide.block("python", "c.JupyterHub.spawner_class"), places)
+    assert f'"{jupyter_data}"' in config, "the guide's JUPYTER_PATH is not JUPYTER_DATA"
+    port = free_port()
+    config += TEST_ONLY.format(
+        port=port,
+        hub_port=free_port(),
+        proxy_port=free_port(),
+        folder=HUB,
+        password=PASSWORD,
     )
-    os.chmod(roster, 0o644)
-    as_prof = {"JUPYTER_CONFIG_PATH": str(HUB / "config-instructor")}
-    run_as(
-        INSTRUCTOR,
-        [
-            f"{venv}/bin/accelab",
-            "assign",
-            "--course",
-            str(course),
-            "--assignment",
-            "A",
-            "--course-id",
-            COURSE_ID,
-            "--roster",
-            str(roster),
-            "--families",
-            "tolerance",
-        ],
-        as_prof,
-    )
-    with open(course / "nbgrader_config.py", "a") as fh:  # the class's exchange
-        fh.write(f"c.Exchange.root = {str(exchange)!r}\n")
-    run_as(INSTRUCTOR, [f"{venv}/bin/nbgrader", "release_assignment", "A"], cwd=course)
+    (HUB / "jupyterhub_config.py").write_text(config)
+    for role in ("student", "instructor"):
+        guide.write_role(HUB / f"jupyter-{role}", role, places, hub=True)
 
-    server = Hub(HUB, config).start()
+    # root, once: the class's folder, the instructor's
+    install = guide.command(guide.block("sh", "install -d"), places)
+    subprocess.run(install, check=True)
+    # the instructor, in a terminal of their JupyterLab (its environment and folder): the
+    # course, its exchange, the assignment released (one family of the guide's three: time)
+    prof = account(INSTRUCTOR)
+    roster = Path(prof.pw_dir) / "roster.csv"
+    roster.write_text("id,first_name,last_name\n" + "".join(f"{s},{s},Hub\n" for s in STUDENTS))
+    os.chown(roster, prof.pw_uid, prof.pw_gid)
+    places["~/roster.csv"] = str(roster)
+    assign = guide.command(guide.block("sh", "accelab assign", "--course-id"), places)
+    assign[assign.index("--families") + 1] = "tolerance"
+    env = {"JUPYTER_CONFIG_PATH": f"{HUB}/jupyter-instructor"}
+    run_as(INSTRUCTOR, assign, env, cwd=CLASS_DIR)
+    course, exchange = CLASS_DIR / "course", CLASS_DIR / "exchange"
+    guide.assert_layout(CLASS_DIR, prof.pw_uid)  # as the guide draws it
+
+    server = Hub(HUB, venv, port).start()
     yield {"hub": server, "exchange": exchange, "course": course, "venv": venv}
     server.stop()
 
@@ -324,59 +304,60 @@ def answer_and_submit(driver, server, user, code):
 
 
 def test_two_students_and_an_instructor_on_jupyterhub(hub, driver):
+    from selenium.webdriver.common.by import By
+
     from accelab.exercises.notebook import read_spec
     from accelab.exercises.simulate import key_code
 
     course, exchange = hub["course"], hub["exchange"]
     spec = read_spec(course, "A")
     inbound = exchange / COURSE_ID / "inbound"
+    ann, hal = STUDENTS
 
     # the first student: right answers
-    ann = log_in(driver, hub["hub"], "lab_ann")
+    ann_server = log_in(driver, hub["hub"], ann)
     items = menu_labels(driver, "Nbgrader")
     assert "Assignment List" in items and "Formgrader" not in items, items
-    answer_and_submit(driver, ann, "lab_ann", key_code(spec, "lab_ann"))
+    answer_and_submit(driver, ann_server, ann, key_code(spec, ann))
 
-    # the second student: another student's right answers (wrong for him), and an attempt
+    # the second student: the first one's right answers (wrong for him), and an attempt
     # to submit as her, which the hub refuses (his server may ask only about himself)
-    hal = log_in(driver, hub["hub"], "lab_hal")
-    answer_and_submit(driver, hal, "lab_hal", key_code(spec, "lab_ann"))
-    forged = cells(driver)
-    last = forged[-1]["index"]
+    hal_server = log_in(driver, hub["hub"], hal)
+    answer_and_submit(driver, hal_server, hal, key_code(spec, ann))
+    last = cells(driver)[-1]["index"]
     in_panel(driver, "w.content.activeCellIndex = arguments[1];", last)
     driver.execute_script("window.jupyterapp.commands.execute('notebook:insert-cell-below')")
     time.sleep(0.5)
     type_into_cell(
-        driver, last + 1, "!cd ~ && nbgrader submit A --course mech101 --student lab_ann"
+        driver, last + 1, f"!cd ~ && nbgrader submit A --course {COURSE_ID} --student {ann}"
     )
     wait_idle(driver)
     out = cells(driver)[last + 1]["text"]
-    shot(driver, "hub-lab_hal-cannot-submit-as-lab_ann")
-    assert "JupyterhubApiError" in out and "/users/lab_ann" in out, out
+    shot(driver, "hub-hal-cannot-submit-as-ann")
+    assert "JupyterhubApiError" in out and f"/users/{ann}" in out, out
     submitted = sorted((p.name.split("+")[0], p.stat().st_uid) for p in inbound.iterdir())
     assert submitted == sorted((s, account(s).pw_uid) for s in STUDENTS), (submitted, out)
     # the same without the hub's check (his own settings can drop it): the folder lands in
-    # the exchange under her name, but it is his (the grader must go by the owner)
+    # the exchange under her name, but it is his, and collect goes by its owner
     type_into_cell(
         driver,
         last + 1,
-        "!cd ~ && nbgrader submit A --course mech101 --student lab_ann "
+        f"!cd ~ && nbgrader submit A --course {COURSE_ID} --student {ann} "
         "--Authenticator.plugin_class=nbgrader.auth.base.NoAuthPlugin",
     )
     wait_idle(driver)
-    forged_folders = [
+    forged = [
         p
         for p in inbound.iterdir()
-        if p.name.startswith("lab_ann+") and p.stat().st_uid == account("lab_hal").pw_uid
+        if p.name.startswith(f"{ann}+") and p.stat().st_uid == account(hal).pw_uid
     ]
+    assert forged, cells(driver)[last + 1]["text"]
 
     # the instructor: formgrader is theirs; collect, then grade
-    prof = log_in(driver, hub["hub"], INSTRUCTOR)
+    log_in(driver, hub["hub"], INSTRUCTOR)
     items = menu_labels(driver, "Nbgrader")
     assert "Formgrader" in items, items
     click_menu(driver, "Nbgrader", "Formgrader")
-    from selenium.webdriver.common.by import By
-
     frame = wait(
         lambda: next(
             (f for f in driver.find_elements(By.CSS_SELECTOR, "iframe") if f.is_displayed()), None
@@ -386,13 +367,12 @@ def test_two_students_and_an_instructor_on_jupyterhub(hub, driver):
     )
     driver.switch_to.frame(frame)
     time.sleep(2)
-    shot(driver, "hub-lab_prof-formgrader")
+    shot(driver, "hub-prof-formgrader")
     click_in_row(driver, "A", "collect")
     modal, text = formgrader_modal(driver)
+    shot(driver, "hub-prof-collected")
     assert "Successfully collected" in text, text
-    shot(driver, "hub-lab_prof-collected")
     driver.switch_to.default_content()
-    assert prof.user == INSTRUCTOR
     assert sorted(os.listdir(course / "submitted")) == sorted(STUDENTS)
 
     proc = run_as(
@@ -403,14 +383,14 @@ def test_two_students_and_an_instructor_on_jupyterhub(hub, driver):
     assert "2 submission(s) graded" in proc.stdout, proc.stdout
     with open(course / "grades_A.csv") as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
-    assert float(rows["lab_hal"]["total"]) < float(rows["lab_hal"]["max"]), rows["lab_hal"]
-    own = (Path(account("lab_ann").pw_dir) / "A" / "A.ipynb").read_bytes()
-    graded_as_ann = (course / "submitted" / "lab_ann" / "A" / "A.ipynb").read_bytes()
-    if forged_folders and graded_as_ann != own:
-        pytest.xfail(
-            "a submission another student put into the exchange under lab_ann's name was "
-            "collected as hers: nbgrader's collect goes by the folder's name; the submitter "
-            "must be its owner (issue 20)"
-        )
-    assert graded_as_ann == own
-    assert float(rows["lab_ann"]["total"]) == float(rows["lab_ann"]["max"]) > 0, rows["lab_ann"]
+    # the victim: her own notebook graded, her grade whole
+    own = (Path(account(ann).pw_dir) / "A" / "A.ipynb").read_bytes()
+    assert (course / "submitted" / ann / "A" / "A.ipynb").read_bytes() == own
+    assert float(rows[ann]["total"]) == float(rows[ann]["max"]) > 0, rows[ann]
+    # the attacker: what he handed in under her name is his own submission, graded against
+    # his values (her answers earn him nothing), and the instructor is told
+    assert float(rows[hal]["total"]) < float(rows[hal]["max"]), rows[hal]
+    note = f"handed in under the name {ann} by the account {hal}, whose submission it is"
+    assert note in rows[hal]["notes"], rows[hal]
+    assert f"student {hal}: {note}" in proc.stderr, proc.stderr
+    assert "handed in under the name" not in rows[ann]["notes"], rows[ann]
