@@ -6,7 +6,7 @@ the repository, where a reader sees the architecture; installed, they are subpac
 name into site-packages. Everything else is in ``pyproject.toml``.
 """
 
-from setuptools import find_packages, setup
+from setuptools import find_namespace_packages, setup
 
 #: import name -> the repository folder that holds it
 LAYERS = {
@@ -17,9 +17,12 @@ LAYERS = {
     "accelab.benchmarks": "benchmarks",
 }
 
+#: every folder is a package, those of data alone too (nbgrader's and nbconvert's templates, the
+#: JupyterLab extension), so that setuptools ships their files without a warning
 packages = []
 for name, folder in LAYERS.items():
-    packages += [name] + [f"{name}.{sub}" for sub in find_packages(folder)]
+    found = find_namespace_packages(folder, exclude=["__pycache__", "*.__pycache__"])
+    packages += [name] + [f"{name}.{sub}" for sub in found]
 
 #: accelab's JupyterLab extension (exercises/lab/: nbgrader's Validate message in an accelab
 #: assignment), installed where JupyterLab finds extensions
