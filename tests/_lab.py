@@ -41,9 +41,9 @@ def _reachable(path):
 #: where the files other accounts use live (their environment, the class's exchange and
 #: configuration): build/ when other accounts can reach it, else a folder of /var/tmp
 SHARED = BUILD if _reachable(BUILD) else Path("/var/tmp/accelab-lab")
-#: the environment other accounts run: Debian's python3, the same versions as this one
+#: the environment other accounts run: Debian's python3, this environment's packages
 SHARED_VENV = SHARED / "lab-venv"
-#: what it holds besides accelab and its dependencies
+#: what the browser tests need in it besides accelab's dependencies (the test extra's)
 SHARED_EXTRAS = ("ipywidgets", "jupyterhub")
 LAPTOP = (1366, 768)
 NARROW = (700, 900)
@@ -175,47 +175,6 @@ def run_as(name, args, env_extra=None, check=True, cwd=None):
 
 
 # ---------------------------------------------------------------- the shared environment
-#: packages pinned to this environment's versions in the shared one (the rest follow)
-PINNED = (
-    "jupyterlab",
-    "jupyter-server",
-    "jupyterlab-server",
-    "notebook",
-    "nbgrader",
-    "nbconvert",
-    "nbclient",
-    "nbformat",
-    "jupyter-client",
-    "ipykernel",
-    "ipywidgets",
-    "jupyterlab-widgets",
-    "widgetsnbextension",
-    "jupyterhub",
-    "jupytext",
-    "traitlets",
-    "tornado",
-    "numpy",
-    "matplotlib",
-    "pint",
-)
-
-
-def _constraints():
-    """This environment's versions of :data:`PINNED` (pip freeze)."""
-    out = subprocess.run(
-        [sys.executable, "-m", "pip", "freeze", "--exclude-editable"],
-        capture_output=True,
-        text=True,
-        check=True,
-    ).stdout
-    lines = [
-        line
-        for line in out.splitlines()
-        if "==" in line and line.split("==")[0].lower().replace("_", "-") in PINNED
-    ]
-    return "\n".join(sorted(lines)) + "\n"
-
-
 #: what a clean copy of the checkout leaves out when the wheel is built from it
 NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache")
 #: folders of the copy that do not go into the wheel (a change there installs nothing anew)
@@ -248,9 +207,11 @@ def _pip(argv, what):
 def shared_venv():
     """A venv of Debian's python3 in ``SHARED/lab-venv`` that every account can run,
     with accelab (built from this checkout as a wheel, so with its JupyterLab
-    extension) and the same versions of its dependencies as this environment, plus
-    ipywidgets and JupyterHub. Dependencies are installed once (until the versions
-    change), accelab again when its source changed.
+    extension) and this environment's packages, the very same versions (ipywidgets and
+    JupyterHub among them: the test extra has them): their files hard-linked from this
+    environment (:mod:`_venv`), their console scripts and Jupyter's data files with
+    them, nothing downloaded or resolved again. The packages are linked once (until this
+    environment's change), accelab installed again when its source changed.
 
     The wheel is built from a private copy of the checkout, never in place: two
     in-place builds at once (test processes in parallel) share the checkout's build/
@@ -269,15 +230,23 @@ def shared_venv():
 
 
 def _make_shared_venv():
-    constraints = _constraints()
-    stamp = SHARED_VENV / f".deps-{hashlib.sha256(constraints.encode()).hexdigest()[:16]}"
+    import _venv
+
+    packages = _venv.packages()
+    missing = [
+        name
+        for name in SHARED_EXTRAS
+        if not any(p.lower().startswith(name + "-") for p in packages)
+    ]
+    assert not missing, f"{missing} not installed: pip install -e '.[test]'"
+    stamp = SHARED_VENV / f".deps-{hashlib.sha256(' '.join(packages).encode()).hexdigest()[:16]}"
     py = SHARED_VENV / "bin" / "python"
     with tempfile.TemporaryDirectory(prefix="accelab-lab-wheel-") as work:
         source, dist = Path(work) / "source", Path(work) / "dist"
         shutil.copytree(ROOT, source, ignore=shutil.ignore_patterns(*NOT_SOURCE), symlinks=True)
         built = SHARED_VENV / f".accelab-{_source_digest(source)}"
         if stamp.exists() and built.exists():
-            return  # made from this source, with these versions
+            return  # made from this source, with these packages
         # offline, with this environment's setuptools (the test extra has it)
         _pip(
             [sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation", "-q"]
@@ -287,20 +256,14 @@ def _make_shared_venv():
         wheel = next(dist.glob("accelab-*.whl"))
         if not stamp.exists():
             shutil.rmtree(SHARED_VENV, ignore_errors=True)
-            _pip(["/usr/bin/python3", "-m", "venv", str(SHARED_VENV)], "making the venv")
-            _pip([str(py), "-m", "pip", "install", "-q", "--upgrade", "pip"], "upgrading pip")
-        cfile = Path(work) / "constraints.txt"
-        cfile.write_text(constraints)
-        # accelab's dependencies as this checkout declares them (quick when they are there)
+            _venv.linked_venv(SHARED_VENV, "/usr/bin/python3", data=True)
+        # with the pip this environment has (linked with the rest), offline
         _pip(
-            [str(py), "-m", "pip", "install", "-q", "-c", str(cfile), str(wheel), *SHARED_EXTRAS],
-            "installing accelab's dependencies into the shared venv",
-        )
-        _pip(
-            [str(py), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)],
+            [str(py), "-m", "pip", "install", "-q", "--no-deps", "--no-index", "--force-reinstall"]
+            + [str(wheel)],
             "installing accelab into the shared venv",
         )
-        stamp.write_text(constraints)
+        stamp.write_text("\n".join(packages) + "\n")
         for old in SHARED_VENV.glob(".accelab-*"):
             old.unlink()
         built.write_text(wheel.name)

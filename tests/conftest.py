@@ -24,6 +24,16 @@ settings.register_profile(
 settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 
+def pytest_collection_modifyitems(session, config, items):
+    """The modules that hold a slow test first, the others after them, each module's tests
+    in their own order. With ``--dist loadgroup`` a test outside any group is a unit of
+    work of its own, handed out in this order once the groups (largest first) are: the
+    long single tests (the JupyterHub class, the wheel) then start early, and the many
+    quick ones fill both workers up to the end, rather than one long test starting last."""
+    slow = {item.module.__name__ for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: item.module.__name__ not in slow)  # stable
+
+
 def pytest_runtest_setup(item):
     """With ``-n N --dist loadgroup`` (make test), the tests of an ``xdist_group`` share
     what one process builds and must run in one worker. pytest-xdist tells the groups

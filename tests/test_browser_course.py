@@ -41,7 +41,8 @@ from _lab import (
 
 import accelab.course
 
-pytestmark = pytest.mark.slow
+#: one worker: the module's JupyterLab (a module fixture) is started once
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("course-lab")]
 
 DEFAULT = ("09_jerk",)
 NOTEBOOKS = [p.stem for p in accelab.course.notebooks()]

@@ -26,6 +26,7 @@ from nbformat.v4 import new_code_cell
 
 from accelab.exercises.grader.gradetable import question_names
 from accelab.exercises.grader.sandbox import check_sandbox
+from accelab.exercises.grader.state import outcome_path
 from accelab.exercises.notebook import read_spec
 from accelab.exercises.simulate import key_code, submit
 
@@ -598,7 +599,11 @@ def graded(tmp_path_factory):
         f"\naccelab grade: {len(os.listdir(os.path.join(course, 'submitted')))} submissions "
         f"in {seconds:.1f} s\n{proc.stdout[-600:]}"
     )
-    time.sleep(5)  # long enough for a process that outlived its notebook to act
+    # long enough for a process that outlived its notebook to act (it waits 4 s): 5 s after
+    # its submission's sandbox ended (the outcome saved then), usually long past
+    ended = outcome_path(course, "A", "background_gradebook")
+    since = time.time() - os.path.getmtime(ended) if os.path.exists(ended) else 0.0
+    time.sleep(max(0.0, 5 - since))
     with open(os.path.join(course, "grades_A.csv")) as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
     return {

@@ -30,7 +30,8 @@ from accelab.exercises.grader.sandbox import check_sandbox
 from accelab.exercises.notebook import read_spec
 from accelab.exercises.simulate import key_code, submit
 
-pytestmark = pytest.mark.slow
+#: one worker builds and grades the reference course (the module fixture), once
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("faults")]
 
 ACCELAB = [sys.executable, "-m", "accelab"]
 STUDENTS = ["ann", "bob", "cy"]

@@ -64,7 +64,8 @@ from accelab.exercises.student.polygon.task import task_of_case
 from accelab.exercises.student.polygon.widget import STORE
 from accelab.solver.graphical.gallery import EXAMPLE_7_1
 
-pytestmark = pytest.mark.slow
+#: one worker: the module's JupyterLab and its course (module fixtures) are made once
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("polygon-lab")]
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 ARTIFACTS = (

@@ -29,7 +29,8 @@ from accelab.exercises.simulate import submit
 from accelab.exercises.student.polygon.record import FORMAT, MIMETYPE, VERSION
 from accelab.exercises.student.polygon.task import ideal_steps
 
-pytestmark = pytest.mark.slow
+#: one worker grades the course of the module fixture, once, for all the tests that read it
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("polygon-grade")]
 
 FAMILIES = ["polygon_fourbar", "polygon_slidercrank", "polygon_coriolis"]
 

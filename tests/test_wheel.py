@@ -19,19 +19,21 @@ import re
 import shutil
 import subprocess
 import sys
-import sysconfig
 import tempfile
 import zipfile
 from pathlib import Path
 
 import pytest
+from _venv import linked_venv
 
 import accelab
 
 ROOT = Path(__file__).resolve().parents[1]
 #: what a clean copy of the repository leaves out: the environment, outputs, caches, VCS
 NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache")
-NOTEBOOK = "01_rotating_point"
+#: the notebook run from the installed wheel: quick, and it reads course data the wheel must
+#: ship (course/benchmark.json, through accelab.course.HERE)
+NOTEBOOK = "11_speed_accuracy"
 
 pytestmark = pytest.mark.slow
 
@@ -70,26 +72,7 @@ def fresh_venv(where):
     """A new venv whose site-packages holds the test environment's packages (hard links,
     or copies across filesystems) but not the editable install of this checkout."""
     venv = where / "venv"
-    run([sys.executable, "-m", "venv", "--without-pip", str(venv)], cwd=where, env=dict(os.environ))
-    python = venv / "bin" / "python"
-    target = Path(
-        subprocess.run(
-            [str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-            capture_output=True,
-            text=True,
-            check=True,
-        ).stdout.strip()
-    )
-    ours = Path(sysconfig.get_paths()["purelib"])
-
-    def link(src, dst):
-        try:
-            os.link(src, dst)
-        except OSError:  # another filesystem
-            shutil.copy2(src, dst)
-
-    editable = shutil.ignore_patterns("__editable__*", "accelab-*.dist-info", "accelab.egg-link")
-    shutil.copytree(ours, target, ignore=editable, copy_function=link, dirs_exist_ok=True)
+    linked_venv(venv)
     return venv
 
 
