@@ -311,8 +311,9 @@ return {
       alt: i.getAttribute('alt') || '', inArticle: article.contains(i) && i.naturalWidth > 48,
       player: !!i.closest('.accelab-player'),
       link: i.closest('a') ? i.closest('a').href : null,
+      // textContent: a figure in a folded answer may be laid out after this read
       caption: (i.closest('figure') && i.closest('figure').querySelector('figcaption'))
-               ? i.closest('figure').querySelector('figcaption').innerText.trim() : ''})),
+               ? i.closest('figure').querySelector('figcaption').textContent.trim() : ''})),
   links: [...document.querySelectorAll('a[href]')].map(a => a.href),
   ids: [...document.querySelectorAll('[id]')].map(e => e.id),
   download: [...document.querySelectorAll('a.nb-download-link')].map(a =>
