@@ -148,7 +148,9 @@ def test_a_stop_ends_every_sandbox_and_starts_none(tmp_path):
         stop.HALT.set()
         with pytest.raises(OSError):
             command.command(["sleep", "60"])
-        stop.end_sandboxes()
+        # as grade does: rounds of end_sandboxes until the run is over (one round can miss a
+        # sandbox still inside execve: its /proc cmdline is empty for that instant)
+        stop.wait_for(lambda: child.poll() is None, seconds=10)
         assert child.wait(timeout=10) == -9
     assert not stop.HALT.is_set()  # cleared when the run ends
     assert other.poll() is None  # a child that is no sandbox is left alone

@@ -86,7 +86,10 @@ def children():
 def end_sandboxes():
     """SIGKILL every sandbox this process started, with every process in it:
     each leads its own process group (bubblewrap's PID namespace and
-    ``--die-with-parent`` take the rest). Other children are left alone."""
+    ``--die-with-parent`` take the rest). Other children are left alone.
+
+    A sandbox still inside ``execve`` shows no program for an instant and is
+    missed by one call: :func:`wait_for` repeats it until the run is over."""
     for pid, group, program in children():
         if group == pid and program in _PROGRAMS:
             try:
