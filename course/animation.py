@@ -184,7 +184,7 @@ def _encode(images, colours=128):
         frame = Image.fromarray(index, mode="P")
         frame.putpalette(flat)
         buf = io.BytesIO()
-        frame.save(buf, "PNG", compress_level=9)
+        frame.save(buf, "PNG", compress_level=6)  # 9: 2.5x the time for 8 % less
         out.append(buf.getvalue())
     return out
 
