@@ -22,9 +22,14 @@ and judges it with :mod:`accelab.exercises.student.polygon.rules` against the su
 >>> PolygonBuilder.from_case(EXAMPLE_7_1)   # in JupyterLab: draw Example 7-1's polygons
 """
 
+from typing import Any
+
 from .record import MIMETYPE, RecordError, read_record
 from .task import FAMILY_MECHANISM, task_of_case
-from .widget import PolygonBuilder, check_construction
+
+#: imported when first asked for: the widget needs anywidget and ipywidgets (IPython),
+#: a third of a second that the grader and the command line never use
+_FROM_WIDGET = ("PolygonBuilder", "check_construction")
 
 __all__ = [
     "PolygonBuilder",
@@ -35,3 +40,11 @@ __all__ = [
     "MIMETYPE",
     "FAMILY_MECHANISM",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _FROM_WIDGET:
+        from . import widget
+
+        return getattr(widget, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
