@@ -287,6 +287,84 @@ def task_of_case(case):
     )
 
 
+def _crank_and_coupler_velocities(V_A, V_B):
+    """The terms of eq. 6.5 up to B that a fourbar and a slider-crank share: V_A (A turns
+    about O2) and V_BA (B turns about A, unknown in size)."""
+    return [
+        Term(
+            "V_A",
+            "velocity",
+            V_A,
+            True,
+            "R",
+            "O2A",
+            True,
+            "V_A is perpendicular to O2A, in the sense of omega2 (A turns about O2)",
+            "a omega2",
+        ),
+        Term(
+            "V_BA",
+            "velocity",
+            V_B - V_A,
+            False,
+            "R",
+            "AB",
+            True,
+            "V_BA is perpendicular to AB (B turns about A)",
+        ),
+    ]
+
+
+def _crank_and_coupler_accelerations(v):
+    """The terms of eq. 7.4 up to B that a fourbar and a slider-crank share: A_A's two
+    (the crank turns about O2) and A_BA's two (B turns about A); only A_BA^t is unknown."""
+    return [
+        Term(
+            "A_A^t",
+            "tangential",
+            v["A_A_t"],
+            True,
+            "R",
+            "O2A",
+            True,
+            "A_A^t is perpendicular to O2A, in the sense of alpha2",
+            "a alpha2",
+        ),
+        Term(
+            "A_A^n",
+            "normal",
+            v["A_A_n"],
+            True,
+            "R",
+            "O2A",
+            False,
+            "A_A^n points from A toward O2, the centre of A's path",
+            "a omega2^2",
+        ),
+        Term(
+            "A_BA^n",
+            "normal",
+            v["A_BA_n"],
+            True,
+            "R",
+            "AB",
+            False,
+            "A_BA^n points from B toward A (B turns about A)",
+            "b omega3^2",
+        ),
+        Term(
+            "A_BA^t",
+            "tangential",
+            v["A_BA_t"],
+            False,
+            "R",
+            "AB",
+            True,
+            "A_BA^t is perpendicular to BA",
+        ),
+    ]
+
+
 def _fourbar(v, pts):
     A, B, O4 = pts["A"], pts["B"], pts["O4"]
     R_BA, R_BO4 = B - A, B - O4
@@ -297,27 +375,7 @@ def _fourbar(v, pts):
         "Velocity polygon",
         "V_B = V_A + V_BA (eq. 6.5)",
         [
-            Term(
-                "V_A",
-                "velocity",
-                V_A,
-                True,
-                "R",
-                "O2A",
-                True,
-                "V_A is perpendicular to O2A, in the sense of omega2 (A turns about O2)",
-                "a omega2",
-            ),
-            Term(
-                "V_BA",
-                "velocity",
-                V_B - V_A,
-                False,
-                "R",
-                "AB",
-                True,
-                "V_BA is perpendicular to AB (B turns about A)",
-            ),
+            *_crank_and_coupler_velocities(V_A, V_B),
             Term(
                 "V_B",
                 "resultant",
@@ -361,49 +419,7 @@ def _fourbar(v, pts):
         "Acceleration polygon",
         "A_B^n + A_B^t = A_A^t + A_A^n + A_BA^n + A_BA^t (eq. 7.4)",
         [
-            Term(
-                "A_A^t",
-                "tangential",
-                v["A_A_t"],
-                True,
-                "R",
-                "O2A",
-                True,
-                "A_A^t is perpendicular to O2A, in the sense of alpha2",
-                "a alpha2",
-            ),
-            Term(
-                "A_A^n",
-                "normal",
-                v["A_A_n"],
-                True,
-                "R",
-                "O2A",
-                False,
-                "A_A^n points from A toward O2, the centre of A's path",
-                "a omega2^2",
-            ),
-            Term(
-                "A_BA^n",
-                "normal",
-                v["A_BA_n"],
-                True,
-                "R",
-                "AB",
-                False,
-                "A_BA^n points from B toward A (B turns about A)",
-                "b omega3^2",
-            ),
-            Term(
-                "A_BA^t",
-                "tangential",
-                v["A_BA_t"],
-                False,
-                "R",
-                "AB",
-                True,
-                "A_BA^t is perpendicular to BA",
-            ),
+            *_crank_and_coupler_accelerations(v),
             Term(
                 "A_B^n",
                 "normal",
@@ -479,27 +495,7 @@ def _slidercrank(v, pts, con):
         "Velocity polygon",
         "V_B = V_A + V_BA (eq. 6.5)",
         [
-            Term(
-                "V_A",
-                "velocity",
-                V_A,
-                True,
-                "R",
-                "O2A",
-                True,
-                "V_A is perpendicular to O2A, in the sense of omega2 (A turns about O2)",
-                "a omega2",
-            ),
-            Term(
-                "V_BA",
-                "velocity",
-                V_B - V_A,
-                False,
-                "R",
-                "AB",
-                True,
-                "V_BA is perpendicular to AB (B turns about A)",
-            ),
+            *_crank_and_coupler_velocities(V_A, V_B),
             Term(
                 "V_B",
                 "resultant",
@@ -542,49 +538,7 @@ def _slidercrank(v, pts, con):
         "Acceleration polygon",
         "A_B = A_A^t + A_A^n + A_BA^n + A_BA^t (eq. 7.4)",
         [
-            Term(
-                "A_A^t",
-                "tangential",
-                v["A_A_t"],
-                True,
-                "R",
-                "O2A",
-                True,
-                "A_A^t is perpendicular to O2A, in the sense of alpha2",
-                "a alpha2",
-            ),
-            Term(
-                "A_A^n",
-                "normal",
-                v["A_A_n"],
-                True,
-                "R",
-                "O2A",
-                False,
-                "A_A^n points from A toward O2, the centre of A's path",
-                "a omega2^2",
-            ),
-            Term(
-                "A_BA^n",
-                "normal",
-                v["A_BA_n"],
-                True,
-                "R",
-                "AB",
-                False,
-                "A_BA^n points from B toward A (B turns about A)",
-                "b omega3^2",
-            ),
-            Term(
-                "A_BA^t",
-                "tangential",
-                v["A_BA_t"],
-                False,
-                "R",
-                "AB",
-                True,
-                "A_BA^t is perpendicular to BA",
-            ),
+            *_crank_and_coupler_accelerations(v),
             Term(
                 "A_B",
                 "resultant",
