@@ -33,6 +33,7 @@ import pint
 from pint.util import UnitsContainer
 
 from .errors import InvalidInput
+from .unitcache import new_registry
 
 __all__ = [
     "ureg",
@@ -57,7 +58,7 @@ SIValue: TypeAlias = float | complex | np.ndarray
 
 #: The package's one pint registry: every Quantity that accelab reads or
 #: returns belongs to it (a Quantity of another registry is converted once).
-ureg: pint.UnitRegistry = pint.UnitRegistry()
+ureg: pint.UnitRegistry = new_registry()  # pint's parse of its definitions kept on disk
 ureg.define("rev = revolution")  # '10 rev/s', the unambiguous way to say 10 Hz of a crank
 pint.set_application_registry(ureg)
 #: ``Q_(value, unit)``: a Quantity of :data:`ureg`, e.g. ``Q_(30, "deg")``.
