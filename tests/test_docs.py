@@ -431,10 +431,10 @@ def _problems(page, st, base, width):
     return [f"{page} @ {width}px: {p}" for p in out]
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def browsers(chromium_paths):
     """One Chromium per width, shared by every test of the site (each launch costs
-    more than a page): ``({width: driver}, downloads folder)``."""
+    more than a page), closed after the last: ``({width: driver}, downloads folder)``."""
     downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
     drivers, profiles = {}, []
     try:
@@ -518,7 +518,7 @@ def _outcome(value):
     return value
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def crawl(site, server, browsers):
     """Every page at both widths: ``{width: {page: state}}``, and the problems.
 
