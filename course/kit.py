@@ -80,7 +80,11 @@ __all__ = [
 
 
 def use_style():
-    """Matplotlib settings every notebook starts with: readable at page width."""
+    """Matplotlib settings every notebook starts with: readable at page width; and one
+    cache of typeset math for all the notebook's figures (:mod:`accelab.course.mathtext_cache`)."""
+    from accelab.course.mathtext_cache import install
+
+    install()
     plt.rcParams.update(
         {
             "figure.figsize": (6.4, 4.0),

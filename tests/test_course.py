@@ -699,6 +699,30 @@ def test_renditions_show_both_headless(monkeypatch):
     plt.close("all")
 
 
+def test_math_is_typeset_once_for_every_figure():
+    """accelab.course.mathtext_cache: the math parsers of two figures (renderers) share
+    their results; a change of font, DPI or mathtext setting typesets again."""
+    import matplotlib
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.mathtext import MathTextParser
+
+    from accelab.course.mathtext_cache import install
+
+    install()
+    install()  # once per process
+    prop = FontProperties(size=10)
+    one, two = MathTextParser("agg"), MathTextParser("agg")
+    first = one.parse(r"$\mathbf{A}_{B}$", 100, prop)
+    assert two.parse(r"$\mathbf{A}_{B}$", 100, prop) is first, "typeset once"
+    assert two.parse(r"$\mathbf{A}_{B}$", 200, prop) is not first
+    assert two.parse(r"$\mathbf{A}_{B}$", 100, FontProperties(size=12)) is not first
+    italic = two.parse("$x$", 100, prop)
+    with matplotlib.rc_context({"mathtext.default": "rm"}):  # upright letters
+        upright = two.parse("$x$", 100, prop)
+    assert upright is not italic and upright.image.tobytes() != italic.image.tobytes()
+    assert MathTextParser("path").parse(r"$\mathbf{A}_{B}$", 100, prop) is not first
+
+
 def test_results_read_as_text():
     """accelab.course.text: numbers with the digits they deserve, a true minus sign,
     units kept with their number."""

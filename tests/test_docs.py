@@ -431,24 +431,117 @@ def _problems(page, st, base, width):
     return [f"{page} @ {width}px: {p}" for p in out]
 
 
-@pytest.fixture(scope="session")
-def crawl(site, server, chromium_paths):
-    """Every page at both widths: ``{width: {page: state}}``, and the problems."""
+@pytest.fixture(scope="module")
+def browsers(chromium_paths):
+    """One Chromium per width, shared by every test of the site (each launch costs
+    more than a page), closed after the last: ``({width: driver}, downloads folder)``."""
+    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
+    drivers, profiles = {}, []
+    try:
+        for width in WIDTHS:
+            drivers[width], profile = _driver(chromium_paths, width, downloads)
+            profiles.append(profile)
+        yield drivers, downloads
+    finally:
+        for driver in drivers.values():
+            driver.quit()
+        for profile in profiles:
+            shutil.rmtree(profile, ignore_errors=True)
+        shutil.rmtree(downloads, ignore_errors=True)
+
+
+def _is_notebook_page(page):
+    return page.startswith("course/") and page[7:9].isdigit()
+
+
+#: the page whose animation is played, paused, stepped and slid (at both widths)
+ANIMATED = "course/05_coriolis.html"
+
+PLAYER_STATE = """const p = document.querySelector('.accelab-player');
+    const img = [...p.querySelectorAll('img')].find(i => i.checkVisibility());
+    return [parseInt(p.querySelector('input[type=range]').value), img.src,
+            p.querySelector('.accelab-readout').textContent,
+            p.querySelector('button.accelab-play').textContent];"""
+PLAYER_CLICK = "document.querySelector('.accelab-player button.%s').click()"
+
+
+def _play(driver):
+    """Use the player of the page loaded in ``driver`` as a reader does; what it showed
+    after each step (test_animations_play_pause_and_step judges it)."""
+    seen = {}
+    seen["start"] = driver.execute_script(PLAYER_STATE)
+    driver.execute_script(PLAYER_CLICK % "accelab-next")
+    seen["next"] = driver.execute_script(PLAYER_STATE)
+    driver.execute_script(PLAYER_CLICK % "accelab-back")
+    seen["back"] = driver.execute_script(PLAYER_STATE)
+    driver.execute_script(PLAYER_CLICK % "accelab-play")
+    time.sleep(0.6)
+    seen["playing"] = driver.execute_script(PLAYER_STATE)
+    driver.execute_script(PLAYER_CLICK % "accelab-play")
+    seen["paused"] = driver.execute_script(PLAYER_STATE)
+    time.sleep(0.4)
+    seen["still paused"] = driver.execute_script(PLAYER_STATE)
+    driver.execute_script(
+        "const r = document.querySelector('.accelab-player input[type=range]');"
+        "r.value = 20; r.dispatchEvent(new Event('input'));"
+    )
+    seen["slid"] = driver.execute_script(PLAYER_STATE)
+    return seen
+
+
+def _download(driver, downloads, stem):
+    """Click the notebook link of the page loaded in ``driver``; the file it
+    downloaded (None if none came)."""
+    links = driver.find_elements("css selector", "a.nb-download-link")
+    if not links:
+        return None
+    links[0].click()
+    target = downloads / f"{stem}.ipynb"
+    for _ in range(100):
+        if target.exists() and not list(downloads.glob("*.crdownload")):
+            break
+        time.sleep(0.1)
+    return target if target.exists() else None
+
+
+def _attempt(action, *args):
+    """``action(*args)``, or the exception it raised (re-raised by the test that judges it)."""
+    try:
+        return action(*args)
+    except Exception as exc:  # judged by the test, with its traceback
+        return exc
+
+
+def _outcome(value):
+    if isinstance(value, Exception):
+        raise value
+    return value
+
+
+@pytest.fixture(scope="module")
+def crawl(site, server, browsers):
+    """Every page at both widths: ``{width: {page: state}}``, and the problems.
+
+    Each page is loaded once per width; what other tests do on a page is done while
+    it is loaded (and judged by them): the course pages' notebook links clicked at
+    1366 px (``state["downloaded"]``), the animation of :data:`ANIMATED` played at
+    each width (``state["played"]``)."""
+    drivers, downloads = browsers
     pages = _pages(site)
     states, problems = {}, []
-    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
     t0 = time.perf_counter()
     for width in WIDTHS:
-        driver, profile = _driver(chromium_paths, width, downloads)
-        try:
-            states[width] = {}
-            for page in pages:
-                st = _visit(driver, server, page)
-                states[width][page] = st
-                problems += _problems(page, st, server, width)
-        finally:
-            driver.quit()
-            shutil.rmtree(profile, ignore_errors=True)
+        driver = drivers[width]
+        states[width] = {}
+        for page in pages:
+            st = _visit(driver, server, page)
+            states[width][page] = st
+            problems += _problems(page, st, server, width)
+            # a failure here is kept for the test it belongs to, not raised for all
+            if page == ANIMATED:
+                st["played"] = _attempt(_play, driver)
+            if width == 1366 and _is_notebook_page(page):
+                st["downloaded"] = _attempt(_download, driver, downloads, Path(page).stem)
     sys.stderr.write(
         f"\n{len(pages)} pages at {len(WIDTHS)} widths in {time.perf_counter() - t0:.1f} s\n"
     )
@@ -516,63 +609,49 @@ def test_internal_links_resolve(crawl, server, site):
     assert not bad, "broken links:\n" + "\n".join(sorted(set(bad))[:40])
 
 
-def test_search_finds_coriolis(site, server, chromium_paths):
-    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
-    driver, profile = _driver(chromium_paths, 1366, downloads)
-    try:
-        driver.get(server + "search.html?q=Coriolis")
-        hits = []
-        for _ in range(200):
-            hits = driver.execute_script(
-                "return [...document.querySelectorAll('#search-results ul.search li a')]"
-                ".map(a => a.getAttribute('href'))"
-            )
-            done = driver.execute_script(
-                "const s = document.querySelector('#search-results .search-summary');"
-                "return s ? s.innerText : ''"
-            )
-            if hits and done:
-                break
-            time.sleep(0.1)
-        assert any("05_coriolis" in h for h in hits), f"search results for Coriolis: {hits}"
-        severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
-        assert not severe, severe
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+def test_search_finds_coriolis(site, server, browsers):
+    driver = browsers[0][1366]
+    driver.get_log("browser")
+    driver.get(server + "search.html?q=Coriolis")
+    hits = []
+    for _ in range(200):
+        hits = driver.execute_script(
+            "return [...document.querySelectorAll('#search-results ul.search li a')]"
+            ".map(a => a.getAttribute('href'))"
+        )
+        done = driver.execute_script(
+            "const s = document.querySelector('#search-results .search-summary');"
+            "return s ? s.innerText : ''"
+        )
+        if hits and done:
+            break
+        time.sleep(0.1)
+    assert any("05_coriolis" in h for h in hits), f"search results for Coriolis: {hits}"
+    severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+    assert not severe, severe
 
 
-def test_course_pages_download_their_notebooks(crawl, site, server, chromium_paths):
-    """Each course page links its notebook; clicking the link downloads it."""
+def test_course_pages_download_their_notebooks(crawl, site, server):
+    """Each course page links its notebook; clicking the link downloads it (clicked
+    during the crawl, on the page as loaded at 1366 px)."""
     import nbformat
 
     states, _ = crawl
-    course = sorted(p for p in states[1366] if p.startswith("course/") and p[7:9].isdigit())
+    course = sorted(p for p in states[1366] if _is_notebook_page(p))
     assert len(course) >= 11
-    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
-    driver, profile = _driver(chromium_paths, 1366, downloads)
-    try:
-        for page in course:
-            links = states[1366][page]["download"]
-            stem = Path(page).stem
-            assert links, f"{page} has no notebook download link"
-            assert links[0]["href"] == server + f"course/{stem}.ipynb"
-            assert links[0]["download"] == f"{stem}.ipynb"
-            driver.get(server + page)
-            driver.find_element("css selector", "a.nb-download-link").click()
-            target = downloads / f"{stem}.ipynb"
-            for _ in range(100):
-                if target.exists() and not list(downloads.glob("*.crdownload")):
-                    break
-                time.sleep(0.1)
-            assert target.exists(), f"clicking {page}'s link downloaded nothing"
-            nb = nbformat.read(target, as_version=4)
-            nbformat.validate(nb)
-            assert nb.cells and nb.cells[0].cell_type == "markdown"
-            assert nb.metadata["kernelspec"]["name"] == "python3"
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+    for page in course:
+        links = states[1366][page]["download"]
+        stem = Path(page).stem
+        assert links, f"{page} has no notebook download link"
+        assert links[0]["href"] == server + f"course/{stem}.ipynb"
+        assert links[0]["download"] == f"{stem}.ipynb"
+        target = _outcome(states[1366][page]["downloaded"])
+        assert target is not None, f"clicking {page}'s link downloaded nothing"
+        assert target.name == f"{stem}.ipynb"
+        nb = nbformat.read(target, as_version=4)
+        nbformat.validate(nb)
+        assert nb.cells and nb.cells[0].cell_type == "markdown"
+        assert nb.metadata["kernelspec"]["name"] == "python3"
 
 
 def _search(driver, server, query):
@@ -593,57 +672,30 @@ def _search(driver, server, query):
     return hits
 
 
-def test_search_puts_the_guide_first_for_grade(site, server, chromium_paths):
+def test_search_puts_the_guide_first_for_grade(site, server, browsers):
     """A reader who types "grade" wants the instructor's guide, not an API function."""
-    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
-    driver, profile = _driver(chromium_paths, 1366, downloads)
-    try:
-        hits = _search(driver, server, "grade")
-        assert hits and hits[0].startswith("guide/"), f"search results for grade: {hits[:5]}"
-        hits = _search(driver, server, "Coriolis")
-        assert hits and "05_coriolis" in hits[0], f"search results for Coriolis: {hits[:5]}"
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+    driver = browsers[0][1366]
+    hits = _search(driver, server, "grade")
+    assert hits and hits[0].startswith("guide/"), f"search results for grade: {hits[:5]}"
+    hits = _search(driver, server, "Coriolis")
+    assert hits and "05_coriolis" in hits[0], f"search results for Coriolis: {hits[:5]}"
 
 
-def test_animations_play_pause_and_step(site, server, chromium_paths):
-    """A course animation plays, pauses, steps and jumps to any frame, at both widths."""
-    downloads = Path(tempfile.mkdtemp(prefix="accelab-docs-downloads-"))
+def test_animations_play_pause_and_step(crawl):
+    """A course animation plays, pauses, steps and jumps to any frame, at both widths
+    (played during the crawl, on the page as loaded at each width)."""
+    states, _ = crawl
     for width in WIDTHS:
-        driver, profile = _driver(chromium_paths, width, downloads)
-        try:
-            driver.get(server + "course/05_coriolis.html")
-            driver.execute_async_script(READY)
-            state = """const p = document.querySelector('.accelab-player');
-                const img = [...p.querySelectorAll('img')].find(i => i.checkVisibility());
-                return [parseInt(p.querySelector('input[type=range]').value), img.src,
-                        p.querySelector('.accelab-readout').textContent,
-                        p.querySelector('button.accelab-play').textContent];"""
-            click = "document.querySelector('.accelab-player button.%s').click()"
-            k0, src0, _, label = driver.execute_script(state)
-            assert k0 == 0 and "Play" in label
-            driver.execute_script(click % "accelab-next")
-            k1, src1, text1, _ = driver.execute_script(state)
-            assert k1 == 1 and src1 != src0 and "\u03b8" in text1, "one frame on"
-            driver.execute_script(click % "accelab-back")
-            assert driver.execute_script(state)[0] == 0, "one frame back"
-            driver.execute_script(click % "accelab-play")
-            time.sleep(0.6)
-            k2, _, _, label = driver.execute_script(state)
-            assert k2 > 0 and "Pause" in label, "it plays"
-            driver.execute_script(click % "accelab-play")
-            k3 = driver.execute_script(state)[0]
-            time.sleep(0.4)
-            assert driver.execute_script(state)[0] == k3, "it pauses"
-            driver.execute_script(
-                "const r = document.querySelector('.accelab-player input[type=range]');"
-                "r.value = 20; r.dispatchEvent(new Event('input'));"
-            )
-            assert driver.execute_script(state)[0] == 20, "the slider goes to any frame"
-        finally:
-            driver.quit()
-            shutil.rmtree(profile, ignore_errors=True)
+        seen = _outcome(states[width][ANIMATED]["played"])
+        k0, src0, _, label = seen["start"]
+        assert k0 == 0 and "Play" in label, width
+        k1, src1, text1, _ = seen["next"]
+        assert k1 == 1 and src1 != src0 and "\u03b8" in text1, "one frame on"
+        assert seen["back"][0] == 0, "one frame back"
+        k2, _, _, label = seen["playing"]
+        assert k2 > 0 and "Pause" in label, "it plays"
+        assert seen["still paused"][0] == seen["paused"][0], "it pauses"
+        assert seen["slid"][0] == 20, "the slider goes to any frame"
 
 
 def test_site_says_how_to_get_it_and_its_licence(site):
