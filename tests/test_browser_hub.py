@@ -52,6 +52,7 @@ from _lab import (
     run_as,
     shared_venv,
     shot,
+    test_config_dir,
     tracebacks,
     type_into_cell,
     wait,
@@ -85,6 +86,11 @@ c.ConfigurableHTTPProxy.pid_file = "{folder}/proxy.pid"
 c.JupyterHub.authenticator_class = "dummy"
 c.DummyAuthenticator.password = {password!r}
 c.Spawner.args = ["--LabApp.expose_app_in_browser=True"]
+# the tests' page configuration after the role's (tests/_lab.py: no build check at each load)
+_role_config = c.Spawner.environment["JUPYTER_CONFIG_PATH"]
+c.Spawner.environment["JUPYTER_CONFIG_PATH"] = lambda spawner: (
+    _role_config(spawner) + ":{test_config}"
+)
 c.Spawner.start_timeout = 120
 c.Spawner.http_timeout = 120
 """
@@ -205,6 +211,7 @@ def hub():
         proxy_port=free_port(),
         folder=HUB,
         password=PASSWORD,
+        test_config=test_config_dir(),
     )
     (HUB / "jupyterhub_config.py").write_text(config)
     for role in ("student", "instructor"):
