@@ -131,17 +131,33 @@ def browser(width=1366, height=1000):
     )
     driver.set_page_load_timeout(90)
     driver.set_script_timeout(180)
+    driver._accelab_size = (width, height)
+    if width < 500:
+        resize(driver, width, height)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def resize(driver, width=1366, height=1000):
+    """Make the browser ``width`` CSS px wide (a phone below 500 px: its screen emulated,
+    390 px at twice the pixels, with touch), as :func:`browser` opens it; the page shown
+    takes the new size when it is loaded again."""
+    if (width, height) == getattr(driver, "_accelab_size", None) and width >= 500:
+        return
+    driver.set_window_size(max(width, 500), height)
     if width < 500:
         driver.execute_cdp_cmd(
             "Emulation.setDeviceMetricsOverride",
             {"width": width, "height": 844, "deviceScaleFactor": 2, "mobile": True},
         )
         driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True})
-    try:
-        yield driver
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+    else:
+        driver.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+        driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": False})
+    driver._accelab_size = (width, height)
 
 
 def wait(driver, script, timeout=180, poll=0.25, what="the page"):
