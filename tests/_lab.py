@@ -176,7 +176,17 @@ def run_as(name, args, env_extra=None, check=True, cwd=None):
 
 # ---------------------------------------------------------------- the shared environment
 #: what a clean copy of the checkout leaves out when the wheel is built from it
-NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache")
+NOT_SOURCE = (
+    ".venv",
+    "build",
+    ".git",
+    "*.egg-info",
+    "__pycache__",
+    ".pytest_cache",
+    ".mypy_cache",
+    ".ruff_cache",
+    ".hypothesis",
+)
 #: folders of the copy that do not go into the wheel (a change there installs nothing anew)
 NOT_PACKAGED = ("tests", "docs")
 
