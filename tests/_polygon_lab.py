@@ -175,14 +175,35 @@ def wait(driver, script, timeout=180, poll=0.25, what="the page"):
     raise TimeoutError(f"waited {timeout} s for {what}; last: {last!r}")
 
 
-def open_notebook(driver, base, token, path):
+#: JavaScript: close the notebook ``arguments[0]`` the page shows, if it is saved, and open
+#: it again as the file browser does; true when done
+_REOPEN = """
+const done = arguments[arguments.length - 1];
+const app = window.jupyterapp;
+const w = app && Array.from(app.shell.widgets('main'))
+  .find((w) => w.context && w.context.path === arguments[0]);
+if (!w || w.context.model.dirty) { done(false); return; }
+const t0 = Date.now();
+w.close();
+const opened = () => app.commands.execute('docmanager:open', {path: arguments[0]})
+  .then(() => done(true), () => done(false));
+const closed = () => w.isDisposed ? opened()
+  : (Date.now() - t0 > 30000 ? done(false) : setTimeout(closed, 50));
+closed();
+"""
+
+
+def open_notebook(driver, base, token, path, again=False):
     """Open ``path`` (relative to the server's folder) in JupyterLab, in a fresh
     workspace (nothing of an earlier session restored), and wait until its
-    kernel is idle."""
+    kernel is idle. With ``again``, a notebook the page shows, saved, is closed and
+    opened again as the file browser opens it, JupyterLab not loaded again (its kernel
+    is its session's, as in a new page)."""
     import uuid
 
-    space = f"t{uuid.uuid4().hex[:10]}"
-    driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
+    if not (again and driver.execute_async_script(_REOPEN, path)):
+        space = f"t{uuid.uuid4().hex[:10]}"
+        driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
     panel = (
         "(window.jupyterapp && Array.from(window.jupyterapp.shell.widgets('main'))"
         f".find((w) => w.sessionContext && w.context && w.context.path === {path!r}))"

@@ -106,8 +106,8 @@ def shot(driver, name):
     driver.save_screenshot(str(ARTIFACTS / f"{name}.png"))
 
 
-def start(driver, base, token, path):
-    open_notebook(driver, base, token, path)
+def start(driver, base, token, path, again=False):
+    open_notebook(driver, base, token, path, again=again)
     command(driver, "notebook:run-all-cells", wait_for_it=False)
     wait(
         driver,
@@ -383,8 +383,8 @@ def test_an_assignment_drawn_saved_and_graded(folder, course, server, driver):
     shot(d, "assignment-1366")
     command(d, "docmanager:save")
     time.sleep(2)
-    # the next day: the notebook opened and run again brings the construction back
-    start(d, base, token, "ann/A/A.ipynb")
+    # the next day: the notebook closed, opened and run again brings the construction back
+    start(d, base, token, "ann/A/A.ipynb", again=True)
     wait(
         d,
         "return document.querySelectorAll("
