@@ -158,6 +158,7 @@ def resize(driver, width=1366, height=1000):
         driver.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
         driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": False})
     driver._accelab_size = (width, height)
+    driver._accelab_resized = True  # the page shown is of the size before
 
 
 def wait(driver, script, timeout=180, poll=0.25, what="the page"):
@@ -175,35 +176,47 @@ def wait(driver, script, timeout=180, poll=0.25, what="the page"):
     raise TimeoutError(f"waited {timeout} s for {what}; last: {last!r}")
 
 
-#: JavaScript: close the notebook ``arguments[0]`` the page shows, if it is saved, and open
-#: it again as the file browser does; true when done
-_REOPEN = """
+#: JavaScript: close the documents the page shows (``arguments[1]``: only the notebook
+#: ``arguments[0]``, and only if it is saved; else all, what they hold unsaved left behind as
+#: a new page leaves it) and open ``arguments[0]`` as the file browser does; true when done
+_OPEN_IN_PAGE = """
 const done = arguments[arguments.length - 1];
+const [path, again] = [arguments[0], arguments[1]];
 const app = window.jupyterapp;
-const w = app && Array.from(app.shell.widgets('main'))
-  .find((w) => w.context && w.context.path === arguments[0]);
-if (!w || w.context.model.dirty) { done(false); return; }
+if (!app || !app.shell) { done(false); return; }
+const docs = Array.from(app.shell.widgets('main')).filter((w) => w.context);
+const mine = docs.filter((w) => w.context.path === path);
+if (again && (!mine.length || mine.some((w) => w.context.model.dirty))) { done(false); return; }
+const closing = again ? mine : docs;
+for (const w of closing) { w.context.model.dirty = false; w.close(); }
 const t0 = Date.now();
-w.close();
-const opened = () => app.commands.execute('docmanager:open', {path: arguments[0]})
+const opened = () => app.commands.execute('docmanager:open', {path})
   .then(() => done(true), () => done(false));
-const closed = () => w.isDisposed ? opened()
+const closed = () => closing.every((w) => w.isDisposed) ? opened()
   : (Date.now() - t0 > 30000 ? done(false) : setTimeout(closed, 50));
 closed();
 """
 
 
-def open_notebook(driver, base, token, path, again=False):
+def open_notebook(driver, base, token, path, again=False, in_page=False):
     """Open ``path`` (relative to the server's folder) in JupyterLab, in a fresh
     workspace (nothing of an earlier session restored), and wait until its
-    kernel is idle. With ``again``, a notebook the page shows, saved, is closed and
-    opened again as the file browser opens it, JupyterLab not loaded again (its kernel
-    is its session's, as in a new page)."""
+    kernel is idle. JupyterLab is not loaded again when the page shows this server's
+    JupyterLab at the browser's size: with ``again``, the notebook ``path``, saved, is
+    closed and opened again as the file browser opens it; with ``in_page``, every
+    document is closed (unsaved changes left behind, as a new page leaves them) and
+    ``path`` opened so. Its kernel is its session's, as in a new page."""
     import uuid
 
-    if not (again and driver.execute_async_script(_REOPEN, path)):
+    here = (
+        (again or in_page)
+        and not getattr(driver, "_accelab_resized", False)
+        and driver.current_url.startswith(f"{base}/lab")
+    )
+    if not (here and driver.execute_async_script(_OPEN_IN_PAGE, path, again)):
         space = f"t{uuid.uuid4().hex[:10]}"
         driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
+        driver._accelab_resized = False
     panel = (
         "(window.jupyterapp && Array.from(window.jupyterapp.shell.widgets('main'))"
         f".find((w) => w.sessionContext && w.context && w.context.path === {path!r}))"

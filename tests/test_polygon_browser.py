@@ -6,11 +6,12 @@ read off the page, the notebook saved, then graded by `accelab grade`.
   right as it is made; then the classic mistakes on the acceleration polygon (the
   wrong sense of A_A^n, the line of A_BA^t along the link), each named in the
   chapter's terms and marked on the canvas; undo; "Show the next step";
-* the same at 390 px with touch;
 * an assignment: the student's released notebook opened and run in JupyterLab, a
   right velocity polygon and a half-finished acceleration polygon drawn, the
   notebook saved; the saved notebook graded through `accelab grade` scores
-  exactly what was drawn right.
+  exactly what was drawn right;
+* the practice at 390 px with touch (last: the phone's page is the one test that
+  needs JupyterLab loaded at another size; the others share one page).
 
 Screenshots are kept in ``build/test-artifacts/polygon/`` (or
 ``$ACCELAB_ARTIFACTS``) and were looked at when these tests were written.
@@ -106,8 +107,8 @@ def shot(driver, name):
     driver.save_screenshot(str(ARTIFACTS / f"{name}.png"))
 
 
-def start(driver, base, token, path, again=False):
-    open_notebook(driver, base, token, path, again=again)
+def start(driver, base, token, path, again=False, in_page=False):
+    open_notebook(driver, base, token, path, again=again, in_page=in_page)
     command(driver, "notebook:run-all-cells", wait_for_it=False)
     wait(
         driver,
@@ -280,52 +281,6 @@ def test_practice_right_then_each_classic_mistake_with_a_mouse(server, folder, d
     assert not [e for e in console_errors(d) if "polygon" in e.lower()]
 
 
-def test_practice_on_a_phone_with_a_finger(server, folder, driver):
-    base, token = server
-    (folder / STORE).unlink(missing_ok=True)
-    task = task_of_case(EXAMPLE_7_1)
-    d = driver
-    resize(d, 390)
-    start(d, base, token, "practice.ipynb")
-    root = find(d, "polygon-builder")
-    assert "narrow" in root.get_attribute("class")
-    assert "0/8" in find(d, "tab-velocity").text  # nothing kept from another session
-    width = d.execute_script(
-        "const r = arguments[0]; return [r.scrollWidth, r.clientWidth, "
-        "r.getBoundingClientRect().width];",
-        root,
-    )
-    assert width[0] <= width[1] + 1, width  # nothing sticks out sideways
-    canvas = find(d, "canvas").rect
-    assert canvas["width"] >= 250 and canvas["height"] >= 250
-    shot(d, "practice-start-390")
-    velocity_by_pointer(d, task.phase("velocity"), touch=True)
-    assert marks(d) == ["ok"] * 8, [message(d)]
-    shot(d, "practice-velocity-390")
-    # two fingers spread apart zoom in; the fit button brings the drawing back
-    canvas = find(d, "canvas")
-    before = zoom(d)
-    pinch = ActionBuilder(d)
-    one = pinch.add_pointer_input(interaction.POINTER_TOUCH, "one")
-    two = pinch.add_pointer_input(interaction.POINTER_TOUCH, "two")
-    one.create_pointer_move(origin=canvas, x=-20, y=0)
-    two.create_pointer_move(origin=canvas, x=20, y=0)
-    one.create_pointer_down()
-    two.create_pointer_down()
-    for k in range(1, 6):
-        one.create_pointer_move(origin=canvas, x=-20 - 8 * k, y=0, duration=30)
-        two.create_pointer_move(origin=canvas, x=20 + 8 * k, y=0, duration=30)
-    one.create_pointer_up(0)
-    two.create_pointer_up(0)
-    pinch.perform()
-    time.sleep(0.3)
-    assert zoom(d) == pytest.approx(3 * before, rel=0.1)
-    assert marks(d) == ["ok"] * 8  # a pinch draws nothing
-    click(d, "zoom-fit")
-    time.sleep(0.3)
-    shot(d, "practice-velocity-fit-390")
-
-
 @pytest.fixture(scope="module")
 def server(folder, course):
     """One JupyterLab for the module; its kernels know the student as ann (as
@@ -360,7 +315,8 @@ def test_an_assignment_drawn_saved_and_graded(folder, course, server, driver):
     vel, acc = task.phase("velocity"), task.phase("acceleration")
     d = driver
     resize(d, 1366)
-    start(d, base, token, "ann/A/A.ipynb")
+    # opened in the page of the test before, if it is there (its notebook closed)
+    start(d, base, token, "ann/A/A.ipynb", in_page=True)
     assert "judged when the assignment is graded" in find(d, "polygon-builder").text
     last = velocity_by_pointer(d, vel, touch=False, check=False)
     assert last[0] == "" and "judged when the assignment is graded" in last[1]
@@ -414,3 +370,49 @@ def test_an_assignment_drawn_saved_and_graded(folder, course, server, driver):
     assert "exact one" not in row["notes"]  # drawn by hand, not written in
     outcome = json.load(open(os.path.join(course, ".accelab", "outcomes", "A", "ann.json")))
     assert "4 of 12 steps" in outcome["verdicts"]["acceleration_polygon"]["message"]
+
+
+def test_practice_on_a_phone_with_a_finger(server, folder, driver):
+    base, token = server
+    (folder / STORE).unlink(missing_ok=True)
+    task = task_of_case(EXAMPLE_7_1)
+    d = driver
+    resize(d, 390)
+    start(d, base, token, "practice.ipynb")
+    root = find(d, "polygon-builder")
+    assert "narrow" in root.get_attribute("class")
+    assert "0/8" in find(d, "tab-velocity").text  # nothing kept from another session
+    width = d.execute_script(
+        "const r = arguments[0]; return [r.scrollWidth, r.clientWidth, "
+        "r.getBoundingClientRect().width];",
+        root,
+    )
+    assert width[0] <= width[1] + 1, width  # nothing sticks out sideways
+    canvas = find(d, "canvas").rect
+    assert canvas["width"] >= 250 and canvas["height"] >= 250
+    shot(d, "practice-start-390")
+    velocity_by_pointer(d, task.phase("velocity"), touch=True)
+    assert marks(d) == ["ok"] * 8, [message(d)]
+    shot(d, "practice-velocity-390")
+    # two fingers spread apart zoom in; the fit button brings the drawing back
+    canvas = find(d, "canvas")
+    before = zoom(d)
+    pinch = ActionBuilder(d)
+    one = pinch.add_pointer_input(interaction.POINTER_TOUCH, "one")
+    two = pinch.add_pointer_input(interaction.POINTER_TOUCH, "two")
+    one.create_pointer_move(origin=canvas, x=-20, y=0)
+    two.create_pointer_move(origin=canvas, x=20, y=0)
+    one.create_pointer_down()
+    two.create_pointer_down()
+    for k in range(1, 6):
+        one.create_pointer_move(origin=canvas, x=-20 - 8 * k, y=0, duration=30)
+        two.create_pointer_move(origin=canvas, x=20 + 8 * k, y=0, duration=30)
+    one.create_pointer_up(0)
+    two.create_pointer_up(0)
+    pinch.perform()
+    time.sleep(0.3)
+    assert zoom(d) == pytest.approx(3 * before, rel=0.1)
+    assert marks(d) == ["ok"] * 8  # a pinch draws nothing
+    click(d, "zoom-fit")
+    time.sleep(0.3)
+    shot(d, "practice-velocity-fit-390")
