@@ -300,7 +300,7 @@ def http_ok(url):
 TEST_PAGE_CONFIG = {"buildCheck": False, "buildAvailable": False}
 
 
-def test_config_dir():
+def extra_config_dir():
     """A Jupyter configuration folder, readable by every account, that holds the tests'
     page configuration (:data:`TEST_PAGE_CONFIG`); last on a server's JUPYTER_CONFIG_PATH,
     its keys merge with the role's (the guide's ``disabledExtensions`` stay as they are)."""
@@ -339,7 +339,7 @@ class Lab:
         extra = {"JUPYTERLAB_WORKSPACES_DIR": str(self.workspaces)}
         extra.update(env_extra or {})
         extra["JUPYTER_CONFIG_PATH"] = os.pathsep.join(
-            [str(d) for d in config_dirs] + [str(test_config_dir())]
+            [str(d) for d in config_dirs] + [str(extra_config_dir())]
         )
         if user:
             self.kw, self.env = as_account(user, extra)

@@ -40,6 +40,7 @@ from _lab import (
     click_menu,
     close,
     dismiss_toasts,
+    extra_config_dir,
     formgrader_modal,
     free_port,
     http_ok,
@@ -52,7 +53,6 @@ from _lab import (
     run_as,
     shared_venv,
     shot,
-    test_config_dir,
     tracebacks,
     type_into_cell,
     wait,
@@ -89,7 +89,7 @@ c.Spawner.args = ["--LabApp.expose_app_in_browser=True"]
 # the tests' page configuration after the role's (tests/_lab.py: no build check at each load)
 _role_config = c.Spawner.environment["JUPYTER_CONFIG_PATH"]
 c.Spawner.environment["JUPYTER_CONFIG_PATH"] = lambda spawner: (
-    _role_config(spawner) + ":{test_config}"
+    _role_config(spawner) + ":{extra_config}"
 )
 c.Spawner.start_timeout = 120
 c.Spawner.http_timeout = 120
@@ -211,7 +211,7 @@ def hub():
         proxy_port=free_port(),
         folder=HUB,
         password=PASSWORD,
-        test_config=test_config_dir(),
+        extra_config=extra_config_dir(),
     )
     (HUB / "jupyterhub_config.py").write_text(config)
     for role in ("student", "instructor"):
