@@ -73,7 +73,8 @@ PASSWORD = secrets.token_hex(8)
 
 #: what the test adds to the guide's hub configuration: where it listens and keeps its
 #: files, one password for everyone in place of PAM (the accounts have none), the page's
-#: app exposed for the test to read, and patience on a loaded machine
+#: app exposed for the test to read, the tests' page configuration (no build check at each
+#: page load: tests/_lab.py), and patience on a loaded machine
 TEST_ONLY = """
 # ---- added by tests/test_browser_hub.py to the guide's configuration above
 c.JupyterHub.ip = "127.0.0.1"
