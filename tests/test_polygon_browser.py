@@ -298,7 +298,7 @@ def course(tmp_path_factory, folder):
     roster.write_text("id\nann\n")
     subprocess.run(
         [sys.executable, "-m", "accelab", "assign", "--course", course, "--assignment", "A",
-         "--families", "polygon_fourbar", "--roster", str(roster), "--release",
+         "--families", "polygon_fourbar", "--roster", str(roster),
          "--due", "2040-01-01 00:00"],
         check=True, capture_output=True,
     )  # fmt: skip
