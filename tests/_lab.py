@@ -176,7 +176,17 @@ def run_as(name, args, env_extra=None, check=True, cwd=None):
 
 # ---------------------------------------------------------------- the shared environment
 #: what a clean copy of the checkout leaves out when the wheel is built from it
-NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache")
+NOT_SOURCE = (
+    ".venv",
+    "build",
+    ".git",
+    "*.egg-info",
+    "__pycache__",
+    ".pytest_cache",
+    ".mypy_cache",
+    ".ruff_cache",
+    ".hypothesis",
+)
 #: folders of the copy that do not go into the wheel (a change there installs nothing anew)
 NOT_PACKAGED = ("tests", "docs")
 
@@ -284,9 +294,37 @@ def http_ok(url):
         return False
 
 
+#: what the tests add to every JupyterLab's page configuration: no check, at each page load,
+#: whether JupyterLab's assets need a build (a node process and ~0.4 cpu-s of the server's
+#: each time; the environments' JupyterLab is built, nothing of the tests builds it)
+TEST_PAGE_CONFIG = {"buildCheck": False, "buildAvailable": False}
+
+
+def extra_config_dir():
+    """A Jupyter configuration folder, readable by every account, that holds the tests'
+    page configuration (:data:`TEST_PAGE_CONFIG`); last on a server's JUPYTER_CONFIG_PATH,
+    its keys merge with the role's (the guide's ``disabledExtensions`` stay as they are)."""
+    folder = SHARED / "lab-test-config"
+    page = folder / "labconfig" / "page_config.json"
+    if not page.exists() or json.loads(page.read_text()) != TEST_PAGE_CONFIG:
+        page.parent.mkdir(parents=True, exist_ok=True)
+        part = page.with_name(f".page_config.{os.getpid()}.json")
+        part.write_text(json.dumps(TEST_PAGE_CONFIG))
+        part.replace(page)
+        for path in (SHARED, folder, page.parent):
+            path.chmod(0o755)
+        page.chmod(0o644)
+    return folder
+
+
 class Lab:
     """A JupyterLab server (``jupyter lab``) of ``user`` (None: this process's account
-    and environment) serving ``root_dir``, started by the test."""
+    and environment) serving ``root_dir``, started by the test.
+
+    Its workspaces (the layout JupyterLab restores: which documents are open) are the
+    server's own, in a fresh folder: a page never restores what another test, or an
+    earlier run as the same account, left open (a notebook started a kernel, formgrader
+    loaded in its frame, before the test did anything)."""
 
     def __init__(self, root_dir, user=None, config_dirs=(), env_extra=None, log_name="lab"):
         self.root_dir = str(root_dir)
@@ -295,9 +333,14 @@ class Lab:
         self.token = secrets.token_hex(16)
         self.log_path = BUILD / "screenshots" / f"{log_name}.log"
         self.log_path.parent.mkdir(parents=True, exist_ok=True)
-        extra = dict(env_extra or {})
-        if config_dirs:
-            extra["JUPYTER_CONFIG_PATH"] = os.pathsep.join(str(d) for d in config_dirs)
+        self.workspaces = Path(tempfile.mkdtemp(prefix="accelab-lab-workspaces-"))
+        if user:
+            os.chown(self.workspaces, pwd.getpwnam(user).pw_uid, pwd.getpwnam(user).pw_gid)
+        extra = {"JUPYTERLAB_WORKSPACES_DIR": str(self.workspaces)}
+        extra.update(env_extra or {})
+        extra["JUPYTER_CONFIG_PATH"] = os.pathsep.join(
+            [str(d) for d in config_dirs] + [str(extra_config_dir())]
+        )
         if user:
             self.kw, self.env = as_account(user, extra)
             jupyter = str(SHARED_VENV / "bin" / "jupyter")
@@ -352,6 +395,7 @@ class Lab:
                 self.proc.wait(10)
         if self.proc:
             self._log.close()
+        shutil.rmtree(self.workspaces, ignore_errors=True)
 
 
 # ---------------------------------------------------------------- JupyterLab moves
@@ -383,9 +427,19 @@ def in_panel(driver, body, *args):
 
 
 def open_path(driver, lab, path):
-    """Open ``path`` (relative to the server's root) in JupyterLab, as a link does."""
-    driver.get(lab.url(f"lab/tree/{path}"))
-    lab_ready(driver)
+    """Open ``path`` (relative to the server's root) in JupyterLab: in the JupyterLab of
+    ``lab`` the page shows, as its file browser does (JupyterLab's ``docmanager:open``:
+    a document already open is brought to the front, as it is); else as a link does (the
+    page loaded with the path)."""
+    here = lab.url("lab").split("?")[0]
+    if driver.current_url.startswith(here) and driver.execute_script(
+        "return !!(window.jupyterapp && window.jupyterapp.shell)"
+    ):
+        lab_ready(driver)
+        command(driver, "docmanager:open", {"path": path})
+    else:
+        driver.get(lab.url(f"lab/tree/{path}"))
+        lab_ready(driver)
     driver._accelab_path = path
     wait(
         lambda: in_panel(

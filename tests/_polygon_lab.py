@@ -131,17 +131,34 @@ def browser(width=1366, height=1000):
     )
     driver.set_page_load_timeout(90)
     driver.set_script_timeout(180)
+    driver._accelab_size = (width, height)
+    if width < 500:
+        resize(driver, width, height)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def resize(driver, width=1366, height=1000):
+    """Make the browser ``width`` CSS px wide (a phone below 500 px: its screen emulated,
+    390 px at twice the pixels, with touch), as :func:`browser` opens it; the page shown
+    takes the new size when it is loaded again."""
+    if (width, height) == getattr(driver, "_accelab_size", None) and width >= 500:
+        return
+    driver.set_window_size(max(width, 500), height)
     if width < 500:
         driver.execute_cdp_cmd(
             "Emulation.setDeviceMetricsOverride",
             {"width": width, "height": 844, "deviceScaleFactor": 2, "mobile": True},
         )
         driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True})
-    try:
-        yield driver
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+    else:
+        driver.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+        driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": False})
+    driver._accelab_size = (width, height)
+    driver._accelab_resized = True  # the page shown is of the size before
 
 
 def wait(driver, script, timeout=180, poll=0.25, what="the page"):
@@ -159,14 +176,47 @@ def wait(driver, script, timeout=180, poll=0.25, what="the page"):
     raise TimeoutError(f"waited {timeout} s for {what}; last: {last!r}")
 
 
-def open_notebook(driver, base, token, path):
+#: JavaScript: close the documents the page shows (``arguments[1]``: only the notebook
+#: ``arguments[0]``, and only if it is saved; else all, what they hold unsaved left behind as
+#: a new page leaves it) and open ``arguments[0]`` as the file browser does; true when done
+_OPEN_IN_PAGE = """
+const done = arguments[arguments.length - 1];
+const [path, again] = [arguments[0], arguments[1]];
+const app = window.jupyterapp;
+if (!app || !app.shell) { done(false); return; }
+const docs = Array.from(app.shell.widgets('main')).filter((w) => w.context);
+const mine = docs.filter((w) => w.context.path === path);
+if (again && (!mine.length || mine.some((w) => w.context.model.dirty))) { done(false); return; }
+const closing = again ? mine : docs;
+for (const w of closing) { w.context.model.dirty = false; w.close(); }
+const t0 = Date.now();
+const opened = () => app.commands.execute('docmanager:open', {path})
+  .then(() => done(true), () => done(false));
+const closed = () => closing.every((w) => w.isDisposed) ? opened()
+  : (Date.now() - t0 > 30000 ? done(false) : setTimeout(closed, 50));
+closed();
+"""
+
+
+def open_notebook(driver, base, token, path, again=False, in_page=False):
     """Open ``path`` (relative to the server's folder) in JupyterLab, in a fresh
     workspace (nothing of an earlier session restored), and wait until its
-    kernel is idle."""
+    kernel is idle. JupyterLab is not loaded again when the page shows this server's
+    JupyterLab at the browser's size: with ``again``, the notebook ``path``, saved, is
+    closed and opened again as the file browser opens it; with ``in_page``, every
+    document is closed (unsaved changes left behind, as a new page leaves them) and
+    ``path`` opened so. Its kernel is its session's, as in a new page."""
     import uuid
 
-    space = f"t{uuid.uuid4().hex[:10]}"
-    driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
+    here = (
+        (again or in_page)
+        and not getattr(driver, "_accelab_resized", False)
+        and driver.current_url.startswith(f"{base}/lab")
+    )
+    if not (here and driver.execute_async_script(_OPEN_IN_PAGE, path, again)):
+        space = f"t{uuid.uuid4().hex[:10]}"
+        driver.get(f"{base}/lab/workspaces/{space}/tree/{path}?token={token}&reset")
+        driver._accelab_resized = False
     panel = (
         "(window.jupyterapp && Array.from(window.jupyterapp.shell.widgets('main'))"
         f".find((w) => w.sessionContext && w.context && w.context.path === {path!r}))"

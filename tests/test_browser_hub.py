@@ -40,6 +40,7 @@ from _lab import (
     click_menu,
     close,
     dismiss_toasts,
+    extra_config_dir,
     formgrader_modal,
     free_port,
     http_ok,
@@ -72,7 +73,8 @@ PASSWORD = secrets.token_hex(8)
 
 #: what the test adds to the guide's hub configuration: where it listens and keeps its
 #: files, one password for everyone in place of PAM (the accounts have none), the page's
-#: app exposed for the test to read, and patience on a loaded machine
+#: app exposed for the test to read, the tests' page configuration (no build check at each
+#: page load: tests/_lab.py), and patience on a loaded machine
 TEST_ONLY = """
 # ---- added by tests/test_browser_hub.py to the guide's configuration above
 c.JupyterHub.ip = "127.0.0.1"
@@ -85,6 +87,11 @@ c.ConfigurableHTTPProxy.pid_file = "{folder}/proxy.pid"
 c.JupyterHub.authenticator_class = "dummy"
 c.DummyAuthenticator.password = {password!r}
 c.Spawner.args = ["--LabApp.expose_app_in_browser=True"]
+# the tests' page configuration after the role's (tests/_lab.py: no build check at each load)
+_role_config = c.Spawner.environment["JUPYTER_CONFIG_PATH"]
+c.Spawner.environment["JUPYTER_CONFIG_PATH"] = lambda spawner: (
+    _role_config(spawner) + ":{extra_config}"
+)
 c.Spawner.start_timeout = 120
 c.Spawner.http_timeout = 120
 """
@@ -205,6 +212,7 @@ def hub():
         proxy_port=free_port(),
         folder=HUB,
         password=PASSWORD,
+        extra_config=extra_config_dir(),
     )
     (HUB / "jupyterhub_config.py").write_text(config)
     for role in ("student", "instructor"):
