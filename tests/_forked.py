@@ -59,6 +59,7 @@ def _accelab(argv):
 def _nbgrader(argv):
     from nbgrader.apps.nbgraderapp import NbGraderApp
 
+    NbGraderApp.clear_instance()  # a new process has none
     NbGraderApp.launch_instance(argv=list(argv))
     return 0
 

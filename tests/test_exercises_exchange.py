@@ -19,10 +19,10 @@ import os
 import re
 import shutil
 import stat
-import subprocess
 import sys
 import time
 
+import _forked as forked
 import nbformat
 import pytest
 from _accounts import PREFIX, account, class_folder, home_of, nbgrader_as, python_as, remove
@@ -41,22 +41,24 @@ MARKUP = "<img src=x onerror=alert(1)>"
 NOT_UTF8 = os.fsdecode(b"m\xffx")
 
 
-def run(args, cwd, check=True):
+def run(program, args, cwd, check=True):
+    """The instructor's ``PROGRAM ARGS`` (accelab or nbgrader) in ``cwd``, in a process of
+    its own (forked from this one: tests/_forked.py)."""
     env = dict(os.environ)
     env.pop("JUPYTERHUB_USER", None)
     env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
-    proc = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
+    proc = forked.run(list(args), env=env, cwd=cwd, program=program)
     if check:
         assert proc.returncode == 0, (args, proc.stdout[-2000:], proc.stderr[-3000:])
     return proc
 
 
 def instructor(*args, cwd):
-    return run([sys.executable, "-m", "nbgrader", *args], cwd)
+    return run("nbgrader", args, cwd)
 
 
 def accelab(*args, cwd, check=True):
-    return run([sys.executable, "-m", "accelab", *args], cwd, check=check)
+    return run("accelab", args, cwd, check=check)
 
 
 def student_home(sid, base, exchange):
