@@ -28,14 +28,17 @@ import tempfile
 import time
 
 
-def _warm():
-    """Import what every accelab command and nbgrader run imports, once, in the test's
-    process (each fork then starts with it)."""
-    import nbgrader.apps.api
-    import nbgrader.apps.nbgraderapp  # noqa: F401
-
+def _warm(program, argv):
+    """Import, once, in the test's process, what the command imports (each fork then starts
+    with it): accelab's command line; nbgrader's gradebook and apps for the commands that
+    use them (``accelab grade``, ``accelab assign``, nbgrader's own)."""
     import accelab.cli  # noqa: F401
-    from accelab.exercises.grader import grade  # noqa: F401
+
+    if program == "nbgrader" or (argv and argv[0] in ("grade", "assign")):
+        import nbgrader.apps.api
+        import nbgrader.apps.nbgraderapp  # noqa: F401
+
+        from accelab.exercises.grader import grade  # noqa: F401
 
 
 def _fresh_state():
@@ -118,7 +121,7 @@ class Forked:
     with ``stdout=PIPE, stderr=PIPE, text=True``."""
 
     def __init__(self, argv, env=None, cwd=None, program="accelab"):
-        _warm()
+        _warm(program, list(argv))
         self.args = [program, *argv]
         self.returncode = None
         self._out = tempfile.TemporaryFile()
