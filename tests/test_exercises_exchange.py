@@ -121,6 +121,23 @@ except OSError as exc:
 print(out)
 """
 
+#: mal's three hand-ins under other names: ``nbgrader submit A --student CLAIM`` for each,
+#: nbgrader's command run three times in one process of mal's (as nbgrader's own tests run
+#: it: initialize, start, reset), not three interpreters each importing nbgrader
+SUBMITS = """
+from jupyter_core.application import NoStart
+from nbgrader.apps.nbgraderapp import NbGraderApp
+for claim in {claims!r}:
+    app = NbGraderApp.instance()
+    try:
+        app.initialize(["submit", "A", "--student", claim])
+        app.start()
+    except NoStart:
+        pass
+    finally:
+        app.reset()
+"""
+
 #: what eve does by hand: an inbound folder named an hour before the due date
 HANDMADE = """
 import os, shutil
@@ -174,8 +191,7 @@ def _term(base):
         nbgrader_as(ACCOUNTS[sid], "submit", "A", cwd=homes[sid])
     # mal: wrong answers, handed in under bob's id, a markup id and bytes that are not UTF-8
     work(homes["mal"], "bob", course, wrong=True)
-    for claim in ("bob", MARKUP, NOT_UTF8):
-        nbgrader_as(ACCOUNTS["mal"], "submit", "A", "--student", claim, cwd=homes["mal"])
+    python_as(ACCOUNTS["mal"], SUBMITS.format(claims=("bob", MARKUP, NOT_UTF8)), cwd=homes["mal"])
     probe = python_as(
         ACCOUNTS["mal"],
         PROBE.format(course=course, inbound=inbound, exchange=exchange),
