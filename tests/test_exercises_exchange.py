@@ -83,11 +83,16 @@ def given(home, sid, released):
         os.chown(path, uid, gid)
 
 
+def answers(course, sid):
+    """Answer-cell code for student ``sid`` (name -> code), from the published variant."""
+    return answers_code(json.loads(json.dumps(variant_json(course, "A", sid))))
+
+
 def work(home, sid, course, wrong=False):
     """The student writes answers in the fetched notebook's answer cells."""
     path = os.path.join(home, "A", "A.ipynb")
     nb = nbformat.read(path, as_version=4)
-    code = answers_code(json.loads(json.dumps(variant_json(course, "A", sid))))
+    code = answers(course, sid)
     for cell in nb.cells:
         gid = cell.metadata.get("nbgrader", {}).get("grade_id", "")
         name = gid[len("answer_") :]
@@ -121,22 +126,48 @@ except OSError as exc:
 print(out)
 """
 
-#: mal's three hand-ins under other names: ``nbgrader submit A --student CLAIM`` for each,
-#: nbgrader's command run three times in one process of mal's (as nbgrader's own tests run
-#: it: initialize, start, reset), not three interpreters each importing nbgrader
-SUBMITS = """
+#: nbgrader's command run in a student's process as nbgrader's own tests run it (initialize,
+#: start, reset): several commands of one account in one interpreter, not one each
+NBGRADER_HERE = """
 from jupyter_core.application import NoStart
 from nbgrader.apps.nbgraderapp import NbGraderApp
-for claim in {claims!r}:
+def nbgrader(*args):
     app = NbGraderApp.instance()
     try:
-        app.initialize(["submit", "A", "--student", claim])
+        app.initialize(list(args))
         app.start()
     except NoStart:
         pass
     finally:
         app.reset()
 """
+
+#: mal's three hand-ins under other names: ``nbgrader submit A --student CLAIM`` for each
+SUBMITS = (
+    NBGRADER_HERE
+    + """
+for claim in {claims!r}:
+    nbgrader("submit", "A", "--student", claim)
+"""
+)
+
+#: an honest student's term: ``nbgrader fetch_assignment A``, the answers written into the
+#: fetched notebook's answer cells, ``nbgrader submit A``
+FETCH_WORK_SUBMIT = (
+    NBGRADER_HERE
+    + """
+import nbformat
+nbgrader("fetch_assignment", "A")
+nb = nbformat.read("A/A.ipynb", as_version=4)
+code = {code!r}
+for cell in nb.cells:
+    gid = cell.metadata.get("nbgrader", {{}}).get("grade_id", "")
+    if gid.startswith("answer_") and gid[len("answer_"):] in code:
+        cell.source = code[gid[len("answer_"):]]
+nbformat.write(nb, "A/A.ipynb")
+nbgrader("submit", "A")
+"""
+)
 
 #: what eve does by hand: an inbound folder named an hour before the due date
 HANDMADE = """
@@ -182,13 +213,11 @@ def _term(base):
         fh.write("c.LateSubmissionPlugin.penalty_method = 'zero'\n")
     inbound = os.path.join(exchange, "mech101", "inbound")
     homes = {s: student_home(s, base, exchange) for s in ACCOUNTS}
-    for sid in ("ann", "bob"):
-        nbgrader_as(ACCOUNTS[sid], "fetch_assignment", "A", cwd=homes[sid])
+    for sid in ("ann", "bob"):  # fetch, answer and hand in, as the student
+        code = FETCH_WORK_SUBMIT.format(code=answers(course, sid))
+        python_as(ACCOUNTS[sid], code, cwd=homes[sid])
     for sid in ("mal", "lee", "eve"):  # the same notebook, without the time nbgrader takes
         given(homes[sid], sid, os.path.join(exchange, "mech101", "outbound", "A", "A.ipynb"))
-    for sid in ("ann", "bob"):
-        work(homes[sid], sid, course)
-        nbgrader_as(ACCOUNTS[sid], "submit", "A", cwd=homes[sid])
     # mal: wrong answers, handed in under bob's id, a markup id and bytes that are not UTF-8
     work(homes["mal"], "bob", course, wrong=True)
     python_as(ACCOUNTS["mal"], SUBMITS.format(claims=("bob", MARKUP, NOT_UTF8)), cwd=homes["mal"])
