@@ -11,8 +11,8 @@ did anything (``accelab assign`` runs generate_assignment, and release_assignmen
 (``initialize``, ``start``, ``reset``); its converters change the working folder
 themselves (``BaseConverter.start``). Here the working folder is the course folder for
 the run's duration (one run at a time in this process), and what nbgrader changes of
-the process (``sys.path``, where it puts its working folder; the application
-singletons) is put back afterwards.
+the process (the working folder it puts first on ``sys.path``, the application
+singletons) is undone afterwards.
 """
 
 import contextlib
@@ -37,9 +37,11 @@ def nbgrader_here(course_dir, *args):
     out, err = io.StringIO(), io.StringIO()
     status = 0
     with _ONE_AT_A_TIME:
-        cwd, path, hook = os.getcwd(), list(sys.path), sys.excepthook
+        cwd, hook = os.getcwd(), sys.excepthook
+        folder = os.path.realpath(course_dir)  # what os.getcwd() gives there
+        before = sys.path.count(folder)
         try:
-            os.chdir(course_dir)
+            os.chdir(folder)
             with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
                 NbGraderApp.clear_instance()
                 app = NbGraderApp.instance()  # its log goes to the stderr set here
@@ -59,7 +61,8 @@ def nbgrader_here(course_dir, *args):
                     app.reset()
         finally:
             os.chdir(cwd)
-            sys.path[:] = path
+            while sys.path.count(folder) > before:  # nbgrader's apps put it first, each
+                sys.path.remove(folder)
             sys.excepthook = hook
     return subprocess.CompletedProcess(["nbgrader", *args], status, out.getvalue(), err.getvalue())
 

@@ -19,6 +19,7 @@ import os
 import shutil
 import signal
 import subprocess
+import sys
 import time
 
 import _forked as forked
@@ -37,8 +38,13 @@ STUDENTS = ["ann", "bob", "cy"]
 
 
 def build(course):
-    """An ungraded course: rotation only; bob gets one answer wrong."""
+    """An ungraded course: rotation only; bob gets one answer wrong. (assign runs nbgrader's
+    generate_assignment and release_assignment in this process, and leaves its working
+    folder and import path as they were.)"""
+    cwd = os.getcwd()
     assign(course, "A", ["rotation"], roster=STUDENTS, course_id="faults", release=True, say=print)
+    assert os.getcwd() == cwd
+    assert not [p for p in sys.path if p.startswith(os.path.dirname(course))], sys.path
     spec = read_spec(course, "A")
     for s in STUDENTS:
         code = key_code(spec, s)
@@ -481,6 +487,7 @@ def _snapshot(course):
 def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, tmp_path):
     course, tmp = course_from(reference, tmp_path, "graded")
     before = _snapshot(course)
+    cwd = os.getcwd()
     proc = accelab_here(
         "assign",
         "--course",
@@ -494,6 +501,8 @@ def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, t
     )
     assert proc.returncode == 2, proc.stderr
     assert "Nothing was changed" in proc.stderr and "nbgrader db assignment remove" in proc.stderr
+    assert os.getcwd() == cwd  # nbgrader ran in this process, in the staged course
+    assert not [p for p in sys.path if p.startswith(course)], sys.path
     assert "Traceback" not in proc.stderr
     assert _snapshot(course) == before
     assert [f for f in os.listdir(os.path.join(course, ".accelab")) if "staging" in f] == []
