@@ -24,7 +24,7 @@ import tempfile
 from urllib.parse import quote
 
 from .files import fault, write_atomic
-from .nbgrader_course import nbgrader
+from .nbgrader_run import nbgrader_here
 
 JOURNAL = "swap.json"
 #: the course's own records an assignment's build reads and adds to (the roster,
@@ -71,16 +71,16 @@ def _nbgrader_error(args, proc):
 def run_nbgrader(root, *args):
     """``nbgrader ARGS`` on the course at ``root`` (its root and gradebook given
     on the command line, so that a configuration that names paths of its own
-    cannot send the build into the real course). Raises a translated error."""
+    cannot send the build into the real course), run in this process as the
+    command runs it (:mod:`.nbgrader_run`). Raises a translated error."""
     from .assign import AssignError
 
     root = os.path.abspath(root)
-    proc = nbgrader(
+    proc = nbgrader_here(
         root,
         *args,
         f"--CourseDirectory.root={root}",
         "--CourseDirectory.db_url=sqlite:///" + os.path.join(root, "gradebook.db"),
-        check=False,
     )
     if proc.returncode == 0:
         return proc

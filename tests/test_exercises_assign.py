@@ -1,24 +1,22 @@
 """`accelab assign` and `accelab demo` on the instructor's side: every roster
-student checked, an assignment with submissions protected, the demo's folder."""
+student checked, an assignment with submissions protected, the demo's folder.
+The commands run as processes of their own, forked from this one (tests/_forked.py)."""
 
 import json
 import os
-import subprocess
-import sys
+
+import _forked as forked
 
 from accelab.exercises.assign import AssignError, assign
 from accelab.exercises.simulate import key_code, submit
-
-ACCELAB = [sys.executable, "-m", "accelab"]
 
 
 def test_assign_checks_every_roster_student_and_says_which_fails(tmp_path):
     course = str(tmp_path / "c")
     roster = tmp_path / "roster.csv"
     roster.write_text("id\nann\nbob\n")
-    proc = subprocess.run(
+    proc = forked.run(
         [
-            *ACCELAB,
             "assign",
             "--course",
             course,
@@ -31,9 +29,7 @@ def test_assign_checks_every_roster_student_and_says_which_fails(tmp_path):
             "--ranges",
             json.dumps({"fourbar": {"a": [20, 20], "b": [1, 1], "c": [1, 1], "d": [3, 3]}}),
             "--no-generate",
-        ],
-        capture_output=True,
-        text=True,
+        ]
     )
     assert proc.returncode == 2
     assert "gets no valid problem" in proc.stderr and "widen the ranges" in proc.stderr
@@ -71,8 +67,6 @@ def test_demo_never_deletes_a_folder_it_did_not_make(tmp_path):
     folder = tmp_path / "mine"
     folder.mkdir()
     (folder / "thesis.tex").write_text("years of work")
-    proc = subprocess.run(
-        [*ACCELAB, "demo", "--course", str(folder)], capture_output=True, text=True
-    )
+    proc = forked.run(["demo", "--course", str(folder)])
     assert proc.returncode == 2 and "was not made by accelab demo" in proc.stderr
     assert (folder / "thesis.tex").read_text() == "years of work"

@@ -19,10 +19,10 @@ import os
 import re
 import shutil
 import stat
-import subprocess
 import sys
 import time
 
+import _forked as forked
 import nbformat
 import pytest
 from _accounts import PREFIX, account, class_folder, home_of, nbgrader_as, python_as, remove
@@ -41,22 +41,24 @@ MARKUP = "<img src=x onerror=alert(1)>"
 NOT_UTF8 = os.fsdecode(b"m\xffx")
 
 
-def run(args, cwd, check=True):
+def run(program, args, cwd, check=True):
+    """The instructor's ``PROGRAM ARGS`` (accelab or nbgrader) in ``cwd``, in a process of
+    its own (forked from this one: tests/_forked.py)."""
     env = dict(os.environ)
     env.pop("JUPYTERHUB_USER", None)
     env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
-    proc = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
+    proc = forked.run(list(args), env=env, cwd=cwd, program=program)
     if check:
         assert proc.returncode == 0, (args, proc.stdout[-2000:], proc.stderr[-3000:])
     return proc
 
 
 def instructor(*args, cwd):
-    return run([sys.executable, "-m", "nbgrader", *args], cwd)
+    return run("nbgrader", args, cwd)
 
 
 def accelab(*args, cwd, check=True):
-    return run([sys.executable, "-m", "accelab", *args], cwd, check=check)
+    return run("accelab", args, cwd, check=check)
 
 
 def student_home(sid, base, exchange):
@@ -81,11 +83,16 @@ def given(home, sid, released):
         os.chown(path, uid, gid)
 
 
+def answers(course, sid):
+    """Answer-cell code for student ``sid`` (name -> code), from the published variant."""
+    return answers_code(json.loads(json.dumps(variant_json(course, "A", sid))))
+
+
 def work(home, sid, course, wrong=False):
     """The student writes answers in the fetched notebook's answer cells."""
     path = os.path.join(home, "A", "A.ipynb")
     nb = nbformat.read(path, as_version=4)
-    code = answers_code(json.loads(json.dumps(variant_json(course, "A", sid))))
+    code = answers(course, sid)
     for cell in nb.cells:
         gid = cell.metadata.get("nbgrader", {}).get("grade_id", "")
         name = gid[len("answer_") :]
@@ -118,6 +125,49 @@ except OSError as exc:
     out.append(("outbound", type(exc).__name__))
 print(out)
 """
+
+#: nbgrader's command run in a student's process as nbgrader's own tests run it (initialize,
+#: start, reset): several commands of one account in one interpreter, not one each
+NBGRADER_HERE = """
+from jupyter_core.application import NoStart
+from nbgrader.apps.nbgraderapp import NbGraderApp
+def nbgrader(*args):
+    app = NbGraderApp.instance()
+    try:
+        app.initialize(list(args))
+        app.start()
+    except NoStart:
+        pass
+    finally:
+        app.reset()
+"""
+
+#: mal's three hand-ins under other names: ``nbgrader submit A --student CLAIM`` for each
+SUBMITS = (
+    NBGRADER_HERE
+    + """
+for claim in {claims!r}:
+    nbgrader("submit", "A", "--student", claim)
+"""
+)
+
+#: an honest student's term: ``nbgrader fetch_assignment A``, the answers written into the
+#: fetched notebook's answer cells, ``nbgrader submit A``
+FETCH_WORK_SUBMIT = (
+    NBGRADER_HERE
+    + """
+import nbformat
+nbgrader("fetch_assignment", "A")
+nb = nbformat.read("A/A.ipynb", as_version=4)
+code = {code!r}
+for cell in nb.cells:
+    gid = cell.metadata.get("nbgrader", {{}}).get("grade_id", "")
+    if gid.startswith("answer_") and gid[len("answer_"):] in code:
+        cell.source = code[gid[len("answer_"):]]
+nbformat.write(nb, "A/A.ipynb")
+nbgrader("submit", "A")
+"""
+)
 
 #: what eve does by hand: an inbound folder named an hour before the due date
 HANDMADE = """
@@ -163,17 +213,14 @@ def _term(base):
         fh.write("c.LateSubmissionPlugin.penalty_method = 'zero'\n")
     inbound = os.path.join(exchange, "mech101", "inbound")
     homes = {s: student_home(s, base, exchange) for s in ACCOUNTS}
-    for sid in ("ann", "bob"):
-        nbgrader_as(ACCOUNTS[sid], "fetch_assignment", "A", cwd=homes[sid])
+    for sid in ("ann", "bob"):  # fetch, answer and hand in, as the student
+        code = FETCH_WORK_SUBMIT.format(code=answers(course, sid))
+        python_as(ACCOUNTS[sid], code, cwd=homes[sid])
     for sid in ("mal", "lee", "eve"):  # the same notebook, without the time nbgrader takes
         given(homes[sid], sid, os.path.join(exchange, "mech101", "outbound", "A", "A.ipynb"))
-    for sid in ("ann", "bob"):
-        work(homes[sid], sid, course)
-        nbgrader_as(ACCOUNTS[sid], "submit", "A", cwd=homes[sid])
     # mal: wrong answers, handed in under bob's id, a markup id and bytes that are not UTF-8
     work(homes["mal"], "bob", course, wrong=True)
-    for claim in ("bob", MARKUP, NOT_UTF8):
-        nbgrader_as(ACCOUNTS["mal"], "submit", "A", "--student", claim, cwd=homes["mal"])
+    python_as(ACCOUNTS["mal"], SUBMITS.format(claims=("bob", MARKUP, NOT_UTF8)), cwd=homes["mal"])
     probe = python_as(
         ACCOUNTS["mal"],
         PROBE.format(course=course, inbound=inbound, exchange=exchange),

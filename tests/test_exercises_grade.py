@@ -19,6 +19,7 @@ import subprocess
 import sys
 import time
 
+import _forked as forked
 import nbformat
 import pytest
 from _exercises_helpers import answers_code
@@ -33,13 +34,13 @@ from accelab.exercises.simulate import key_code, submit
 pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("grade")]  # one course graded, once
 
 SECRET = "s3cr3t-instructor-token-4711"
-ACCELAB = [sys.executable, "-m", "accelab"]
 CELL_SECONDS, TOTAL_SECONDS = 3, 20
 HONEST = ["ann", "bob"]
 
 
 def accelab(*args, env=None, check=True):
-    proc = subprocess.run([*ACCELAB, *args], capture_output=True, text=True, env=env)
+    """``accelab ARGS`` in a process of its own (forked from this one: tests/_forked.py)."""
+    proc = forked.run(list(args), env=env)
     if check:
         assert proc.returncode == 0, proc.stderr
     return proc

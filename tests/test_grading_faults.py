@@ -22,6 +22,7 @@ import subprocess
 import sys
 import time
 
+import _forked as forked
 import pytest
 from nbformat.v4 import new_code_cell
 
@@ -33,13 +34,17 @@ from accelab.exercises.simulate import key_code, submit
 #: one worker builds and grades the reference course (the module fixture), once
 pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("faults")]
 
-ACCELAB = [sys.executable, "-m", "accelab"]
 STUDENTS = ["ann", "bob", "cy"]
 
 
 def build(course):
-    """An ungraded course: rotation only; bob gets one answer wrong."""
+    """An ungraded course: rotation only; bob gets one answer wrong. (assign runs nbgrader's
+    generate_assignment and release_assignment in this process, and leaves its working
+    folder and import path as they were.)"""
+    cwd = os.getcwd()
     assign(course, "A", ["rotation"], roster=STUDENTS, course_id="faults", release=True, say=print)
+    assert os.getcwd() == cwd
+    assert not [p for p in sys.path if p.startswith(os.path.dirname(course))], sys.path
     spec = read_spec(course, "A")
     for s in STUDENTS:
         code = key_code(spec, s)
@@ -75,11 +80,11 @@ def grader_env(tmp, fault=None):
 
 
 def run(course, *args, fault=None, tmp, timeout=300):
+    """``accelab grade`` in a process of its own (forked: tests/_forked.py), with
+    TMPDIR ``tmp`` and ``fault`` injected."""
     env = grader_env(tmp, fault)
-    return subprocess.run(
-        [*ACCELAB, "grade", "--course", str(course), "--assignment", "A", "--quiet", *args],
-        capture_output=True,
-        text=True,
+    return forked.run(
+        ["grade", "--course", str(course), "--assignment", "A", "--quiet", *args],
         env=env,
         timeout=timeout,
     )
@@ -277,12 +282,8 @@ def test_a_kill_at_any_stage_is_finished_by_running_again(reference, tmp_path):
 def test_ctrl_c_stops_at_once_keeps_nothing_partial_and_says_how_to_finish(reference, tmp_path):
     course, tmp = course_from(reference, tmp_path)
     slow_down(course, STUDENTS[-1], 8)
-    proc = subprocess.Popen(
-        [*ACCELAB, "grade", "--course", course, "--assignment", "A", "--jobs", "1"],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        env=grader_env(tmp),
+    proc = forked.Forked(
+        ["grade", "--course", course, "--assignment", "A", "--jobs", "1"], env=grader_env(tmp)
     )
     state = os.path.join(course, ".accelab", "state", "A")
     deadline = time.monotonic() + 120
@@ -318,11 +319,8 @@ def test_ctrl_c_stops_at_once_keeps_nothing_partial_and_says_how_to_finish(refer
 def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(reference, tmp_path):
     course, tmp = course_from(reference, tmp_path)
     slow_down(course, STUDENTS[0], 8)
-    first = subprocess.Popen(
-        [*ACCELAB, "grade", "--course", course, "--assignment", "A", "--jobs", "1", "--quiet"],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
+    first = forked.Forked(
+        ["grade", "--course", course, "--assignment", "A", "--jobs", "1", "--quiet"],
         env=grader_env(tmp),
     )
     lock = os.path.join(course, ".accelab", "lock")
@@ -342,9 +340,7 @@ def test_a_second_grader_or_assign_is_refused_while_nbgrader_export_works(refere
         "assign", "--course", course, "--assignment", "B", "--families", "rotation"
     )
     assert again.returncode == 2 and "is busy" in again.stderr, again.stderr
-    export = subprocess.run(
-        [sys.executable, "-m", "nbgrader", "export"], cwd=course, capture_output=True, text=True
-    )
+    export = forked.run(["export"], cwd=course, program="nbgrader")
     assert export.returncode == 0, export.stderr[-2000:]
     out, err = first.communicate(timeout=300)
     assert first.returncode == 0, err
@@ -491,6 +487,7 @@ def _snapshot(course):
 def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, tmp_path):
     course, tmp = course_from(reference, tmp_path, "graded")
     before = _snapshot(course)
+    cwd = os.getcwd()
     proc = accelab_here(
         "assign",
         "--course",
@@ -504,6 +501,8 @@ def test_a_failing_assign_force_leaves_the_course_exactly_as_it_was(reference, t
     )
     assert proc.returncode == 2, proc.stderr
     assert "Nothing was changed" in proc.stderr and "nbgrader db assignment remove" in proc.stderr
+    assert os.getcwd() == cwd  # nbgrader ran in this process, in the staged course
+    assert not [p for p in sys.path if p.startswith(course)], sys.path
     assert "Traceback" not in proc.stderr
     assert _snapshot(course) == before
     assert [f for f in os.listdir(os.path.join(course, ".accelab")) if "staging" in f] == []
@@ -519,12 +518,7 @@ def test_an_assign_killed_while_it_swaps_is_finished_by_the_next_command(referen
     course, _ = course_from(reference, tmp_path, "graded")
     env = dict(os.environ, ACCELAB_FAULT="kill:assign-swapping")
     args = ["--course", course, "--assignment", "A", "--families", "rotation"]
-    proc = subprocess.run(
-        [*ACCELAB, "assign", *args, "--units", "SI", "--force"],
-        capture_output=True,
-        text=True,
-        env=env,
-    )
+    proc = forked.run(["assign", *args, "--units", "SI", "--force"], env=env)
     assert proc.returncode == -signal.SIGKILL, proc.stderr
     with course_lock(course, "test"):
         recover(course)

@@ -16,9 +16,8 @@ import json
 import math
 import os
 import re
-import subprocess
-import sys
 
+import _forked as forked
 import nbformat
 import pytest
 
@@ -36,7 +35,8 @@ FAMILIES = ["polygon_fourbar", "polygon_slidercrank", "polygon_coriolis"]
 
 
 def accelab(*args, check=True):
-    proc = subprocess.run([sys.executable, "-m", "accelab", *args], capture_output=True, text=True)
+    """``accelab ARGS`` in a process of its own (forked from this one: tests/_forked.py)."""
+    proc = forked.run(list(args))
     if check:
         assert proc.returncode == 0, proc.stderr
     return proc
