@@ -95,6 +95,28 @@ print("student", sorted(f for f in os.listdir(os.path.dirname(exercises.__file__
     assert r.reports["x"] == {"state": "quantity", "magnitude": 3.0, "units": "inch / second ** 2"}
 
 
+def test_the_graders_parse_of_the_units_is_read_and_cannot_be_written(command):
+    """pint's parsed definitions (accelab.solver.unitcache) come from the grader's
+    cache, shown read-only: a kernel neither parses them again nor can plant a file
+    there for the next submission."""
+    from accelab.solver.unitcache import cache_folder
+
+    assert command.unit_cache == str(cache_folder()), "the grader wrote its cache on import"
+    probe = """
+import os
+from accelab.solver.unitcache import cache_folder
+folder = cache_folder()
+print("cache", folder, sorted(os.listdir(folder)) != [])
+try:
+    open(os.path.join(folder, "planted.pickle"), "wb").write(b"x"); print("WRITTEN")
+except OSError as exc:
+    print("refused", exc.errno)
+"""
+    out = text(run(command, LOAD, probe, "x = Q_(3, 'in/s^2')"))
+    assert "cache /run/accelab-cache/accelab/pint-" in out and " True" in out, out
+    assert "WRITTEN" not in out and "refused 30" in out, out  # EROFS
+
+
 def test_only_the_submitters_values_can_be_loaded(command):
     r = run(command, LOAD, "v2 = load_variant({}, 'alice')", "x = 1.0")
     assert r.refused == ["alice"] and r.loaded == ["bob"]

@@ -26,6 +26,7 @@ import functools
 import importlib
 import os
 import shutil
+import stat
 import subprocess
 import sys
 import tempfile
@@ -38,6 +39,9 @@ BASE_UID = 61000
 STUDENT_SIDE = ("__init__.py", "student")
 #: working directory (and HOME) inside the sandbox
 WORKDIR = "/tmp/work"
+#: the sandbox's XDG_CACHE_HOME: the grader's parse of pint's unit definitions, read-only
+#: (accelab.solver.unitcache), so that a kernel does not parse them again (0.1 s a run)
+CACHE_HOME = "/run/accelab-cache"
 
 INSTALL_HINT = (
     "install bubblewrap (Debian/Ubuntu: `sudo apt-get install bubblewrap`; "
@@ -112,6 +116,21 @@ def _as_root():
     return os.geteuid() == 0
 
 
+def _own_unit_cache():
+    """The grader's folder of pint's parsed unit definitions, if it has one: a real
+    folder of this user's (never a link), which the sandbox shows read-only."""
+    from accelab.solver.unitcache import cache_folder
+
+    folder = cache_folder()
+    try:
+        info = os.lstat(folder) if folder else None
+    except OSError:
+        return None
+    if info is None or not stat.S_ISDIR(info.st_mode) or info.st_uid != os.geteuid():
+        return None
+    return str(folder)
+
+
 class SandboxCommand:
     """Builds the bwrap command line that runs ``argv`` in a sandbox."""
 
@@ -121,6 +140,7 @@ class SandboxCommand:
         self.accelab_dir = _package_dir("accelab")
         self.solver_dir = _package_dir("accelab.solver")
         self.exercises_dir = _package_dir("accelab.exercises")
+        self.unit_cache = _own_unit_cache()
         self._etc = None
 
     def _etc_files(self):
@@ -215,6 +235,10 @@ class SandboxCommand:
         for name in STUDENT_SIDE:
             path = os.path.join(self.exercises_dir, name)
             args += ["--ro-bind", path, path]
+        if self.unit_cache:
+            inside = os.path.join(CACHE_HOME, "accelab", os.path.basename(self.unit_cache))
+            args += self._dirs_to(inside, bound) + ["--ro-bind", self.unit_cache, inside]
+            args += ["--setenv", "XDG_CACHE_HOME", CACHE_HOME]
         args += ["--perms", "1777", "--dir", WORKDIR, "--chdir", WORKDIR]
         for key, value in (env or {}).items():
             args += ["--setenv", key, value]
