@@ -42,12 +42,15 @@ typecheck: $(LINT_STAMP)
 	$(BIN)/python .ci/layout.py build/typecheck >/dev/null
 	$(BIN)/mypy
 
-# in parallel on every core (pytest-xdist); pyproject's addopts keep shared builds in one worker
+# in parallel (pytest-xdist), half as many workers again as cores: the end-to-end tests wait
+# for browsers, servers and time limits part of the time; pyproject's addopts keep shared
+# builds in one worker
+JOBS ?= $(shell $(PYTHON) -c "import os; print(max(2, 3 * len(os.sched_getaffinity(0)) // 2))")
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto
+	$(BIN)/python -m pytest -q -n $(JOBS)
 
 test-fast: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto -m "not slow"
+	$(BIN)/python -m pytest -q -n $(JOBS) -m "not slow"
 
 demo: $(STAMP)
 	$(BIN)/accelab demo

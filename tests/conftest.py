@@ -24,14 +24,40 @@ settings.register_profile(
 settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 
+#: the modules that take longest in one worker of ``make test`` [s], measured (-n 3 on 2 cores,
+#: the machine busy): handed out longest first, the course group (the notebooks executed, then
+#: the site built from them and read) before all, so that no long one starts last
+LONGEST = {
+    "test_course": 190,  # with test_docs: one group
+    "test_browser_assignment": 90,
+    "test_browser_hub": 85,
+    "test_benchmarks": 8,  # pairs with the course group: xdist gives each worker two at first
+    "test_polygon_browser": 75,
+    "test_exercises_grade": 59,
+    "test_grading_faults": 48,
+    "test_browser_course": 41,
+    "test_exercises_exchange": 36,
+    "test_wheel": 21,
+    "test_contributing": 17,
+}
+
+
 def pytest_collection_modifyitems(session, config, items):
-    """The modules that hold a slow test first, the others after them, each module's tests
-    in their own order. With ``--dist loadgroup`` a test outside any group is a unit of
-    work of its own, handed out in this order once the groups (largest first) are: the
-    long single tests (the JupyterHub class, the wheel) then start early, and the many
-    quick ones fill both workers up to the end, rather than one long test starting last."""
+    """The longest modules first (:data:`LONGEST`, in that order), then the others that
+    hold a slow test, then the rest, each module's tests in their own order. pyproject's
+    addopts keep that order (``--no-loadscope-reorder``): with ``--dist loadgroup`` a group,
+    or a test outside any group, is a unit of work handed out in it, so the long units
+    start at once and the many quick ones fill every worker up to the end."""
     slow = {item.module.__name__ for item in items if item.get_closest_marker("slow")}
-    items.sort(key=lambda item: item.module.__name__ not in slow)  # stable
+    rank = {name: k for k, name in enumerate(LONGEST)}
+
+    def order(item):
+        name = item.module.__name__
+        if name == "test_docs":  # in the course group, after test_course
+            name = "test_course"
+        return (rank.get(name, len(rank)), name not in slow)
+
+    items.sort(key=order)  # stable
 
 
 def pytest_runtest_setup(item):
