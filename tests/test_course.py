@@ -7,7 +7,7 @@ packages and set their own inline backend. A test fails on any error or any
 output on stderr, and checks that the executed notebook holds its figures,
 its animation and its practice problems' verdicts.
 
-Each notebook is executed once per session: :func:`executed` keeps the
+Each notebook is executed once per session, two at a time: :func:`executed` keeps the
 executed notebook in ``build/course/NN_slug.ipynb`` and in the documentation
 build's execution cache (``docs/notebooks.py``), so the site test that runs
 after it (``tests/test_docs.py``) builds the course pages without executing
@@ -155,19 +155,66 @@ def _store(source, nb, seconds):
     store(source, nb, seconds)
 
 
+#: notebooks executed at once, each by a kernel of its own: this process only waits on
+#: them, and two kernels keep both cores busy while the other test worker waits (on a
+#: browser, a server, a sandbox's time limit); a notebook's time (the budget's warning) is
+#: then that of two at once
+AT_ONCE = 2
+#: the tests that execute notebooks (their ``source``: the notebooks a session needs)
+EXECUTING = (
+    "test_notebook_executes",
+    "test_notebook_shows_no_raw_values",
+    "test_notebook_figures_read_on_a_phone",
+)
+_pool = {}  # "pool": the executor, "wanted": stems, "running": {stem: Future}
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _executions(request):
+    """The notebooks the selected tests execute; the pool that executes them, from the
+    first test that asks for one (:func:`executed`), in the course's order; what has not
+    started when the module's tests end (a run stopped early) is not started."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    _pool["wanted"] = {
+        item.callspec.params["source"].stem
+        for item in request.session.items
+        if getattr(item, "originalname", None) in EXECUTING
+    }
+    _pool["running"] = {}
+    _pool["pool"] = ThreadPoolExecutor(max_workers=AT_ONCE, thread_name_prefix="notebook")
+    yield
+    _pool["pool"].shutdown(wait=True, cancel_futures=True)
+
+
+def _timed(notebook):
+    t0 = time.perf_counter()
+    nb = execute(notebook)
+    return nb, time.perf_counter() - t0
+
+
+def _future(key):
+    """The execution of the written notebook ``key``; the first call starts every notebook
+    the session wants."""
+    running = _pool["running"]
+    if not running:
+        course = written_course()
+        for stem in [s.stem for s in NOTEBOOKS if s.stem in _pool["wanted"]]:
+            running[stem] = _pool["pool"].submit(_timed, course / f"{stem}.ipynb")
+    if key not in running:
+        running[key] = _pool["pool"].submit(_timed, written_course() / f"{key}.ipynb")
+    return running[key]
+
+
 def executed(source):
-    """The executed notebook of ``source`` (a course/NN_slug.py), executing the
-    written .ipynb the first time this session asks. Returns ``(path,
-    seconds)``; re-raises a failure."""
+    """The executed notebook of ``source`` (a course/NN_slug.py), executed once per session
+    (:func:`_future`). Returns ``(path, seconds)``; re-raises a failure."""
     key = Path(source).stem
     if key not in _executed:
-        notebook = written_course() / f"{key}.ipynb"
-        t0 = time.perf_counter()
         try:
-            nb = execute(notebook)
-            seconds = time.perf_counter() - t0
+            nb, seconds = _future(key).result()
             _store(source, nb, seconds)
-            _executed[key] = (BUILD / notebook.name, seconds)
+            _executed[key] = (BUILD / f"{key}.ipynb", seconds)
         except NotebookFailed as exc:  # remembered so that it is not run again
             _executed[key] = exc
     value = _executed[key]
