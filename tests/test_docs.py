@@ -526,22 +526,29 @@ def crawl(site, server, browsers):
     it is loaded (and judged by them): the course pages' notebook links clicked at
     1366 px (``state["downloaded"]``), the animation of :data:`ANIMATED` played at
     each width (``state["played"]``)."""
+    from concurrent.futures import ThreadPoolExecutor
+
     drivers, downloads = browsers
     pages = _pages(site)
-    states, problems = {}, []
     t0 = time.perf_counter()
-    for width in WIDTHS:
-        driver = drivers[width]
-        states[width] = {}
+
+    def at(width):  # one width in one browser: the two widths are read at once
+        driver, states, problems = drivers[width], {}, []
         for page in pages:
             st = _visit(driver, server, page)
-            states[width][page] = st
+            states[page] = st
             problems += _problems(page, st, server, width)
             # a failure here is kept for the test it belongs to, not raised for all
             if page == ANIMATED:
                 st["played"] = _attempt(_play, driver)
             if width == 1366 and _is_notebook_page(page):
                 st["downloaded"] = _attempt(_download, driver, downloads, Path(page).stem)
+        return states, problems
+
+    with ThreadPoolExecutor(max_workers=len(WIDTHS)) as pool:
+        done = dict(zip(WIDTHS, pool.map(at, WIDTHS)))
+    states = {width: done[width][0] for width in WIDTHS}
+    problems = [p for width in WIDTHS for p in done[width][1]]
     sys.stderr.write(
         f"\n{len(pages)} pages at {len(WIDTHS)} widths in {time.perf_counter() - t0:.1f} s\n"
     )
