@@ -619,20 +619,7 @@ def test_internal_links_resolve(crawl, server, site):
 def test_search_finds_coriolis(site, server, browsers):
     driver = browsers[0][1366]
     driver.get_log("browser")
-    driver.get(server + "search.html?q=Coriolis")
-    hits = []
-    for _ in range(200):
-        hits = driver.execute_script(
-            "return [...document.querySelectorAll('#search-results ul.search li a')]"
-            ".map(a => a.getAttribute('href'))"
-        )
-        done = driver.execute_script(
-            "const s = document.querySelector('#search-results .search-summary');"
-            "return s ? s.innerText : ''"
-        )
-        if hits and done:
-            break
-        time.sleep(0.1)
+    hits = _search(driver, server, "Coriolis")
     assert any("05_coriolis" in h for h in hits), f"search results for Coriolis: {hits}"
     severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
     assert not severe, severe
