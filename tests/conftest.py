@@ -11,6 +11,11 @@ from hypothesis import strategies as st
 
 os.environ.setdefault("MPLBACKEND", "Agg")  # before anything imports matplotlib
 
+# as the accelab command does: jsonschema's IRI grammar compiled only if a schema asks
+from accelab.lazy_iri import defer_iri_grammar
+
+defer_iri_grammar()
+
 settings.register_profile(
     "default", deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow]
 )

@@ -149,3 +149,17 @@ def test_check_ranges_names_the_values_where_draw_fails():
         check_ranges(draw, theta2=(0, 360, 5, 60, "deg"))
     data.append(0)
     assert check_ranges(draw, theta2=(0, 360, 5, 60, "deg")) == 7
+
+
+def test_check_ranges_without_pixels_still_lays_out_text():
+    """The second pass (``render=False``) skips the pixels, not the layout: a label whose
+    math cannot be parsed at one value fails there, as when rendered."""
+
+    def draw(theta2):
+        fig, ax = plt.subplots()
+        ax.set_title(r"$\omega_2$" if theta2 < 360 else r"$\omega_{2$")
+        return fig
+
+    for render in (True, False):
+        with pytest.raises(AssertionError, match=r"\{'theta2': 360\}: ValueError"):
+            check_ranges(draw, render=render, theta2=(0, 360, 5, 60, "deg"))

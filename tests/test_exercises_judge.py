@@ -196,11 +196,11 @@ HOSTILE_UNITS = [
 def test_a_hostile_unit_text_costs_its_answer_only_and_is_read_at_once(units):
     import time
 
-    start = time.perf_counter()
+    start = time.thread_time()  # CPU time of this thread: the work, not the machine's load
     verdict = judge(
         ACC, {"state": "quantity", "magnitude": 1.0, "units": units}, EXPECTED, 0.01, 1.0, ureg
     )
-    assert time.perf_counter() - start < 0.2
+    assert time.thread_time() - start < 0.2
     assert not verdict.ok and (
         "cannot read" in verdict.message
         or "cannot be converted" in verdict.message
@@ -232,9 +232,9 @@ def test_the_grader_reads_a_report_once_however_large_the_class():
     real = oc.read
     oc.read = lambda *a: calls.append(1) or real(*a)
     try:
-        start = time.perf_counter()
+        start = time.thread_time()
         oc._whose_values(me, run, others, [], result, asked)
-        assert time.perf_counter() - start < 1.0
+        assert time.thread_time() - start < 1.0
     finally:
         oc.read = real
     assert len(calls) <= len(asked)

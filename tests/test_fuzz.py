@@ -235,22 +235,24 @@ def test_the_grading_rule_is_the_same_function():
 
 
 # --- every field in bounded time ----------------------------------------------------------
+# Time is this thread's CPU time: the bound is on the work a text costs, whatever else the
+# machine runs (the wall clock of a loaded CI machine made these checks flaky).
 @settings(max_examples=300, deadline=None)
 @given(text=st.text(max_size=3 * MAX_TEXT))
 def test_any_text_in_any_field_is_read_or_refused_in_bounded_time(text):
     for field in ("a", "theta2", "omega2", "lam", "circuit", "mechanism"):
         mechanism = "fivebar" if field == "lam" else "fourbar"
-        start = time.perf_counter()
+        start = time.thread_time()
         r = right_or_refused(solve_case(dict(case(mechanism), **{field: text})))
-        assert time.perf_counter() - start < 0.5, (field, text)
+        assert time.thread_time() - start < 0.5, (field, text)
         if not r["ok"] and len(text) > 40:
             assert text not in r["message"]  # a long text is not echoed whole
 
 
 def test_a_megabyte_field_is_refused_at_once():
-    start = time.perf_counter()
+    start = time.thread_time()
     r = solve_case(case("fourbar", a="x" * 1_000_000))
-    assert time.perf_counter() - start < 0.05
+    assert time.thread_time() - start < 0.05
     assert r["error"] == "invalid_input" and "1000000 characters" in r["message"]
 
 
@@ -273,9 +275,9 @@ def test_a_megabyte_field_is_refused_at_once():
     ],
 )
 def test_pathological_quantities_are_refused(text):
-    start = time.perf_counter()
+    start = time.thread_time()
     r = right_or_refused(solve_case(case("fourbar", a=text)))
-    assert r["error"] == "invalid_input" and time.perf_counter() - start < 0.5, r
+    assert r["error"] == "invalid_input" and time.thread_time() - start < 0.5, r
 
 
 # --- structure of a case ----------------------------------------------------------------------
