@@ -33,7 +33,7 @@ settings.load_profile("ci" if os.environ.get("CI") else "default")
 #: the machine busy): handed out longest first, the course group (the notebooks executed, then
 #: the site built from them and read) before all, so that no long one starts last
 LONGEST = {
-    "test_course": 190,  # with test_docs: one group
+    "test_course": 160,  # with test_docs: one group
     "test_browser_assignment": 90,
     "test_browser_hub": 85,
     "test_benchmarks": 8,  # pairs with the course group: xdist gives each worker two at first

@@ -155,11 +155,12 @@ def _store(source, nb, seconds):
     store(source, nb, seconds)
 
 
-#: notebooks executed at once, each by a kernel of its own: this process only waits on
-#: them, and two kernels keep both cores busy while the other test worker waits (on a
-#: browser, a server, a sandbox's time limit); a notebook's time (the budget's warning) is
-#: then that of two at once
-AT_ONCE = 2
+#: notebooks executed at once, each by a kernel of its own (this process only waits on
+#: them). One: with three test workers on two cores the run is CPU-bound, and a second
+#: kernel only adds contention (measured: -n 3, a whole run 245 s and 467 busy cpu-s with
+#: one, 250-256 s and 475-490 cpu-s with two); the course group (notebooks, then the site)
+#: still ends well before the other workers. More than one: the pool runs them in turn.
+AT_ONCE = 1
 #: the tests that execute notebooks (their ``source``: the notebooks a session needs)
 EXECUTING = (
     "test_notebook_executes",
