@@ -20,6 +20,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 import zipfile
 from pathlib import Path
 
@@ -38,10 +39,25 @@ NOTEBOOK = "11_speed_accuracy"
 pytestmark = pytest.mark.slow
 
 
+#: each step's command, time and (when slow) output, kept for a reader of a slow run: once in
+#: a while this test has taken 300 s instead of 20 and passed
+STEPS = ROOT / "build" / "test-artifacts" / "wheel-steps.log"
+
+
 def run(argv, cwd, env, timeout=600):
+    start = time.monotonic()
+    env = dict(env, PIP_DISABLE_PIP_VERSION_CHECK="1")  # pip asks no index for its version
     done = subprocess.run(
         argv, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout, check=False
     )
+    seconds = time.monotonic() - start
+    STEPS.parent.mkdir(parents=True, exist_ok=True)
+    with open(STEPS, "a") as log:
+        log.write(
+            f"{time.strftime('%H:%M:%S')} {seconds:7.1f} s  {' '.join(map(str, argv))[:200]}\n"
+        )
+        if seconds > 60:
+            log.write(f"--- stdout\n{done.stdout[-6000:]}\n--- stderr\n{done.stderr[-6000:]}\n")
     assert done.returncode == 0, (
         f"{' '.join(map(str, argv))} exited with {done.returncode}:\n"
         f"{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
