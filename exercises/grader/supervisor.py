@@ -166,7 +166,7 @@ class Kernel:
         return reply
 
     def _read(self, n, deadline):
-        data = b""
+        data = bytearray()  # grown in place: a frame of megabytes comes a pipe's worth at a time
         while len(data) < n:
             left = deadline - time.monotonic()
             if left <= 0:
@@ -178,7 +178,7 @@ class Kernel:
             if not chunk:
                 raise Failure(self._death())
             data += chunk
-        return data
+        return bytes(data)
 
     def _death(self):
         try:
