@@ -16,6 +16,7 @@ compiled changes.
 import importlib
 import importlib.util
 import sys
+import threading
 import types
 
 NAME = "rfc3987_syntax"
@@ -33,17 +34,22 @@ def defer_iri_grammar():
     return True
 
 
+_LOADING = threading.Lock()
+
+
 def _real():
-    """The real module (imported on first use, in place of the stand-in)."""
-    module = sys.modules.get(NAME)
-    if isinstance(module, _Deferred):
-        del sys.modules[NAME]
-        try:
-            module = importlib.import_module(NAME)
-        except BaseException:
-            sys.modules.setdefault(NAME, _Deferred(NAME))
-            raise
-    return module
+    """The real module (imported on first use, in place of the stand-in; one thread
+    imports it, the others wait for it)."""
+    with _LOADING:
+        module = sys.modules.get(NAME)
+        if isinstance(module, _Deferred):
+            del sys.modules[NAME]
+            try:
+                module = importlib.import_module(NAME)
+            except BaseException:
+                sys.modules.setdefault(NAME, _Deferred(NAME))
+                raise
+        return module
 
 
 class _Deferred(types.ModuleType):
