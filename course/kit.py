@@ -333,8 +333,9 @@ def check_ranges(draw, *, render=True, **sliders):
     ``render=True`` renders each figure to pixels, as the notebook shows it. With
     ``render=False`` each figure is laid out without its pixels (every artist drawn,
     every text measured and its math parsed: the errors of ``draw`` and of laying out
-    text and artists, at about a third of the cost), for a second pass over values
-    already rendered once."""
+    text and artists), for a second pass over values already rendered once. It saves
+    only the rasterizing, about a sixth of a figure's cost: laying out (constrained
+    layout, text) is most of it."""
     failed = []
     values = range_values(**sliders)
     for kw in values:

@@ -315,16 +315,17 @@ def _crank_and_coupler_velocities(V_A, V_B):
     ]
 
 
-def _crank_and_coupler_accelerations(v):
-    """The terms of eq. 7.4 up to B that a fourbar and a slider-crank share: A_A's two
-    (the crank turns about O2) and A_BA's two (B turns about A); only A_BA^t is unknown."""
+def _crank_accelerations(v, side):
+    """A_A's two terms (the crank turns about O2), both known, on ``side`` ("L" or "R") of
+    the polygon's vector equation: the fourbar's and the slider-crank's have them on the
+    right (A_B = A_A + A_BA), the inverted slider-crank's on the left (eq. 7.21)."""
     return [
         Term(
             "A_A^t",
             "tangential",
             v["A_A_t"],
             True,
-            "R",
+            side,
             "O2A",
             True,
             "A_A^t is perpendicular to O2A, in the sense of alpha2",
@@ -335,12 +336,20 @@ def _crank_and_coupler_accelerations(v):
             "normal",
             v["A_A_n"],
             True,
-            "R",
+            side,
             "O2A",
             False,
             "A_A^n points from A toward O2, the centre of A's path",
             "a omega2^2",
         ),
+    ]
+
+
+def _crank_and_coupler_accelerations(v):
+    """The terms of eq. 7.4 up to B that a fourbar and a slider-crank share: A_A's two
+    (the crank turns about O2) and A_BA's two (B turns about A); only A_BA^t is unknown."""
+    return [
+        *_crank_accelerations(v, "R"),
         Term(
             "A_BA^n",
             "normal",
@@ -657,28 +666,7 @@ def _inverted(v, pts, con):
         "Acceleration polygon",
         "A_A^t + A_A^n = A_A4^n + A_cor + A_slip + A_A4^t (eqs. 7.19, 7.21)",
         [
-            Term(
-                "A_A^t",
-                "tangential",
-                v["A_A_t"],
-                True,
-                "L",
-                "O2A",
-                True,
-                "A_A^t is perpendicular to O2A, in the sense of alpha2",
-                "a alpha2",
-            ),
-            Term(
-                "A_A^n",
-                "normal",
-                v["A_A_n"],
-                True,
-                "L",
-                "O2A",
-                False,
-                "A_A^n points from A toward O2, the centre of A's path",
-                "a omega2^2",
-            ),
+            *_crank_accelerations(v, "L"),
             Term(
                 "A_A4^n",
                 "normal",
