@@ -35,6 +35,7 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "numpydoc",
+    "numpydoc_once",
     "sphinx.ext.mathjax",
     "accelab_docs",
 ]

@@ -33,9 +33,17 @@ from .intake import notes_of, submissions
 from .key import key_for
 from .outcome import judge_run, shown_ids, write_notebook
 from .plan import fingerprint, plan_of
+from .schema_once import check_schemas_once
+from .shared_engine import share_engines
 from .state import outcome_path, submission_hash
 from .stop import HALT, Interruptible, Stopped
 from .supervisor import Limits, run_plan
+
+# nbgrader checks its metadata schema once per process, not once per cell (.schema_once),
+# and its gradebooks compile each query once per process (.shared_engine): set here, so
+# that nbgrader's own autograde and formgrader (the course's config imports this) do too
+check_schemas_once()
+share_engines()
 
 _KEYS = {}
 _LOCK = threading.Lock()

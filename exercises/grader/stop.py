@@ -18,6 +18,8 @@ import threading
 import time
 
 #: set when grading must stop: no sandbox starts, no cut-short run is judged
+#:
+#: :meta hide-value:
 HALT = threading.Event()
 #: the signal that stopped the run (None: none, or an error stopped it)
 _RECEIVED = [None]
