@@ -19,11 +19,6 @@ sys.path[:0] = [str(ROOT), str(HERE / "_ext"), str(HERE)]
 import notebooks  # noqa: E402  (docs/notebooks.py: how the course is executed)
 
 import accelab  # noqa: E402
-from accelab.lazy_iri import defer_iri_grammar  # noqa: E402
-
-# before MyST-NB imports nbformat (and so jsonschema): the IRI grammar no page needs is
-# compiled only if a schema asks for it (about 0.8 s of CPU per build)
-defer_iri_grammar()
 
 notebooks.set_kernel_env()
 

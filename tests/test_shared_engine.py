@@ -17,10 +17,12 @@ def _url(path):
 
 @pytest.fixture(scope="module")
 def blank(tmp_path_factory):
-    """An empty gradebook, made once (a new one asks alembic for its version: a second)."""
-    path = tmp_path_factory.mktemp("blank") / "gradebook.db"
-    api.Gradebook(_url(path)).close()
-    return path
+    """An empty gradebook, made once, as accelab makes one (nbgrader_course.gradebook)."""
+    from accelab.exercises.nbgrader_course import gradebook
+
+    root = tmp_path_factory.mktemp("blank")
+    gradebook(root, "default_course").close()
+    return root / "gradebook.db"
 
 
 def _copies(blank, folder, *names):
