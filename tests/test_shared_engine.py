@@ -75,3 +75,30 @@ def test_a_forked_process_makes_its_own_engine(tmp_path, blank):
         os._exit(0 if ok else 1)
     _, status = os.waitpid(pid, 0)
     assert os.waitstatus_to_exitcode(status) == 0
+
+
+def test_any_number_of_gradebooks_may_be_open_at_once(tmp_path, blank):
+    """As when each had its own engine: no pool to run out of (a pool of 5 + 10 would
+    make the 16th wait 30 s, then fail), whatever the threads of a grader or formgrader."""
+    import threading
+
+    share_engines()
+    url = _url(_copies(blank, tmp_path, "gradebook.db")[0])
+    opened, ready, errors = [], threading.Barrier(24), []
+
+    def hold():
+        try:
+            gb = api.Gradebook(url)
+            gb.students  # a query: its connection is taken
+            opened.append(gb)
+            ready.wait(timeout=20)  # all 24 open at the same time
+            gb.close()
+        except Exception as exc:  # judged below
+            errors.append(exc)
+
+    threads = [threading.Thread(target=hold) for _ in range(24)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(60)
+    assert errors == [] and len(opened) == 24

@@ -7,11 +7,12 @@ sixth of the grader's own CPU time (2.5 of 16 cpu-s grading 47 notebooks).
 
 :func:`share_engines` makes nbgrader's ``create_engine`` return the engine it made
 before for the same database URL and options, in this process. What reaches the
-database is unchanged: ``Gradebook.close()`` still disposes of the engine's
-connections, so each ``Gradebook`` opens its own connection to the file as it is
-then (a gradebook copied or swapped in between is the one read); only the compiled
-statements and the dialect are kept. A process made by ``fork`` makes its own
-engines (an engine is never shared across processes).
+database is unchanged: the shared engine keeps no pool of connections (SQLAlchemy's
+``NullPool``), so each ``Gradebook`` opens its own connection to the file as it is then
+(a gradebook copied or swapped in between is the one read), and any number of them may
+be open at once, in any threads, as when each had its own engine; only the compiled
+statements and the dialect are kept. A process made by ``fork`` makes its own engines
+(an engine is never shared across processes).
 """
 
 import os
@@ -42,6 +43,9 @@ def _sharing(create_engine):
     lock = threading.Lock()
 
     def shared_create_engine(url, *args, **kwargs):
+        from sqlalchemy.pool import NullPool
+
+        kwargs.setdefault("poolclass", NullPool)  # a connection per Gradebook, as before
         key = (os.getpid(), str(url), repr(args), repr(sorted(kwargs.items())))
         with lock:
             engine = engines.get(key)
