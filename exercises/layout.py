@@ -27,6 +27,8 @@ import pwd
 import stat
 
 #: accelab's templates (formgrader's submission page with ids escaped), and nbgrader's
+#:
+#: :meta hide-value:
 TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
 FORMGRADER_TEMPLATES = os.path.join(
     os.path.dirname(os.path.abspath(importlib.util.find_spec("nbgrader").origin)),

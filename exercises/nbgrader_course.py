@@ -20,6 +20,8 @@ from .ids import RULE, id_problem
 #: a Jupyter data folder for ``JUPYTER_PATH``: nbconvert's ``mathjax`` macro that loads MathJax
 #: from the Jupyter server itself (jupyter-server-mathjax), so that formgrader and the feedback
 #: pages typeset their equations offline (nbgrader's templates otherwise fetch it from a CDN)
+#:
+#: :meta hide-value:
 JUPYTER_DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "jupyter")
 
 CONFIG = """\

@@ -248,6 +248,15 @@ def player_frames(app, doctree, docname):
 HYPHENATED = re.compile(r"\S*\w-\w\S*")
 
 
+def drop_empty_field_lists(app, doctree):
+    """An API entry whose value is hidden (``:meta hide-value:``) keeps an empty field
+    list, which held the hidden field: it is dropped, so the entry ends with its text
+    (spaced as every other entry)."""
+    for field_list in list(doctree.findall(nodes.field_list)):
+        if not field_list.children:
+            field_list.parent.remove(field_list)
+
+
 def unbreakable_words(app, doctree):
     """In a table cell a line may break between words but never inside one: a
     hyphenated word ("slider-crank", "problem 7-1") is kept on one line (a table
@@ -688,6 +697,7 @@ def setup(app):
     app.connect("doctree-read", number_equations)
     app.connect("doctree-read", caption_images)
     app.connect("doctree-read", unbreakable_words)
+    app.connect("doctree-read", drop_empty_field_lists)
     app.connect("doctree-resolved", link_images)
     app.connect("doctree-resolved", player_frames)
     app.connect("build-finished", write_notebooks)
