@@ -26,7 +26,8 @@ import os
 import pwd
 import stat
 
-#: accelab's templates (formgrader's submission page with ids escaped), and nbgrader's
+#: the folder of accelab's templates (formgrader's submission page with the ids escaped),
+#: which formgrader searches before nbgrader's own (``FORMGRADER_TEMPLATES``)
 #:
 #: :meta hide-value:
 TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
