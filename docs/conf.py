@@ -36,6 +36,7 @@ extensions = [
     "sphinx.ext.autosummary",
     "numpydoc",
     "numpydoc_once",
+    "data_url_links",
     "sphinx.ext.mathjax",
     "accelab_docs",
 ]
