@@ -46,10 +46,15 @@ def register(subparsers):
 
 def to_notebook(source):
     """The notebook (nbformat node) of a percent-format source, with a python3
-    kernel and the course's metadata, outputs empty."""
+    kernel and the course's metadata, outputs empty. Its cells' ids are the notebook's
+    name and the cell's number (``05_coriolis-07``), so that writing it again gives the
+    same file (the site's download is this notebook too)."""
     import jupytext
 
     nb = jupytext.read(source, fmt="py:percent")
+    stem = Path(source).stem
+    for number, cell in enumerate(nb.cells):
+        cell.id = f"{stem}-{number:02d}"
     nb.metadata["kernelspec"] = {
         "name": "python3",
         "display_name": "Python 3",

@@ -406,6 +406,12 @@ def test_course_command_writes_notebooks_a_student_can_run(tmp_path):
 
     nb = nbformat.read(out / NOTEBOOKS[0].with_suffix(".ipynb").name, as_version=4)
     assert nb.metadata["kernelspec"]["name"] == "python3"
+    # written again: the same files (cell ids included), nothing to see in a diff
+    again = tmp_path / "again"
+    twice = parser.parse_args(["course", "--out", str(again)])
+    assert twice.func(twice) == 0
+    for path in out.iterdir():
+        assert (again / path.name).read_bytes() == path.read_bytes(), path.name
     assert nb.cells[1].source.startswith("%matplotlib inline")
     assert not any(c.get("outputs") for c in nb.cells if c.cell_type == "code")
     # a student's edits survive a second run

@@ -625,10 +625,13 @@ def test_search_finds_coriolis(site, server, browsers):
     assert not severe, severe
 
 
-def test_course_pages_download_their_notebooks(crawl, site, server):
+def test_course_pages_download_their_notebooks(crawl, site, server, tmp_path):
     """Each course page links its notebook; clicking the link downloads it (clicked
-    during the crawl, on the page as loaded at 1366 px)."""
+    during the crawl, on the page as loaded at 1366 px): the notebook `accelab course
+    --out` writes."""
     import nbformat
+
+    from accelab.course.cli import to_notebook
 
     states, _ = crawl
     course = sorted(p for p in states[1366] if _is_notebook_page(p))
@@ -646,6 +649,12 @@ def test_course_pages_download_their_notebooks(crawl, site, server):
         nbformat.validate(nb)
         assert nb.cells and nb.cells[0].cell_type == "markdown"
         assert nb.metadata["kernelspec"]["name"] == "python3"
+        # the notebook `accelab course --out` writes, the same file every build
+        written = tmp_path / f"{stem}.ipynb"
+        nbformat.write(to_notebook(ROOT / "course" / f"{stem}.py"), written)
+        assert target.read_bytes() == written.read_bytes(), (
+            f"{stem}.ipynb is not what `accelab course --out` writes"
+        )
 
 
 def _search(driver, server, query):

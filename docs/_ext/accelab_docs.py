@@ -2,8 +2,9 @@
 
 * Course pages: the notebooks' own ``[Next: ...](NN_slug.ipynb)`` links point
   at the next page, and each page gets a line under its title that downloads
-  the notebook as ``.ipynb`` (written next to the page at the end of the build,
-  converted by jupytext, without outputs; it imports the installed package).
+  the notebook as ``.ipynb`` (written next to the page at the end of the build, as
+  ``accelab course --out`` writes it: without outputs, the same file every build; it
+  imports the installed package).
 * Every figure is a link to its own image file, so a tap on a phone opens it
   at full size.
 * MathJax is served from the site (the copy the ``sphinx-mathjax-offline``
@@ -69,11 +70,14 @@ def source_read(app, docname, source):
 
 
 def write_notebooks(app, exc):
-    """Write each course page's notebook (.ipynb, no outputs) next to its page
-    (the notebooks import everything from the installed package)."""
+    """Write each course page's notebook (.ipynb, no outputs) next to its page, as
+    ``accelab course --out`` writes it (the notebooks import everything from the
+    installed package)."""
     if exc is not None or app.builder.format != "html":
         return
-    import jupytext
+    import nbformat
+
+    from accelab.course.cli import to_notebook
 
     out = Path(app.outdir)
     done = 0
@@ -82,10 +86,9 @@ def write_notebooks(app, exc):
         if stem is None:
             continue
         source = Path(app.env.doc2path(docname))
-        nb = jupytext.read(source, fmt="py:percent")
         target = out / "course" / f"{stem}.ipynb"
         target.parent.mkdir(parents=True, exist_ok=True)
-        jupytext.write(nb, target, fmt="ipynb")
+        nbformat.write(to_notebook(source), target)  # as `accelab course --out` writes it
         done += 1
     logger.info(f"wrote {done} course notebooks for download")
 
