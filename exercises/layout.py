@@ -37,7 +37,11 @@ FORMGRADER_TEMPLATES = os.path.join(
     "formgrader",
     "templates",
 )
-#: modes of the exchange: root, a course's folder, and its subfolders
+#: mode of the exchange's root, ``0o1777``: every account may add to it, and only an
+#: entry's owner may remove it (the sticky bit); a course's folder has ``COURSE_MODE``
+#: (``0o755``), its subfolders the modes of ``SUBFOLDERS``
+#:
+#: :meta hide-value:
 ROOT_MODE = 0o1777
 COURSE_MODE = 0o755
 SUBFOLDERS = {"inbound": 0o1733, "outbound": 0o755, "feedback": 0o711}
