@@ -6,15 +6,16 @@ The course pages show each figure in two renditions, written by the notebook as
 Markdown images whose destination is the PNG itself (``![...](data:image/png;base64,
 ...)``, :mod:`accelab.course.renditions`). markdown-it-py scans a destination one
 character at a time (``parseLinkDestination``) and then percent-encodes it one
-character at a time (``normalizeLink`` through ``mdurl``): for these megabytes of
-base64 that was about a quarter of a build of this site from scratch.
+character at a time (``normalizeLink`` through ``mdurl``): for the 9 MB of base64
+in the course's pages that was about a tenth of a build of this site from scratch.
 
 For such a URL both steps give back the URL unchanged (none of its characters is
 escaped, encoded, or ends a destination): the fast path returns exactly what
 markdown-it would, and any other destination goes through markdown-it's own code.
-``tests/test_docs.py`` checks both paths against markdown-it's on every data URL
-of a built page. If markdown-it's internals ever differ from what this expects, it
-leaves them as they are (the build is then slower, never different).
+``tests/test_docs_data_urls.py`` checks the fast path against markdown-it's own code on
+destinations it takes and on destinations it must leave alone, and the HTML markdown-it
+renders with and without it. If markdown-it's internals ever differ from what this
+expects, it leaves them as they are (the build is then slower, never different).
 """
 
 import re
