@@ -19,6 +19,7 @@ import hashlib
 import os
 import re
 import shutil
+import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -26,6 +27,8 @@ ROOT = HERE.parent
 COURSE = ROOT / "course"
 CACHE_ROOT = ROOT / "build" / "docs-cache"
 CELL_TIMEOUT = 300  # s per cell
+#: the longest one wait for a kernel's message lasts before the socket is looked at again [s]
+POLL_SLICE = 1.0
 #: the code the executed notebooks depend on (besides the notebooks' own cells)
 CODE = ("solver", "exercises", "accelab", "benchmarks", "course")
 
@@ -35,6 +38,7 @@ __all__ = [
     "set_kernel_env",
     "cache_path",
     "execute",
+    "notebook_client",
     "store",
     "problems",
     "NotebookFailed",
@@ -123,16 +127,65 @@ def problems(nb):
     return out
 
 
+def in_slices(get_msg, every=POLL_SLICE):
+    """``get_msg(timeout)`` of a kernel client's channel (async), waiting in slices of
+    ``every`` seconds: a new poll of the socket each slice, until the message comes or
+    ``timeout`` has passed (then ``queue.Empty``, as ``get_msg`` raises it)."""
+    from queue import Empty
+
+    async def get_msg_in_slices(timeout=None):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while True:
+            left = None if deadline is None else deadline - time.monotonic()
+            wait = every if left is None else max(0.0, min(every, left))
+            try:
+                return await get_msg(timeout=wait)
+            except Empty:
+                if left is not None and left <= every:
+                    raise
+
+    return get_msg_in_slices
+
+
+_client_class = []
+
+
+def notebook_client(nb, **options):
+    """nbclient's ``NotebookClient`` for ``nb`` (``options`` are its own) whose waits for
+    the kernel's replies and outputs look at the socket again every :data:`POLL_SLICE` s.
+
+    pyzmq's asyncio poller can miss the wake-up of a message that has already arrived (a
+    zmq socket's file descriptor is edge-triggered). nbclient then waits out the whole cell
+    timeout before it polls again, finds the reply there and goes on as if nothing had
+    happened: in the test suite a notebook of a few seconds once took 304 s, its kernel
+    idle. A new poll checks the socket at once, so a missed wake-up costs one slice."""
+    if not _client_class:
+        from nbclient import NotebookClient
+        from nbclient.util import run_sync
+
+        class SlicedClient(NotebookClient):
+            async def async_start_new_kernel_client(self):
+                kc = await super().async_start_new_kernel_client()
+                for channel in (kc.shell_channel, kc.iopub_channel):
+                    channel.get_msg = in_slices(channel.get_msg)
+                return kc
+
+            # nbclient's blocking form (setup_kernel) calls the base class's coroutine
+            start_new_kernel_client = run_sync(async_start_new_kernel_client)
+
+        _client_class.append(SlicedClient)
+    return _client_class[0](nb, **options)
+
+
 def execute(source, timeout=CELL_TIMEOUT):
     """Execute ``source`` with nbclient in ``course/``; returns the executed
     notebook. Raises :class:`NotebookFailed` on a cell error or any output to
     stderr (the failed notebook is on the exception as ``.notebook``)."""
-    from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
 
     source = Path(source)
     nb = read(source)
-    client = NotebookClient(
+    client = notebook_client(
         nb,
         timeout=timeout,
         kernel_name="python3",

@@ -32,7 +32,7 @@ import pytest
 import accelab.course
 from accelab.course import cli as course_cli
 from accelab.exercises.families import REGISTRY
-from docs.notebooks import problems
+from docs.notebooks import notebook_client, problems
 
 ROOT = Path(__file__).resolve().parents[1]
 COURSE = ROOT / "course"
@@ -96,7 +96,6 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     ``outdir``; returns the executed notebook. Raises :class:`NotebookFailed` on
     an error or stderr output."""
     import nbformat
-    from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
 
     nb = nbformat.read(notebook, as_version=4)
@@ -107,7 +106,7 @@ def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
     outdir.mkdir(parents=True, exist_ok=True)
     target = outdir / Path(notebook).name
     # no timing metadata on the cells: the docs build's cache must match them by content
-    client = NotebookClient(
+    client = notebook_client(
         nb,
         timeout=timeout,
         kernel_name="python3",
@@ -795,7 +794,6 @@ def test_explore_shows_sliders_in_a_live_kernel():
     """Without ACCELAB_STATIC, inside a kernel, explore() builds ipywidgets sliders
     (one per keyword, with their ranges) and draws through them."""
     import nbformat
-    from nbclient import NotebookClient
 
     code = """
 import matplotlib.pyplot as plt
@@ -821,7 +819,7 @@ print(kit.is_static(), type(s["theta2"]).__name__, s["theta2"].max, s["theta2"].
     env = kernel_env()
     env["ACCELAB_STATIC"] = "0"
     RUN.mkdir(parents=True, exist_ok=True)
-    NotebookClient(
+    notebook_client(
         nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(RUN)}}
     ).execute(env=env)
     outputs = nb.cells[0].outputs
