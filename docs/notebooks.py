@@ -39,6 +39,7 @@ __all__ = [
     "cache_path",
     "execute",
     "notebook_client",
+    "in_slices",
     "store",
     "problems",
     "NotebookFailed",
