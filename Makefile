@@ -46,10 +46,17 @@ typecheck: $(LINT_STAMP)
 # for browsers, servers and time limits part of the time; pyproject's addopts keep shared
 # builds in one worker
 JOBS ?= $(shell $(PYTHON) -c "import os; print(max(2, 3 * len(os.sched_getaffinity(0)) // 2))")
+
+# the source compiled once, before the tests start hundreds of processes that import it (commands,
+# kernels, graders, the site build): where PYTHONDONTWRITEBYTECODE is set, each of them would
+# compile it again (__pycache__ is ignored by git, and the wheel leaves it out)
+COMPILE := $(BIN)/python -m compileall -q accelab solver course exercises benchmarks docs tests >/dev/null
 test: $(STAMP)
+	$(COMPILE)
 	$(BIN)/python -m pytest -q -n $(JOBS)
 
 test-fast: $(STAMP)
+	$(COMPILE)
 	$(BIN)/python -m pytest -q -n $(JOBS) -m "not slow"
 
 demo: $(STAMP)
