@@ -37,6 +37,7 @@ extensions = [
     "numpydoc",
     "numpydoc_once",
     "data_url_links",
+    "readable_defaults",
     "sphinx.ext.mathjax",
     "accelab_docs",
 ]

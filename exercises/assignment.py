@@ -72,6 +72,10 @@ def check_spec(spec):
 
 @dataclass
 class Variant:
+    """One student's assignment: the assignment's ``spec``, the ``student`` id, and the
+    :class:`~accelab.exercises.problem.Problem` of each of the spec's problems, drawn
+    from a seed of course, assignment, student and problem (:func:`build_variant`)."""
+
     spec: dict
     student: str
     problems: list

@@ -8,7 +8,7 @@ an ``expr`` over those cases' outputs (see :mod:`accelab.exercises.expr`), evalu
 picked from ``choices``; no expr is published) or "construction" (a polygon drawn
 in the polygon builder; ``expr`` names the polygon, "velocity" or "acceleration").
 
-Two views leave this module: :meth:`Problem.statement` is what a student's
+Two views leave this module: :meth:`Problem.statement_view` is what a student's
 kernel may hold (given values and what is asked, no cases, no exprs);
 :meth:`Problem.public` adds the machine-readable cases and exprs for an outside
 solver (``accelab variant``, instructor side). The key itself (numbers) is
@@ -26,6 +26,10 @@ from .student.answers import Asked
 
 @dataclass
 class Answer:
+    """One graded answer of a variant: the variable ``name`` its answer cell assigns, in
+    ``unit``, worked out from the batch ``cases`` by ``expr`` (or picked from ``choices``
+    by ``basis`` and ``bins``); the module's text says each kind."""
+
     name: str
     unit: str
     description: str
@@ -71,6 +75,13 @@ class Answer:
 
 @dataclass
 class Problem:
+    """One student's variant of an exercise family: what the page says and what is graded.
+
+    ``statement`` is the same for every student (Markdown, no numbers); ``given`` holds
+    this variant's numbers as text with units (``{"p": "6.5 in"}``), ``answers`` its
+    graded :class:`Answer` entries, ``figure`` what to draw (``{"mechanism": ...,
+    "case": ...}``, empty for none) and ``seed`` the seed it was drawn from."""
+
     family: str
     title: str
     statement: str  # markdown, the same for every student (no numbers)

@@ -155,6 +155,19 @@ def test_build_has_every_section(site):
     assert list((site / "_static" / "mathjax" / "output" / "chtml" / "fonts").rglob("*.woff"))
 
 
+def test_api_signatures_read_as_python(site):
+    """A default that is a function reads as the code wrote it (``say=print``), never as
+    its repr (``<built-in function print>``), a dataclass field's factory as what it makes
+    (``notes=[]``); numbers stay numbers (``tol=1e-13``). No class is described by the text
+    dataclasses write for one with no docstring (``Name(field: type, ...)``)."""
+    api = "".join(p.read_text() for p in (site / "api").rglob("*.html"))
+    assert "&lt;built-in" not in api and "&lt;function" not in api
+    assert "&lt;factory&gt;" not in api
+    assert not re.findall(r"<p>[A-Z]\w*\(\w+: \w", api)
+    assert 'class="pre">print</span>' in api  # the grader's say=print
+    assert 'class="pre">1e-13</span>' in api  # the Newton-Raphson sweep's tol
+
+
 def test_course_pages_show_a_practice_problem_with_folded_answers(site):
     """A reader of the site cannot type into a practice problem, so each topic
     page shows one of fixed seed, its figure opening at full size, and its

@@ -96,6 +96,10 @@ class Drawn:
 
 @dataclass(frozen=True)
 class Record:
+    """A construction as read by :func:`read_record`: who drew it (``student``), which
+    problem of the assignment (its number, ``problem``) of which ``family``, and its
+    ``steps`` (:class:`Drawn`) in the order they were drawn."""
+
     student: str
     problem: int
     family: str
