@@ -178,35 +178,49 @@ def notebook_client(nb, **options):
     return _client_class[0](nb, **options)
 
 
-def execute(source, timeout=CELL_TIMEOUT):
-    """Execute ``source`` with nbclient in ``course/``; returns the executed
-    notebook. Raises :class:`NotebookFailed` on a cell error or any output to
-    stderr (the failed notebook is on the exception as ``.notebook``)."""
+def execute(source, timeout=CELL_TIMEOUT, *, cwd=None, env=None, after=None):
+    """Execute ``source`` with nbclient; returns the executed notebook.
+
+    ``source`` is a course notebook (``course/NN_slug.py``, jupytext) or a written
+    ``.ipynb``; it runs in ``cwd`` (default: its own folder) with ``env`` (default
+    :func:`kernel_env`). ``after`` is the source of a cell run after the last one (a check
+    of what the cells left behind), taken out of the notebook returned. The cells get no
+    timing metadata: the documentation build's cache matches them by content. Raises
+    :class:`NotebookFailed` on a cell error or any output to stderr (the failed notebook is
+    on the exception as ``.notebook``)."""
+    import nbformat
     from nbclient.exceptions import CellExecutionError
 
     source = Path(source)
-    nb = read(source)
+    nb = nbformat.read(source, as_version=4) if source.suffix == ".ipynb" else read(source)
+    if after:
+        nb.cells.append(nbformat.v4.new_code_cell(after))
     client = notebook_client(
         nb,
         timeout=timeout,
         kernel_name="python3",
         startup_timeout=120,
         allow_errors=False,
-        resources={"metadata": {"path": str(source.parent)}},
+        record_timing=False,
+        resources={"metadata": {"path": str(cwd or source.parent)}},
     )
     try:
-        client.execute(env=kernel_env())
+        client.execute(env=kernel_env() if env is None else env)
     except CellExecutionError as exc:
-        raise _failed(nb, f"{source.name} failed:\n{exc}") from None
+        raise _failed(nb, after, f"{source.name} failed:\n{exc}") from None
     except Exception as exc:  # noqa: BLE001  a timeout, a dead kernel: the same verdict, with its kind
-        raise _failed(nb, f"{source.name} failed: {type(exc).__name__}: {exc}") from None
+        raise _failed(nb, after, f"{source.name} failed: {type(exc).__name__}: {exc}") from None
+    if after:
+        nb.cells.pop()
     found = problems(nb)
     if found:
-        raise _failed(nb, f"{source.name} wrote to stderr or failed:\n" + "\n".join(found))
+        raise _failed(nb, None, f"{source.name} wrote to stderr or failed:\n" + "\n".join(found))
     return nb
 
 
-def _failed(nb, message):
+def _failed(nb, after, message):
+    if after:  # the check cell is not the notebook's
+        nb.cells.pop()
     exc = NotebookFailed(message)
     exc.notebook = nb
     return exc

@@ -21,7 +21,6 @@ citations, practice, the graded families it names).
 import argparse
 import base64
 import json
-import os
 import re
 import time
 import warnings
@@ -32,7 +31,9 @@ import pytest
 import accelab.course
 from accelab.course import cli as course_cli
 from accelab.exercises.families import REGISTRY
-from docs.notebooks import notebook_client, problems
+from docs.notebooks import CELL_TIMEOUT, NotebookFailed, notebook_client, store
+from docs.notebooks import execute as run_notebook
+from docs.notebooks import kernel_env as site_kernel_env
 
 ROOT = Path(__file__).resolve().parents[1]
 COURSE = ROOT / "course"
@@ -40,7 +41,6 @@ BUILD = ROOT / "build" / "course"  # executed notebooks (the site test reads the
 WRITTEN = ROOT / "build" / "course-notebooks"  # what `accelab course --out` wrote
 RUN = ROOT / "build" / "course-run"  # the kernels' working folder: not course/
 BUDGET = 20.0  # s per notebook: the course's execution budget (a warning)
-CELL_TIMEOUT = 300  # s
 MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
 #: graded exercise families, from their registry
 FAMILIES = tuple(REGISTRY)
@@ -52,19 +52,13 @@ pytestmark = pytest.mark.xdist_group("course")
 _executed = {}  # stem -> (path of the executed notebook, seconds) or the exception
 
 
-class NotebookFailed(RuntimeError):
-    """A notebook raised in a cell or wrote to stderr; the message lists where."""
-
-
 def kernel_env():
-    """The environment a student's kernel might have: the Makefile's
-    MPLBACKEND=Agg (the notebooks set their inline backend themselves), headless
-    figures for explore(), and no path tricks."""
-    env = dict(os.environ)
-    env["ACCELAB_STATIC"] = "1"
+    """The environment a student's kernel might have: the Makefile's MPLBACKEND=Agg (the
+    notebooks set their inline backend themselves), headless figures for explore(), and
+    no path tricks."""
+    env = site_kernel_env()
     env["MPLBACKEND"] = "Agg"
     env.pop("PYTHONPATH", None)
-    env.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")
     return env
 
 
@@ -92,66 +86,27 @@ def widgets_log(notebook):
 
 
 def execute(notebook, outdir=BUILD, timeout=CELL_TIMEOUT):
-    """Execute the written ``notebook`` from :data:`RUN` and write the result to
-    ``outdir``; returns the executed notebook. Raises :class:`NotebookFailed` on
-    an error or stderr output."""
+    """Execute the written ``notebook`` from :data:`RUN` (``docs/notebooks.py``'s runner)
+    and write the result to ``outdir``, failed or not; returns the executed notebook.
+    Raises :class:`NotebookFailed` on an error or stderr output."""
     import nbformat
-    from nbclient.exceptions import CellExecutionError
 
-    nb = nbformat.read(notebook, as_version=4)
-    # after the last cell, every slider again, as a person moves it after Run All (taken out
-    # before the notebook is kept: the docs build's cache matches the notebook's own cells)
-    nb.cells.append(nbformat.v4.new_code_cell(CHECK_AFTER_RUN_ALL))
     RUN.mkdir(parents=True, exist_ok=True)
     outdir.mkdir(parents=True, exist_ok=True)
     target = outdir / Path(notebook).name
-    # no timing metadata on the cells: the docs build's cache must match them by content
-    client = notebook_client(
-        nb,
-        timeout=timeout,
-        kernel_name="python3",
-        startup_timeout=120,
-        allow_errors=False,
-        record_timing=False,
-        resources={"metadata": {"path": str(RUN)}},
-    )
     env = kernel_env()
     # every explore() draws each control at its ends and a few steps between (kit.check_ranges)
     checked = widgets_log(notebook)
     checked.unlink(missing_ok=True)
     env["ACCELAB_CHECK_WIDGETS"] = str(checked)
     try:
-        client.execute(env=env)
-    except CellExecutionError as exc:
-        nb.cells.pop()
-        nbformat.write(nb, target)
-        raise NotebookFailed(f"{Path(notebook).name} failed:\n{exc}") from None
-    except Exception as exc:  # a timeout, a dead kernel
-        nb.cells.pop()
-        nbformat.write(nb, target)
-        raise NotebookFailed(f"{Path(notebook).name} failed: {type(exc).__name__}: {exc}") from None
-    nb.cells.pop()
-    found = problems(nb)
+        # after the last cell, every slider again, as a person moves it after Run All
+        nb = run_notebook(notebook, timeout, cwd=RUN, env=env, after=CHECK_AFTER_RUN_ALL)
+    except NotebookFailed as exc:
+        nbformat.write(exc.notebook, target)
+        raise
     nbformat.write(nb, target)
-    if found:
-        raise NotebookFailed(
-            f"{Path(notebook).name} wrote to stderr or failed:\n" + "\n".join(found)
-        )
     return nb
-
-
-def _store(source, nb, seconds):
-    """Hand an executed notebook to the documentation build's cache, if the
-    repository has one (``docs/notebooks.py``)."""
-    import sys
-
-    if str(ROOT) not in sys.path:  # docs/ is not an installed package
-        sys.path.append(str(ROOT))
-    try:
-        from docs.notebooks import store
-    except ImportError:
-        return
-    store(source, nb, seconds)
 
 
 #: notebooks executed at once, each by a kernel of its own (this process only waits on
@@ -213,7 +168,7 @@ def executed(source):
     if key not in _executed:
         try:
             nb, seconds = _future(key).result()
-            _store(source, nb, seconds)
+            store(source, nb, seconds)  # the site test builds from the cache
             _executed[key] = (BUILD / f"{key}.ipynb", seconds)
         except NotebookFailed as exc:  # remembered so that it is not run again
             _executed[key] = exc
