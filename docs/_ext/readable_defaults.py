@@ -4,7 +4,7 @@ autodoc writes a default by its ``repr``: ``say=print`` in the code reads
 ``say=<built-in function print>`` on the page, and a dataclass field made by
 ``field(default_factory=list)`` reads ``notes=<factory>``; neither is Python nor what a
 reader would type. A default that is a function or a class is written by its name
-(``say=print``), a field's factory by what it makes (``notes=[]``, ``limits=Limits()``).
+(``say=print``), a field's factory by what it makes (``notes=[]``; a class ``C`` as ``C()``).
 Every other default keeps autodoc's text (``tol=1e-13``, ``accounts=()``), so a number
 is never hidden behind the name of a constant.
 """
