@@ -25,20 +25,15 @@ $(STAMP): pyproject.toml
 	ln -sfn $(CURDIR)/exercises/lab $(VENV)/share/jupyter/labextensions/accelab-lab
 	touch $(STAMP)
 
-# the linters' versions are pinned in pyproject's `lint` extra
-LINT_STAMP := $(VENV)/.installed-lint
-$(LINT_STAMP): $(STAMP)
-	$(BIN)/python -m pip install --quiet -e ".[test,lint]"
-	touch $(LINT_STAMP)
-
-# ruff (lint and format, pyproject's rules) and mypy (pyproject's [tool.mypy])
-lint: $(LINT_STAMP)
+# ruff (lint and format, pyproject's rules) and mypy (pyproject's [tool.mypy]); their versions are
+# pinned in pyproject's `lint` extra, which the `test` extra takes in (the tests run them too)
+lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
 	$(MAKE) --no-print-directory typecheck
 
 # mypy on the package as installed: .ci/layout.py writes its layout as links in build/typecheck
-typecheck: $(LINT_STAMP)
+typecheck: $(STAMP)
 	$(BIN)/python .ci/layout.py build/typecheck >/dev/null
 	$(BIN)/mypy
 
