@@ -1,5 +1,7 @@
 # Every target sets itself up: a fresh machine needs only Python 3 and pip.
-PYTHON ?= python3
+# The venv's Python: the faster of python3 on PATH and the system's (.ci/python.py says why);
+# `make venv PYTHON=python3.12` chooses one
+PYTHON ?= $(shell python3 .ci/python.py 2>/dev/null || echo python3)
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
@@ -40,7 +42,7 @@ typecheck: $(STAMP)
 # in parallel (pytest-xdist), half as many workers again as cores: the end-to-end tests wait
 # for browsers, servers and time limits part of the time; pyproject's addopts keep shared
 # builds in one worker
-JOBS ?= $(shell $(PYTHON) -c "import os; print(max(2, 3 * len(os.sched_getaffinity(0)) // 2))")
+JOBS ?= $(shell python3 -c "import os; print(max(2, 3 * len(os.sched_getaffinity(0)) // 2))")
 
 # the source compiled once, before the tests start hundreds of processes that import it (commands,
 # kernels, graders, the site build): where PYTHONDONTWRITEBYTECODE is set, each of them would
