@@ -21,7 +21,11 @@ $(STAMP): pyproject.toml
 	  else echo "accelab: grading runs submissions in bubblewrap: sudo apt-get install bubblewrap" >&2; fi; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[test]"
+	@# pip compiles what it installs one file after another; compileall does it on every core
+	@# (make venv 25 -> 22 s on 2 cores); a file that does not compile is skipped, as pip does
+	$(BIN)/python -m pip install --quiet --no-compile -e ".[test]"
+	-$(BIN)/python -m compileall -q -j 0 $$($(BIN)/python -c \
+	  "import sysconfig; print(sysconfig.get_path('purelib'))") >/dev/null 2>&1
 	@# an editable install leaves out data files: accelab's JupyterLab extension is linked in
 	mkdir -p $(VENV)/share/jupyter/labextensions
 	ln -sfn $(CURDIR)/exercises/lab $(VENV)/share/jupyter/labextensions/accelab-lab
