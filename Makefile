@@ -22,7 +22,7 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	@# pip compiles what it installs one file after another; compileall does it on every core
-	@# (make venv 25 -> 22 s on 2 cores); a file that does not compile is skipped, as pip does
+	@# (the install 25 -> 22 s on 2 cores); a file that does not compile is skipped, as pip does
 	$(BIN)/python -m pip install --quiet --no-compile -e ".[test]"
 	-$(BIN)/python -m compileall -q -j 0 $$($(BIN)/python -c \
 	  "import sysconfig; print(sysconfig.get_path('purelib'))") >/dev/null 2>&1

@@ -6,7 +6,8 @@ that are at least 3.10 and can make a venv (``venv`` and ``ensurepip``: Debian's
 link-time optimization; a Python built by hand (pyenv's default build) runs pure-Python code
 about a third slower, and most of what the tests run is pure Python: Sphinx, nbgrader,
 Jupyter's servers, pytest itself. Measured side by side on a 2-core machine, clean clones:
-``make test`` 236 s (442 busy cpu-s) on Debian's 3.11.2, 269 s (509) on pyenv's 3.11.7.
+``make test`` 236 s (442 busy cpu-s) on Debian's 3.11.2, 269 s (509) on pyenv's 3.11.7; in a
+second pair, 241 s against 255 s.
 
 Speed is measured, not guessed from build flags (Debian's PGO build does not say
 ``--enable-optimizations`` in its configure arguments): the best of a few short loops, a
