@@ -145,11 +145,38 @@ def reference(mech, case, circuit, extra=()):
     )
 
 
-def assert_agree(got, want, rtol=RTOL, floor=FLOOR, expected=None):
-    """Every output of ``got`` agrees with ``want`` (see _checks.errors)."""
+def point_terms(mech, want, extra):
+    """The size of the terms each extra point's velocity, acceleration and jerk add up
+    [SI]: its link's base point, then p omega; p alpha and p omega^2; p jerk, 3 p omega
+    alpha and p omega^3 (eq. 7.40). A sum is no more accurate than its largest term allows:
+    where the terms nearly cancel, the point's vector is small beside them and its error
+    is judged against them (hypothesis found J_Q4 0.078 m/s^3 from terms of 0.92, off by
+    2.4e-13 m/s^3: 3e-12 of itself, 3e-13 of its terms)."""
+    out = {}
+    for name, link, p, _delta in extra:
+        base = BASES[mech][link]
+        w, al, j = (float(abs(want[f"{n}{link}"])) for n in ("omega", "alpha", "jerk"))
+
+        def size(x, base=base):  # the base point's vector (O2 is at rest)
+            return float(abs(want[f"{x}_{base}"])) if f"{x}_{base}" in want else 0.0
+
+        out[f"V_{name}"] = size("V") + p * w
+        out[f"A_{name}"] = size("A") + p * (al + w * w)
+        out[f"J_{name}"] = size("J") + p * (j + 3.0 * w * al + w**3)
+    return out
+
+
+def assert_agree(got, want, rtol=RTOL, floor=FLOOR, expected=None, terms=None):
+    """Every output of ``got`` agrees with ``want`` (see _checks.errors); an output named
+    in ``terms`` (:func:`point_terms`) is judged against its terms where they are larger."""
     missing = set(expected or ()) - set(got)
     assert not missing, f"kernel did not report {sorted(missing)}"
     err = check.errors(got, want, floor)
+    sizes = check.scales(want)
+    for k, size in (terms or {}).items():
+        if k in err:
+            judged = max(float(abs(want[k])), floor * sizes.get(check._group(k), 0.0))
+            err[k] *= judged / max(judged, size, 1e-30)
     assert set(err) >= set(expected or ()), "reference lacks outputs"
     bad = {k: f"{e:.1e}" for k, e in err.items() if not e <= rtol}
     assert not bad, f"outputs off (relative error): {bad}"
@@ -213,9 +240,15 @@ ISOSCELES = {
     "jerk2": -1.0,
 }
 
+#: a = d again: J_Q4 (0.078 m/s^3) is what is left of terms of 0.92; hypothesis found it
+CANCELLING_J_Q4 = dict(
+    ISOSCELES, a=1.0, d=1.0, theta1=1.1875, theta2=0.9375, omega2=-1.5, alpha2=0.0, jerk2=-1.0
+)
+
 
 @given(case=invertedslidercranks(), circuit=circuits, extra=points_on_links([2, 3, 4]))
 @example(case=ISOSCELES, circuit="open", extra=[("Q2", 2, 1.0, 0.0), ("Q4", 4, 1.0, 0.0)])
+@example(case=CANCELLING_J_Q4, circuit="open", extra=[("Q2", 2, 1.0, 0.0), ("Q4", 4, 1.0, 0.0)])
 def test_invertedslidercrank_matches_reference(case, circuit, extra):
     m = run_kernel("invertedslidercrank", case, circuit)
     assert m.status == OK
@@ -230,6 +263,7 @@ def test_invertedslidercrank_matches_reference(case, circuit, extra):
         want,
         floor=FLOOR * ratio,
         expected=expected_outputs("invertedslidercrank", extra),
+        terms=point_terms("invertedslidercrank", want, extra),
     )
 
 

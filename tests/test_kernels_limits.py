@@ -403,3 +403,35 @@ def test_batch_near_limits_with_the_reference_check_rules(mech, geo):
         assert not why, f"{name}: {why}"
         answered += 1
     assert answered >= len(cases) // 2
+
+
+# ------------------------------------------------------------ the crank pin over the pivot
+#: a = d and c = 0: the slide line through O4 and A turns at omega2 / 2 exactly (an inscribed
+#: angle), so alpha4 = jerk4 = 0 at constant omega2, wherever A is; at A right over O4
+#: (theta2 = theta1) link 4's direction is 0/0
+OVER_THE_PIVOT = {
+    "mechanism": "invertedslidercrank",
+    "a": "1 m",
+    "c": "0 m",
+    "d": "1 m",
+    "gamma": "90 deg",
+    "theta2": "0 rad",
+    "omega2": "1 rad/s",
+    "alpha2": "0 rad/s^2",
+}
+
+
+@pytest.mark.parametrize("theta1", [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 0.0])
+def test_a_crank_pin_over_the_pivot_is_answered_right_or_refused(theta1):
+    """Each derivative divides by |A - O4| again, so its round-off grows like
+    (span / |A - O4|)^n, whether or not the output itself grows: with A 1e-5 m from O4 the
+    jerk came out -2.5e3 rad/s^3 for 0 and was answered as right. Now it is right within
+    the near-limit rule, or refused with the distance and how far to move."""
+    (r,) = solve_cases([dict(OVER_THE_PIVOT, theta1=f"{theta1!r} rad")])
+    if r["ok"]:
+        assert abs(r["omega4"] - 0.5) < 1e-5 * 0.5
+        assert abs(r["alpha4"]) < 1e-5 and abs(r["jerk4"]) < 1e-5, r
+    else:
+        assert r["error"] == "singular", r
+        assert theta1 <= 1e-3, f"refused {theta1} rad from the pivot: {r['message']}"
+        assert "from the pivot O4" in r["message"] and "rad from theta1" in r["message"], r

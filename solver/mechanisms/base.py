@@ -740,10 +740,10 @@ class Mechanism:
         )
         raise Singular(
             f"{type(self).__name__} is at (or within round-off of) a limit position "
-            f"at {where}: {self._singular_reason()} (condition "
+            f"at {where}: {self._singular_reason(motion, inputs)} (condition "
             f"{float(motion.condition):.2e}), so its velocity and acceleration "
-            f"equations are singular or nearly so ({cost}). Move theta2 "
-            f"away from the limit (about 1e-6 rad is enough), or pass an array of "
+            f"equations are singular or nearly so ({cost}). "
+            f"{self._singular_advice(motion, inputs)}, or pass an array of "
             f"theta2 to get a validity mask instead of this error.",
             condition=float(motion.condition),
         )
@@ -751,5 +751,8 @@ class Mechanism:
     def _not_assemblable_reason(self, motion, inputs):
         return "the links cannot close the vector loop. Change theta2 or the link lengths."
 
-    def _singular_reason(self):
+    def _singular_reason(self, motion, inputs):
         return "the output links are collinear"
+
+    def _singular_advice(self, motion, inputs):
+        return "Move theta2 away from the limit (about 1e-6 rad is enough)"

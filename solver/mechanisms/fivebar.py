@@ -90,5 +90,5 @@ class GearedFiveBar(Mechanism):
             f"b + c). Choose another theta2, phase phi or link lengths."
         )
 
-    def _singular_reason(self):
+    def _singular_reason(self, motion, inputs):
         return "the two couplers (links 3 and 4) are collinear"

@@ -167,5 +167,5 @@ class FourBar(Mechanism):
             f"deg; choose theta2 there or change the link lengths."
         )
 
-    def _singular_reason(self):
+    def _singular_reason(self, motion, inputs):
         return "the coupler and rocker (links 3 and 4) are collinear (a toggle position)"

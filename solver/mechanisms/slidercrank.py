@@ -82,5 +82,5 @@ class SliderCrank(Mechanism):
             f"another theta2, a longer rod or a smaller offset."
         )
 
-    def _singular_reason(self):
+    def _singular_reason(self, motion, inputs):
         return "the connecting rod is perpendicular to the slide"
