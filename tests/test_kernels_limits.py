@@ -406,32 +406,45 @@ def test_batch_near_limits_with_the_reference_check_rules(mech, geo):
 
 
 # ------------------------------------------------------------ the crank pin over the pivot
-#: a = d and c = 0: the slide line through O4 and A turns at omega2 / 2 exactly (an inscribed
-#: angle), so alpha4 = jerk4 = 0 at constant omega2, wherever A is; at A right over O4
-#: (theta2 = theta1) link 4's direction is 0/0
+#: a = d: A passes over O4 at theta2 = theta1, where link 4's direction is 0/0. With c = 0 the
+#: slide line through O4 and A turns at omega2 / 2 exactly (an inscribed angle); in the fourbar
+#: b = c as well (a kite), links 3 and 4 folded there
 OVER_THE_PIVOT = {
-    "mechanism": "invertedslidercrank",
-    "a": "1 m",
-    "c": "0 m",
-    "d": "1 m",
-    "gamma": "90 deg",
-    "theta2": "0 rad",
-    "omega2": "1 rad/s",
-    "alpha2": "0 rad/s^2",
+    "invertedslidercrank": {"a": 1.0, "c": 0.0, "d": 1.0, "gamma": math.pi / 2},
+    "fourbar": {"a": 1.0, "b": 2.0, "c": 2.0, "d": 1.0},
+    # the geared fivebar's crank pins A and C meet at theta2 = 0 (b = c)
+    "fivebar": {"a": 1.0, "b": 2.0, "c": 2.0, "d": 1.0, "f": 2.0, "lam": -2.0, "phi": math.pi},
 }
+UNITS = {"gamma": "rad", "phi": "rad", "lam": ""}
 
 
+@pytest.mark.parametrize("mech", sorted(OVER_THE_PIVOT))
 @pytest.mark.parametrize("theta1", [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 0.0])
-def test_a_crank_pin_over_the_pivot_is_answered_right_or_refused(theta1):
-    """Each derivative divides by |A - O4| again, so its round-off grows like
-    (span / |A - O4|)^n, whether or not the output itself grows: with A 1e-5 m from O4 the
-    jerk came out -2.5e3 rad/s^3 for 0 and was answered as right. Now it is right within
-    the near-limit rule, or refused with the distance and how far to move."""
-    (r,) = solve_cases([dict(OVER_THE_PIVOT, theta1=f"{theta1!r} rad")])
-    if r["ok"]:
-        assert abs(r["omega4"] - 0.5) < 1e-5 * 0.5
-        assert abs(r["alpha4"]) < 1e-5 and abs(r["jerk4"]) < 1e-5, r
+def test_a_crank_pin_over_the_pivot_is_answered_right_or_refused(theta1, mech):
+    """Each derivative divides by a length no larger than |A - O4| once more, so its
+    round-off grows like (span / |A - O4|)^n whether or not the output grows: with A 1e-5 m
+    from O4 jerk4 came out -2.5e3 rad/s^3 for 0 and was answered as right. Now it is right
+    (within the near-limit rule, 1e-5, against the 50-digit reference) or refused with the
+    distance and how far to move."""
+    geo = OVER_THE_PIVOT[mech]
+    case = {"mechanism": mech, **{k: f"{v!r} {UNITS.get(k, 'm')}" for k, v in geo.items()}}
+    case.update(theta1=f"{theta1!r} rad", theta2="0 rad", omega2="1 rad/s", alpha2="0 rad/s^2")
+    if mech == "fivebar":  # A and C meet at theta2 = 0: approach them by theta2
+        case.update(theta1="0 rad", theta2=f"{theta1!r} rad")
+        theta2, theta1 = theta1, 0.0
     else:
+        theta2 = 0.0
+    (r,) = solve_cases([case])
+    if not r["ok"]:
         assert r["error"] == "singular", r
-        assert theta1 <= 1e-3, f"refused {theta1} rad from the pivot: {r['message']}"
-        assert "from the pivot O4" in r["message"] and "rad from theta1" in r["message"], r
+        assert max(theta1, theta2) <= 1e-3, f"refused so far from the pivot: {r['message']}"
+        if mech == "fivebar":
+            assert "crank pins A and C come within" in r["message"], r
+            assert "until A and C are at least" in r["message"], r
+        else:
+            assert "from the pivot O4" in r["message"] and "rad from theta1" in r["message"], r
+        return
+    want = ref.solve(mech, geo, theta2, 1.0, 0.0, 0.0, theta1, "open")
+    for name in ("omega4", "alpha4", "jerk4"):
+        scale = max(abs(float(want[name])), 1.0)
+        assert abs(r[name] - float(want[name])) < 1e-5 * scale, (name, r[name], want[name])

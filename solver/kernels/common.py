@@ -61,6 +61,38 @@ MAX_ROUNDOFF = 1e-6
 ROUNDOFF_GAIN = 4.0
 
 
+#: |A - O4| / span below which :func:`over_the_pivot` refuses outputs of each order
+_PIVOT_FRACTIONS = {n: float((ROUNDOFF_GAIN * EPS / MAX_ROUNDOFF) ** (1.0 / n)) for n in (1, 2, 3)}
+
+
+def pivot_fraction(order: int) -> float:
+    """|A - O4| / span below which :func:`over_the_pivot` refuses outputs of ``order``
+    (1e-9 for a velocity, 3e-5 for an acceleration, 1e-3 for a jerk)."""
+    return _PIVOT_FRACTIONS[min(max(order, 1), 3)]
+
+
+def over_the_pivot(status: Any, roundoff: Any, s: Any, span: float, order: int) -> tuple[Any, Any]:
+    """``(status, roundoff)`` with the round-off of a pin passing over a pivot.
+
+    Where the crank pin A nears the pivot O4 (s = |A - O4| -> 0; reachable only where
+    a = d, and in the fourbar b = c too), or in the geared fivebar the crank pins A and C
+    meet (s = |C - A|, b = c), the direction of the link between them is 0/0, and each
+    derivative divides by a length no larger than s once more: an order-n output carries a
+    round-off of about eps (span / s)^n of its scale, even where the output stays finite
+    (the kite and the isosceles inverted slider-crank turn link 4 at omega2 / 2 exactly).
+    :func:`classify`'s estimate, eps span / gap, holds where the outputs grow toward a limit,
+    not here: with A 1e-5 m from O4 (a = d = 1 m) jerk4 came out -2.5e3 rad/s^3 for 0.
+    ``ROUNDOFF_GAIN * eps * (span / s)^order`` (measured: 3 to 5 times eps (span / s)^n) is
+    taken as the round-off where larger, and a position SINGULAR where it passes
+    :data:`MAX_ROUNDOFF`: about 1e-3 span from O4 for a jerk, 3e-5 for an acceleration.
+    """
+    if order < 1 or not np.min(s, initial=np.inf) < span * pivot_fraction(order):
+        return status, roundoff  # no position that near: nothing to add (the usual case)
+    pivot = ROUNDOFF_GAIN * EPS * (span / s) ** order
+    status = where((status == OK) & ~(pivot <= MAX_ROUNDOFF), np.int8(SINGULAR), status)
+    return status, np.maximum(roundoff, pivot)
+
+
 def classify(gap: Any, span: float) -> tuple[Any, Any]:
     """Status and estimated relative round-off of positions from their gap.
 

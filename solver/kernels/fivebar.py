@@ -37,6 +37,7 @@ from .common import (
     length_unit,
     masked,
     outputs,
+    over_the_pivot,
     piecewise,
     triangle_angles,
     without_float_warnings,
@@ -128,6 +129,8 @@ def solve(
     S = -sigma * area4 / (2.0 * b * c)
     condition = np.abs(S)
     status, roundoff = classify(gap, span)
+    # A and C meeting (b = c): each derivative divides by a length <= |C - A| once more
+    status, roundoff = over_the_pivot(status, roundoff, s, span, order)
     theta3 = np.arctan2(s3, c3) + theta1
     theta4 = np.arctan2(s4, c4) + theta1
     out = FiveBarMotion(

@@ -73,7 +73,9 @@ from .common import (
     length_unit,
     masked,
     outputs,
+    over_the_pivot,
     pieces,
+    pivot_fraction,
     same_shapes,
     without_float_warnings,
 )
@@ -205,9 +207,13 @@ def solve(
     order = min(order, 3)
     unit = length_unit(a, b, c, d)  # scale-free: lengths near 1, exactly
     a, b, c, d = a / unit, b / unit, c / unit, d / unit
+    span = a + b + c + d
+    # A can come within the pivot's reach of O4 only where a = d and b = c nearly (a kite)
+    kite = order > 0 and max(abs(a - d), abs(b - c)) < span * pivot_fraction(order)
     if (
         isinstance(theta2, np.ndarray)
         and theta2.size >= MIN_IN_PLACE
+        and not kite
         and same_shapes(theta2, (omega2, alpha2, jerk2), (a, b, c, d, theta1))
     ):
         return _solve_in_place(
@@ -229,7 +235,10 @@ def solve(
     cos2, sin2 = np.cos(t2), np.sin(t2)
     c3, s3, c4, s4, area4, gap = position(a, b, c, d, cos2, sin2, sigma)
     condition = area4 / (2.0 * b * c)
-    status, roundoff = classify(gap, a + b + c + d)
+    status, roundoff = classify(gap, span)
+    if kite:  # A next to O4: each derivative divides by a length <= |A - O4| once more
+        s = np.hypot(d - a * cos2, a * sin2)
+        status, roundoff = over_the_pivot(status, roundoff, s, span, order)
     theta3 = np.arctan2(s3, c3)
     theta4 = np.arctan2(s4, c4)
     if turned:

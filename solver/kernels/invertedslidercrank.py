@@ -32,10 +32,7 @@ import numpy as np
 
 from .common import (
     EPS,
-    MAX_ROUNDOFF,
     OK,
-    ROUNDOFF_GAIN,
-    SINGULAR,
     Floats,
     Motion,
     acc_term,
@@ -47,6 +44,7 @@ from .common import (
     length_unit,
     masked,
     outputs,
+    over_the_pivot,
     piecewise,
     scale_lengths,
     slider,
@@ -145,14 +143,8 @@ def _solve(a, c, d, gamma, theta2, omega2, alpha2, jerk2, theta1, circuit, order
     s4 = (ry * px - rx * py) / (s * s)
     condition = root / s
     status, roundoff = classify(gap, span)
-    # A next to O4 (s -> 0, reachable only where a = d): link 4's direction is 0/0 there, and
-    # each derivative divides by b + c cos gamma <= s once more, so an order-n output carries
-    # a round-off of about eps (span / s)^n of its scale even where it stays finite (a = d,
-    # c = 0: omega4 = omega2 / 2 exactly, yet with A 1e-5 m from O4 jerk4 came out
-    # -2.5e3 rad/s^3 for 0): refused where that estimate exceeds MAX_ROUNDOFF
-    pivot = ROUNDOFF_GAIN * EPS * (span / s) ** max(order, 1)
-    roundoff = np.maximum(roundoff, pivot)
-    status = where((status == OK) & (pivot > MAX_ROUNDOFF), np.int8(SINGULAR), status)
+    # A next to O4: each derivative divides by b + c cos gamma <= s once more
+    status, roundoff = over_the_pivot(status, roundoff, s, span, order)
     c3 = c4 * cg - s4 * sg
     s3 = s4 * cg + c4 * sg
     theta4 = np.arctan2(s4, c4) + theta1

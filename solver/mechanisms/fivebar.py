@@ -3,6 +3,7 @@
 import numpy as np
 
 from ..kernels import fivebar as kernel
+from . import pivot
 from .base import Mechanism
 
 
@@ -90,5 +91,30 @@ class GearedFiveBar(Mechanism):
             f"b + c). Choose another theta2, phase phi or link lengths."
         )
 
+    def _pins_apart(self, inputs):
+        """|C - A| [m] where the crank pins nearly meet (see :mod:`.pivot`), else None."""
+        t2 = inputs["theta2"] - self._theta1
+        t5 = self._lam * t2 + self._phi
+        r = self._f + self._d * np.exp(1j * t5) - self._a * np.exp(1j * t2)
+        span = self._a + self._b + self._c + self._d + self._f
+        return abs(r) if abs(r) < span * pivot.FRACTION else None
+
     def _singular_reason(self, motion, inputs):
+        s = self._pins_apart(inputs)
+        if s is not None:
+            return (
+                f"the crank pins A and C come within {self._show(s)} of each other (b = c), "
+                f"where the couplers' directions are undefined and each derivative divides "
+                f"by |C - A| again"
+            )
         return "the two couplers (links 3 and 4) are collinear"
+
+    def _singular_advice(self, motion, inputs):
+        if self._pins_apart(inputs) is not None:
+            span = self._a + self._b + self._c + self._d + self._f
+            return (
+                f"Move theta2 until A and C are at least about "
+                f"{self._show(span * pivot.FRACTION)} apart, or make b and c differ by more "
+                f"than that"
+            )
+        return super()._singular_advice(motion, inputs)

@@ -7,6 +7,7 @@ import numpy as np
 
 from ..kernels import fourbar as kernel
 from ..units import QuantityLike, to_si
+from . import pivot
 from .base import Mechanism, Result, check_order
 
 
@@ -167,5 +168,18 @@ class FourBar(Mechanism):
             f"deg; choose theta2 there or change the link lengths."
         )
 
+    def _near_pivot(self, inputs):
+        span = self._a + self._b + self._c + self._d
+        return pivot.near(self._a, self._d, self._theta1, inputs["theta2"], span)
+
     def _singular_reason(self, motion, inputs):
+        s = self._near_pivot(inputs)
+        if s is not None:
+            return pivot.reason(self._show(s), "a = d and b = c: a kite")
         return "the coupler and rocker (links 3 and 4) are collinear (a toggle position)"
+
+    def _singular_advice(self, motion, inputs):
+        if self._near_pivot(inputs) is not None:
+            span = self._a + self._b + self._c + self._d
+            return pivot.advice(self._a, span, "a and d, or b and c,")
+        return super()._singular_advice(motion, inputs)

@@ -5,12 +5,8 @@ import numpy as np
 
 from ..errors import InvalidInput
 from ..kernels import invertedslidercrank as kernel
-from ..kernels.common import EPS, MAX_ROUNDOFF, ROUNDOFF_GAIN
+from . import pivot
 from .base import Mechanism
-
-#: |A - O4| / (a + c + d) below which the kernel's pivot estimate refuses a jerk:
-#: (ROUNDOFF_GAIN eps / MAX_ROUNDOFF)^(1/3) (kernels/invertedslidercrank.py)
-_PIVOT_FRACTION = (ROUNDOFF_GAIN * EPS / MAX_ROUNDOFF) ** (1.0 / 3.0)
 
 
 class InvertedSliderCrank(Mechanism):
@@ -114,29 +110,16 @@ class InvertedSliderCrank(Mechanism):
         )
 
     def _near_pivot(self, inputs):
-        """|A - O4| [m] where A passes so near O4 that the derivatives lose more than
-        MAX_ROUNDOFF (the kernel's pivot estimate, for jerk), or None."""
-        t = inputs["theta2"] - self._theta1
-        s = float(np.hypot(self._a * np.cos(t) - self._d, self._a * np.sin(t)))
         span = self._a + self._c + self._d
-        return s if s < span * _PIVOT_FRACTION else None
+        return pivot.near(self._a, self._d, self._theta1, inputs["theta2"], span)
 
     def _singular_reason(self, motion, inputs):
         s = self._near_pivot(inputs)
         if s is not None:
-            return (
-                f"the crank pin A passes {self._show(s)} from the pivot O4 (a and d nearly "
-                f"equal), where link 4's direction is undefined and each derivative divides "
-                f"by |A - O4| again"
-            )
+            return pivot.reason(self._show(s), "a = d")
         return "the slide line is tangent to the crank pin's reach (b + c cos gamma = 0)"
 
     def _singular_advice(self, motion, inputs):
         if self._near_pivot(inputs) is not None:
-            span = self._a + self._c + self._d
-            angle = span * _PIVOT_FRACTION / self._a
-            return (
-                f"Keep theta2 at least about {angle:.0e} rad from theta1 (A over O4 there), "
-                f"or make a and d differ by more than that fraction"
-            )
+            return pivot.advice(self._a, self._a + self._c + self._d, "a and d")
         return super()._singular_advice(motion, inputs)
