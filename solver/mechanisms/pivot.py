@@ -31,8 +31,9 @@ def reason(shown, equal):
 
 
 def advice(a, span, equal):
-    """How far to move: theta2 from theta1 [rad], or the lengths apart."""
+    """How far to move: theta2 from theta1 [rad], or the lengths apart (as a share of
+    ``span``, the sum of the mechanism's lengths)."""
     return (
         f"Keep theta2 at least about {span * FRACTION / a:.0e} rad from theta1 (A is over O4 "
-        f"there), or make {equal} differ by more than {FRACTION:.0e} of their sum"
+        f"there), or make {equal} differ by more than {FRACTION:.0e} of the lengths' sum"
     )
