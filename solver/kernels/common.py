@@ -85,6 +85,23 @@ def over_the_pivot(status: Any, roundoff: Any, s: Any, span: float, order: int) 
     ``ROUNDOFF_GAIN * eps * (span / s)^order`` (measured: 3 to 5 times eps (span / s)^n) is
     taken as the round-off where larger, and a position SINGULAR where it passes
     :data:`MAX_ROUNDOFF`: about 1e-3 span from O4 for a jerk, 3e-5 for an acceleration.
+
+    Parameters
+    ----------
+    status, roundoff : int8 and float (or arrays)
+        From :func:`classify`.
+    s : float or array
+        Distance between the pin and the pivot (or pin) it passes [m, kernel's lengths].
+    span : float
+        Sum of the mechanism's lengths [m, the same measure].
+    order : int
+        Highest derivative solved (1 velocity .. 3 jerk); 0 adds nothing.
+
+    Returns
+    -------
+    status, roundoff
+        SINGULAR where the pivot's round-off passes MAX_ROUNDOFF (an OK position only), and
+        the larger of the two estimates [-].
     """
     if order < 1 or not np.min(s, initial=np.inf) < span * pivot_fraction(order):
         return status, roundoff  # no position that near: nothing to add (the usual case)
