@@ -9,7 +9,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv lint typecheck test test-fast demo figures docs bench bench-grading clean
+.PHONY: venv pip-install lint typecheck test test-fast demo figures docs bench bench-grading clean
 
 venv: $(STAMP)
 
@@ -20,16 +20,28 @@ $(STAMP): pyproject.toml
 	    { apt-get update -q >/dev/null && apt-get install -y -q bubblewrap >/dev/null; }; \
 	  else echo "accelab: grading runs submissions in bubblewrap: sudo apt-get install bubblewrap" >&2; fi; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	@# pip compiles what it installs one file after another; compileall does it on every core
-	@# (the install 25 -> 22 s on 2 cores); a file that does not compile is skipped, as pip does
-	$(BIN)/python -m pip install --quiet --no-compile -e ".[test]"
-	-$(BIN)/python -m compileall -q -j 0 $$($(BIN)/python -c \
-	  "import sysconfig; print(sysconfig.get_path('purelib'))") >/dev/null 2>&1
+	@# uv (from PyPI, into the venv) installs the same packages as pip in half the time (a clean
+	@# clone's `make venv` 26 -> 13 s on 2 cores: parallel downloads, bytecode compiled on every
+	@# core); where uv cannot be had or cannot install (no wheel for this platform, an index
+	@# that only pip is configured for), pip does it
+	$(BIN)/python -m pip install --quiet uv >/dev/null 2>&1 && \
+	  $(BIN)/uv pip install --quiet --python $(BIN)/python --compile-bytecode \
+	    --upgrade-package pip pip -e ".[test]" || \
+	  { echo "accelab: uv did not install the packages; pip does" >&2; \
+	    $(MAKE) --no-print-directory pip-install; }
 	@# an editable install leaves out data files: accelab's JupyterLab extension is linked in
 	mkdir -p $(VENV)/share/jupyter/labextensions
 	ln -sfn $(CURDIR)/exercises/lab $(VENV)/share/jupyter/labextensions/accelab-lab
 	touch $(STAMP)
+
+# the same with pip alone (uv's fall-back): pip compiles what it installs one file after another,
+# compileall does it on every core (the install 25 -> 22 s on 2 cores); a file that does not
+# compile is skipped, as pip does
+pip-install:
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet --no-compile -e ".[test]"
+	-$(BIN)/python -m compileall -q -j 0 $$($(BIN)/python -c \
+	  "import sysconfig; print(sysconfig.get_path('purelib'))") >/dev/null 2>&1
 
 # ruff (lint and format, pyproject's rules) and mypy (pyproject's [tool.mypy]); their versions are
 # pinned in pyproject's `lint` extra, which the `test` extra takes in (the tests run them too)
