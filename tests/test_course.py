@@ -7,11 +7,11 @@ packages and set their own inline backend. A test fails on any error or any
 output on stderr, and checks that the executed notebook holds its figures,
 its animation and its practice problems' verdicts.
 
-Each notebook is executed once per session, two at a time: :func:`executed` keeps the
-executed notebook in ``build/course/NN_slug.ipynb`` and in the documentation
-build's execution cache (``docs/notebooks.py``), so the site test that runs
-after it (``tests/test_docs.py``) builds the course pages without executing
-the notebooks again.
+Each notebook is executed once per session, one after another (``AT_ONCE`` says
+why): :func:`executed` keeps the executed notebook in ``build/course/NN_slug.ipynb``
+and in the documentation build's execution cache (``docs/notebooks.py``), so the
+site test that runs after it (``tests/test_docs.py``) builds the course pages
+without executing the notebooks again.
 
 The fast tests check each notebook's shape against the course conventions
 (title cell, section order, folded answers, numbered equations, next link,
