@@ -6,6 +6,7 @@ import numpy as np
 
 from ..errors import Singular
 from ..status import OK, SINGULAR
+from . import joints
 from .derivatives import point_motion, solve_derivatives
 from .description import read_description
 from .newton import DEFAULT_TOL, SINGULAR_CONDITION, LoopSystem, check_tol, condition
@@ -86,14 +87,21 @@ def solve(system, theta2, omega2, alpha2=0.0, jerk2=0.0, order=3, tol=DEFAULT_TO
         out.condition[ok] = cond
         singular = np.zeros(N, dtype=bool)
         singular[ok] = ~(cond >= SINGULAR_CONDITION)
+        # two joints meeting: round-off grows with the derivative's order (joints.py)
+        meet, why = joints.meeting(system.model, d["L"], d["theta"], cond, order)
+        singular[np.flatnonzero(ok)[meet]] = True
         if singular.any():  # positions stand; their derivatives cannot be vouched for
             status[singular] = SINGULAR
             for arr in dL + dth + pts[1:]:
                 arr[singular] = np.nan
             i = int(np.flatnonzero(singular)[0])
-            out.message = out.message or Singular(
-                singular_message(theta2[i], out.condition[i]), condition=float(out.condition[i])
-            )
+            if why is not None and int(np.flatnonzero(ok)[why[0]]) == i:
+                text = joints.message(
+                    theta2[i], *why[1:], model=system.model, unit=system.unit, order=order
+                )
+            else:
+                text = singular_message(theta2[i], out.condition[i])
+            out.message = out.message or Singular(text, condition=float(out.condition[i]))
     unit = system.unit  # back from the system's normalized lengths
     if unit != 1.0:
         q[:, system.model.unknown_is_length] *= unit

@@ -1,0 +1,90 @@
+"""accelab.solver.vectorloops.joints: where two joints of a loop meet, right or refused.
+
+A kite fourbar (a = d, b = c) as vector loops: at theta2 = theta1 the crank pin A sits on
+the pivot O4 and links 3 and 4 fold onto each other. The motion stays smooth there, but
+the direction of the diagonal from O4 to A is 0/0, and each derivative divides by its
+length once more: at a Jacobian condition measure of 5e-4 (A 1e-3 m from O4) the jerk
+came out 1.7e-4 of its scale off, and at 1.5e-4 2e-2 off, both answered as right (the
+fixed SINGULAR_CONDITION, 1e-4, refused only nearer). Each case below is right against
+the 50-digit reference within 1e-5 of its scale, or refused, saying which joints meet and
+how far to move.
+"""
+
+import math
+
+import pytest
+
+import accelab.benchmarks.reference as ref
+from accelab.solver.vectorloops import solve_loops_case
+from accelab.solver.vectorloops.joints import diagonals
+from accelab.solver.vectorloops.solve import system_from_case
+
+KITE = {"a": 1.0, "b": 2.0, "c": 2.0, "d": 1.0}
+#: farther than this from the pivot (theta1 - theta2 [rad]), refusing is wrong
+MUST_ANSWER = 1e-2
+
+
+def fourbar_loops(geo, theta1, theta2, guess3, guess4, omega2=1.0):
+    a, b, c, d = (geo[k] for k in "abcd")
+    return {
+        "mechanism": "loops",
+        "vectors": {
+            "R1": {"length": f"{d!r} m", "angle": f"{theta1!r} rad"},
+            "R2": {"length": f"{a!r} m", "angle": "input"},
+            "R3": {"length": f"{b!r} m", "angle": "unknown", "guess": f"{guess3!r} rad"},
+            "R4": {"length": f"{c!r} m", "angle": "unknown", "guess": f"{guess4!r} rad"},
+        },
+        "loops": ["R2 + R3 - R4 - R1"],
+        "theta2": f"{theta2!r} rad",
+        "omega2": f"{omega2!r} rad/s",
+        "alpha2": "0 rad/s^2",
+    }
+
+
+def test_each_diagonal_of_a_loop_once():
+    case = fourbar_loops(KITE, 0.0, 1.0, 1.0, 1.0)
+    labels = sorted(label for label, _, _ in diagonals(system_from_case(case).model))
+    # O2 to B, and A to O4 by way of B (each also the rest of the loop, read back)
+    assert labels == ["R2 + R3", "R3 - R4"], labels
+
+
+@pytest.mark.parametrize("theta1", [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 1e-5, 0.0])
+def test_a_pin_over_a_pivot_is_answered_right_or_refused(theta1):
+    with_pin_off = max(theta1, 1e-2)  # the guesses: the folded kite's, from farther out
+    near = ref.solve("fourbar", KITE, 0.0, 1.0, 0.0, 0.0, with_pin_off, "open")
+    case = fourbar_loops(
+        KITE, theta1, 0.0, float(near["theta3"]) + 0.02, float(near["theta4"]) + 0.02
+    )
+    res = solve_loops_case(case)
+    if not res["ok"]:
+        assert res["error"] == "singular", res
+        assert theta1 < MUST_ANSWER, f"refused {theta1} rad from the pivot: {res['message']}"
+        message = res["message"]
+        assert "two joints of the loop 'R2 + R3 - R4 - R1' meet" in message or (
+            "condition measure" in message and theta1 <= 1e-4
+        ), message
+        if "meet" in message:
+            assert "Move theta2 until the two joints are at least" in message, message
+            assert "round-off in the jerk" in message, message
+        return
+    want = ref.solve("fourbar", KITE, 0.0, 1.0, 0.0, 0.0, theta1, "open")
+    for vector, n in (("R3", "3"), ("R4", "4")):
+        got = res["vectors"][vector]
+        assert math.isclose(got["angle"] % (2 * math.pi), float(want["theta" + n]) % (2 * math.pi))
+        for key, name in (("omega", "omega"), ("alpha", "alpha"), ("jerk", "jerk")):
+            exact = float(want[name + n])
+            assert abs(got[key] - exact) <= 1e-5 * max(abs(exact), 1.0), (vector, key, got, exact)
+
+
+def test_joints_meeting_where_the_equations_stay_well_conditioned_are_answered():
+    """The other kite (a = b, c = d) has a branch on which B stays on the pivot O2 while
+    link 3 turns with the crank: the diagonal O2-B is zero all along, but links 3 and 4 are
+    not aligned and nothing divides by it. omega3 = omega2 and link 4 stands still."""
+    geo = {"a": 1.0, "b": 1.0, "c": 2.0, "d": 2.0}
+    theta2 = math.pi / 2
+    case = fourbar_loops(geo, 0.0, theta2, theta2 + math.pi + 0.01, math.pi - 0.01, 3.0)
+    res = solve_loops_case(case)
+    assert res["ok"], res
+    r3, r4 = res["vectors"]["R3"], res["vectors"]["R4"]
+    assert math.isclose(r3["omega"], 3.0, rel_tol=1e-12)
+    assert abs(r4["omega"]) < 1e-12 and abs(r4["alpha"]) < 1e-11 and abs(r4["jerk"]) < 1e-10
