@@ -7,7 +7,7 @@ length once more: at a Jacobian condition measure of 5e-4 (A 1e-3 m from O4) the
 came out 1.7e-4 of its scale off, and at 1.5e-4 2e-2 off, both answered as right (the
 fixed SINGULAR_CONDITION, 1e-4, refused only nearer). Each case below is right against
 the 50-digit reference within 1e-5 of its scale, or refused, saying which joints meet and
-how far to move.
+how far to move. So is the geared fivebar whose crank pins A and C meet.
 """
 
 import math
@@ -88,3 +88,34 @@ def test_joints_meeting_where_the_equations_stay_well_conditioned_are_answered()
     r3, r4 = res["vectors"]["R3"], res["vectors"]["R4"]
     assert math.isclose(r3["omega"], 3.0, rel_tol=1e-12)
     assert abs(r4["omega"]) < 1e-12 and abs(r4["alpha"]) < 1e-11 and abs(r4["jerk"]) < 1e-10
+
+
+#: the geared fivebar whose crank pins A and C meet at theta2 = 0 (b = c, a = d, f = 2a)
+FIVEBAR = {"a": 1.0, "b": 2.0, "c": 2.0, "d": 1.0, "f": 2.0, "lam": -2.0, "phi": math.pi}
+
+
+@pytest.mark.parametrize("theta2", [1e-1, 1e-2, 3e-3, 1e-3, 1e-4, 1e-5])
+def test_two_crank_pins_meeting_are_answered_right_or_refused(theta2):
+    from accelab.solver.vectorloops.examples import fivebar
+
+    far = ref.solve("fivebar", FIVEBAR, max(theta2, 1e-2), 1.0, 0.0, 0.0, 0.0, "open")
+    desc = fivebar(
+        **{k: f"{FIVEBAR[k]!r} m" for k in "abcdf"},
+        lam=FIVEBAR["lam"],
+        phi=f"{FIVEBAR['phi']!r} rad",
+        guess3=f"{float(far['theta3']) + 0.02!r} rad",
+        guess4=f"{float(far['theta4']) + 0.02!r} rad",
+    )
+    case = dict(desc, mechanism="loops", theta2=f"{theta2!r} rad", omega2="1 rad/s")
+    res = solve_loops_case(dict(case, alpha2="0 rad/s^2"))
+    if not res["ok"]:
+        assert res["error"] == "singular", res
+        assert theta2 < MUST_ANSWER, f"refused at {theta2} rad: {res['message']}"
+        assert "two joints of the loop 'R2 + R3 - R4 - R5 - R1' meet" in res["message"], res
+        return
+    want = ref.solve("fivebar", FIVEBAR, theta2, 1.0, 0.0, 0.0, 0.0, "open")
+    for vector, n in (("R3", "3"), ("R4", "4")):
+        for key in ("omega", "alpha", "jerk"):
+            exact = float(want[key + n])
+            got = res["vectors"][vector][key]
+            assert abs(got - exact) <= 1e-5 * max(abs(exact), 1.0), (vector, key, got, exact)
