@@ -3,6 +3,7 @@ and do, and how the supervisor copes with a kernel that dies, hangs or lies."""
 
 import os
 import sys
+import tempfile
 
 import pytest
 
@@ -270,3 +271,100 @@ def test_the_supervisor_caps_images_and_outputs_whatever_the_kernel_sends():
     assert kept[0] == Limits().images_per_cell and sum(kept) == Limits().total_images
     assert "one of 30000 x 30000" in runs[0].outputs[-1]["text"]
     assert all(len(r.outputs) <= Limits().outputs_per_cell + 1 for r in runs)
+
+
+# ------------------------------------------------------------ a grader killed at the wrong moment
+#: starts argv[1:] as a grader killed at the wrong moment leaves it: its parent gone before
+#: bubblewrap could ask to die with it (the grader's session of its own, as the grader gives
+#: it); writes the pid of what it started to argv[1]
+ORPHAN = """
+import os, sys, time
+if os.fork() == 0:
+    parent = os.getppid()
+    while os.getppid() == parent:
+        time.sleep(0.01)
+    os.setsid()
+    with open(sys.argv[1], "w") as fh:
+        fh.write(str(os.getpid()))
+    os.execv(sys.argv[2], sys.argv[2:])
+"""
+
+
+def _alive(pid):
+    try:
+        with open(f"/proc/{pid}/stat") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+def _running(argv):
+    """Pids of processes whose command line is ``argv``."""
+    found = []
+    for name in os.listdir("/proc"):
+        try:
+            with open(f"/proc/{name}/cmdline", "rb") as fh:
+                if fh.read().split(b"\0")[:-1] == [a.encode() for a in argv]:
+                    found.append(int(name))
+        except OSError:
+            pass
+    return found
+
+
+def test_a_sandbox_left_by_a_killed_grader_is_stopped_by_the_next_run(command, tmp_path):
+    """A grader killed between starting bubblewrap and bubblewrap's ``--die-with-parent``
+    leaves the sandbox running (seen once: a submission's detached ``sleep`` outlived the
+    grader). The next run finds it by the grader its ``/etc/passwd`` names and stops it
+    with everything in it; a sandbox whose grader runs is left alone."""
+    import shutil
+    import subprocess
+    import time
+
+    from accelab.exercises.grader import orphans
+    from accelab.exercises.grader.sandbox import ETC_PREFIX
+
+    gone = subprocess.Popen(["true"])
+    gone.wait()  # a grading process that has ended
+    builder = sandbox()
+    live_etc = builder._etc_files()
+    etc = tempfile.mkdtemp(prefix=f"{ETC_PREFIX}{gone.pid}-")
+    for name in ("passwd", "group"):
+        shutil.copy(os.path.join(live_etc, name), etc)
+    if os.geteuid() == 0:  # not another test's to clean up (remove_stale_etc: only our own)
+        os.chown(etc, 65534, 65534)
+    inner = ["sleep", "987654"]
+    cmd = builder.command(inner)
+    argv = [a.replace(live_etc, etc) for a in cmd]
+    pid_file = tmp_path / "pid"
+    try:
+        subprocess.run(
+            [sys.executable, "-c", ORPHAN, str(pid_file), *argv], pass_fds=cmd.fds, check=True
+        )
+        deadline = time.monotonic() + 30
+        while not (pid_file.exists() and pid_file.read_text() and _running(inner)):
+            assert time.monotonic() < deadline, "the left-behind sandbox did not start"
+            time.sleep(0.05)
+        pid = int(pid_file.read_text())
+        # beside it, a sandbox of a grader that runs (this process): not touched
+        mine = ["sleep", "987653"]
+        own_cmd = builder.command(mine)
+        own = subprocess.Popen(own_cmd, pass_fds=own_cmd.fds, start_new_session=True)
+        assert (pid, gone.pid) in orphans.left_behind()
+        assert own.pid not in [p for p, _ in orphans.left_behind()]
+        said = orphans.stop_left_behind()
+        assert any(f"process {pid}" in s and f"grading process {gone.pid}" in s for s in said)
+        deadline = time.monotonic() + 10
+        while _alive(pid) or _running(inner):  # bubblewrap, and the sleep inside it
+            assert time.monotonic() < deadline, "the left-behind sandbox still runs"
+            time.sleep(0.05)
+        deadline = time.monotonic() + 30
+        while not _running(mine):
+            assert time.monotonic() < deadline, "the running grader's sandbox did not start"
+            time.sleep(0.05)
+        assert own.poll() is None, "a sandbox whose grader runs was stopped"
+        os.killpg(own.pid, 9)
+        own.wait()
+    finally:
+        for p in _running(inner) + _running(["sleep", "987653"]):
+            os.kill(p, 9)
+        shutil.rmtree(etc, ignore_errors=True)

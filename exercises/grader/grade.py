@@ -53,6 +53,7 @@ from .nbgrader_step import (
     read_submission,
     save_outcome,
 )
+from .orphans import stop_left_behind
 from .outcome import Outcome
 from .plan import plan_of
 from .state import submission_hash, to_do, write_state
@@ -375,6 +376,8 @@ def grade(
     )
     with course_lock(course_dir, f"accelab grade --assignment {assignment}"), stoppable():
         recover(course_dir)  # an `accelab assign` killed while it swapped a new version in
+        for line in stop_left_behind():  # a grader killed before its sandbox could follow it
+            sys.stderr.write(f"accelab: note: {line}\n")
         for folder, deep in ((course_dir, False), (os.path.join(course_dir, ".accelab"), True)):
             remove_partial(folder, deep)  # what a run killed while it wrote left beside
         remove_partial(os.path.join(course_dir, "feedback"))
