@@ -8,20 +8,26 @@ published expr with abs/angle/real/imag.
 """
 
 import cmath
+import functools
 import math
 from types import SimpleNamespace
 
 import numpy as np
 import pint
 
-UREG = pint.UnitRegistry()
+
+@functools.cache
+def ureg():
+    """This module's own registry, made when first asked for (half a second: only the
+    test worker that checks exercises pays it)."""
+    return pint.UnitRegistry()
 
 
 def si(text):
     """A case value in SI (m, rad, rad/s, ...), by this module's own registry."""
     if isinstance(text, (int, float)):
         return float(text)
-    return float(UREG.Quantity(text).to_base_units().magnitude)
+    return float(ureg().Quantity(text).to_base_units().magnitude)
 
 
 def rotation(case):
@@ -83,8 +89,8 @@ def answer_value(answer):
         for label, case in answer["cases"].items()
     }
     value = eval(answer["expr"], {"__builtins__": {}}, dict(FUNCS, **outputs))
-    base = UREG.Quantity(1.0, answer["unit"] or "").to_base_units().units
-    return float(UREG.Quantity(value, base).to(answer["unit"] or "").magnitude)
+    base = ureg().Quantity(1.0, answer["unit"] or "").to_base_units().units
+    return float(ureg().Quantity(value, base).to(answer["unit"] or "").magnitude)
 
 
 def answers_code(variant):
