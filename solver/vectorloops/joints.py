@@ -13,8 +13,8 @@ a jerk came out 1.7e-4 of its scale off, and at 1.5e-4 2e-2 off, answered as rig
 The closed-form kernels refuse the same positions by the same estimate
 (:func:`accelab.solver.kernels.common.over_the_pivot`, measured there and here: 1 to
 10 times eps (span / s)^n); here it applies where a diagonal is that short and the
-Jacobian is ill-conditioned too (a joint over another where the equations stay well
-conditioned, a slider's block over a pivot, costs nothing).
+diagonal runs along links that turn with the unknowns (:func:`diagonals`: a joint over
+another elsewhere, a slider's block over a pivot, costs nothing).
 """
 
 import numpy as np
@@ -22,9 +22,10 @@ import numpy as np
 from ..kernels.common import EPS, MAX_ROUNDOFF, ROUNDOFF_GAIN, pivot_fraction
 from .description import _TERM
 
-#: the Jacobian condition measure below which short diagonals are looked at (a diagonal
-#: of 1e-3 of the span gives about 3e-3 in a kite; a well-conditioned position is near 1)
-CONDITION_GATE = 1e-2
+#: the Jacobian condition measure (1 best, 0 singular) below which short diagonals are
+#: looked at. It is not what decides: a kite with links 3 and 4 short beside the crank
+#: (a = d = 5, b = c = 0.3) is still at 1e-2 where its jerk is 3.6e-6 off; the estimate is
+CONDITION_GATE = 0.5
 
 
 def _terms(text, names):
@@ -36,8 +37,15 @@ def _terms(text, names):
 
 
 def diagonals(model):
-    """Every diagonal of every loop: a list of (label, signs over the vectors, loop
-    index), each diagonal once (its reverse is the rest of the loop)."""
+    """Every diagonal of every loop along which the links turn with the unknowns: a list
+    of (label, signs over the vectors, loop index), each diagonal once (its reverse is the
+    rest of the loop).
+
+    Only runs of vectors whose angles all follow unknown angles count: where such a run
+    closes on itself (links 3 and 4 of a kite folded, A on O4), their columns of the
+    Jacobian fall in line and it turns singular. A joint passing over another along a run
+    that holds the ground, the input or a slider's fixed direction (in the other kite,
+    a = b and c = d, B stays on O2 while the crank turns) divides by nothing."""
     out, seen = [], set()
     for k, text in enumerate(model.loop_names):
         terms = _terms(text, model.names)
@@ -45,6 +53,8 @@ def diagonals(model):
         for start in range(n):
             for length in range(2, n - 1):
                 run = [terms[(start + i) % n] for i in range(length)]
+                if any(model.angle_unknown[index] < 0 for index, _ in run):
+                    continue
                 signs = np.zeros(len(model.names))
                 for index, sign in run:
                     signs[index] += sign
