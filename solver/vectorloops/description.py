@@ -56,6 +56,14 @@ class LoopModel:
         return len(self.guess)
 
 
+def loop_terms(text, names):
+    """A checked loop or point ``text`` as [(vector index, sign)], in its order."""
+    return [
+        (names.index(m.group(2)), -1.0 if m.group(1) == "-" else 1.0)
+        for m in _TERM.finditer(text.strip())
+    ]
+
+
 def _parse_sum(text, names, what):
     if not isinstance(text, str) or not text.strip():
         raise InvalidInput(

@@ -20,20 +20,13 @@ another elsewhere, a slider's block over a pivot, costs nothing).
 import numpy as np
 
 from ..kernels.common import EPS, MAX_ROUNDOFF, ROUNDOFF_GAIN, pivot_fraction
-from .description import _TERM
+from .description import loop_terms
 
 #: the Jacobian condition measure (1 best, 0 singular) below which short diagonals are
-#: looked at. It is not what decides: a kite with links 3 and 4 short beside the crank
-#: (a = d = 5, b = c = 0.3) is still at 1e-2 where its jerk is 3.6e-6 off; the estimate is
+#: looked at: this only skips well-conditioned positions. The estimate decides, not the
+#: measure: a kite with links 3 and 4 short beside the crank (a = d = 5, b = c = 0.3) is
+#: still at 1e-2 where its jerk is 3.6e-6 off
 CONDITION_GATE = 0.5
-
-
-def _terms(text, names):
-    """The loop ``text`` as [(vector index, sign)], in its order (already checked)."""
-    return [
-        (names.index(m.group(2)), -1.0 if m.group(1) == "-" else 1.0)
-        for m in _TERM.finditer(text.strip())
-    ]
 
 
 def diagonals(model):
@@ -48,7 +41,7 @@ def diagonals(model):
     a = b and c = d, B stays on O2 while the crank turns) divides by nothing."""
     out, seen = [], set()
     for k, text in enumerate(model.loop_names):
-        terms = _terms(text, model.names)
+        terms = loop_terms(text, model.names)
         n = len(terms)
         for start in range(n):
             for length in range(2, n - 1):
