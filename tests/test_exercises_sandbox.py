@@ -311,11 +311,17 @@ def _running(argv):
     return found
 
 
-def test_a_sandbox_left_by_a_killed_grader_is_stopped_by_the_next_run(command, tmp_path):
+def test_a_sandbox_left_by_a_killed_grader_is_stopped_by_the_next_run(
+    command, tmp_path, monkeypatch
+):
     """A grader killed between starting bubblewrap and bubblewrap's ``--die-with-parent``
     leaves the sandbox running (seen once: a submission's detached ``sleep`` outlived the
     grader). The next run finds it by the grader its ``/etc/passwd`` names and stops it
-    with everything in it; a sandbox whose grader runs is left alone."""
+    with everything in it; a sandbox whose grader runs is left alone.
+
+    The dead grader's folder is in a temporary directory of this test's own, so that the
+    graders other tests run meanwhile (which stop what they find in theirs) leave it to
+    this test."""
     import shutil
     import subprocess
     import time
@@ -327,11 +333,10 @@ def test_a_sandbox_left_by_a_killed_grader_is_stopped_by_the_next_run(command, t
     gone.wait()  # a grading process that has ended
     builder = sandbox()
     live_etc = builder._etc_files()
-    etc = tempfile.mkdtemp(prefix=f"{ETC_PREFIX}{gone.pid}-")
+    etc = tempfile.mkdtemp(prefix=f"{ETC_PREFIX}{gone.pid}-", dir=tmp_path)
+    os.chmod(tmp_path, 0o755)  # the sandbox's user reads its passwd there
     for name in ("passwd", "group"):
         shutil.copy(os.path.join(live_etc, name), etc)
-    if os.geteuid() == 0:  # not another test's to clean up (remove_stale_etc: only our own)
-        os.chown(etc, 65534, 65534)
     inner = ["sleep", "987654"]
     cmd = builder.command(inner)
     argv = [a.replace(live_etc, etc) for a in cmd]
@@ -349,9 +354,11 @@ def test_a_sandbox_left_by_a_killed_grader_is_stopped_by_the_next_run(command, t
         mine = ["sleep", "987653"]
         own_cmd = builder.command(mine)
         own = subprocess.Popen(own_cmd, pass_fds=own_cmd.fds, start_new_session=True)
+        monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # where this test's grader was
         assert (pid, gone.pid) in orphans.left_behind()
         assert own.pid not in [p for p, _ in orphans.left_behind()]
         said = orphans.stop_left_behind()
+        monkeypatch.undo()
         assert any(f"process {pid}" in s and f"grading process {gone.pid}" in s for s in said)
         deadline = time.monotonic() + 10
         while _alive(pid) or _running(inner):  # bubblewrap, and the sleep inside it
