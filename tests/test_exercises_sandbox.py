@@ -132,6 +132,26 @@ def test_a_dead_kernel_is_restarted_and_earlier_cells_replayed(command):
     assert r.reports["x"]["magnitude"] == 5.0  # replayed after the restart
 
 
+def test_a_fork_leaves_the_kernel_to_its_parent(command):
+    """A cell that forks: the child runs on with the cell, but it has no pipe to the grader
+    and ends where the cell does, so the parent alone answers, the same every time (before,
+    both read the grader's next command, and a grade changed from one run to the next). The
+    parent then dies: with the child's copy of the pipe closed, its death is seen at once."""
+    for _ in range(3):
+        r = run(
+            command,
+            LOAD,
+            "import os, time\nchild = os.fork()\ntime.sleep(0.3)",
+            "x = Q_(7 if child else 9, 'in/s^2')",
+            "if not child:\n    time.sleep(30)\nos.kill(os.getpid(), 9)",
+            "y = 1",
+        )
+        statuses = [r.cells[k].status for k in sorted(r.cells)]
+        assert statuses[:3] == ["ok", "ok", "ok"], [r.cells[k].message for k in sorted(r.cells)]
+        assert statuses[3] == "died", r.cells[3].message
+        assert r.reports["x"]["magnitude"] == 7.0
+
+
 def test_limits_hold(command):
     r = run(
         command,

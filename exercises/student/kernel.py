@@ -217,9 +217,26 @@ def alias_old_names():
         sys.modules.setdefault(name, module)
 
 
+def _leave_the_pipes(cmd_fd, reply_fd):
+    """A process forked from a cell (``os.fork``) runs on with the cell, but without the
+    grader's pipes: it cannot take the grader's next command from its parent, nor keep
+    the reply pipe open after its parent dies; :func:`serve` ends it with the cell."""
+
+    def in_child():
+        for fd in (cmd_fd, reply_fd):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+    os.register_at_fork(after_in_child=in_child)
+
+
 def serve(cmd_fd, reply_fd, limits):
     shell = make_shell()
     alias_old_names()
+    kernel = os.getpid()
+    _leave_the_pipes(cmd_fd, reply_fd)
     while True:
         message = read_frame(cmd_fd)
         if message is None or message.get("op") == "exit":
@@ -236,6 +253,8 @@ def serve(cmd_fd, reply_fd, limits):
             reply = report(shell, list(message.get("names", [])))
         else:
             reply = {"error": f"unknown op {op!r}"}
+        if os.getpid() != kernel:  # forked in the cell (or a report it ran): ends with it
+            os._exit(0)
         write_frame(reply_fd, reply)
 
 
