@@ -12,11 +12,12 @@ import importlib
 import os
 import sys
 
-import accelab.benchmarks.cli
-import accelab.exercises.cli
-import accelab.solver.cli
 from accelab import lazy_iri
 
+#: the layers' command modules, in --help order: imported by :func:`main`, not with this
+#: module, so that a Ctrl-C while they load (the console script imports this module
+#: first) is said in one line like any other
+LAYERS = ("accelab.solver.cli", "accelab.benchmarks.cli", "accelab.exercises.cli")
 #: the course layer's commands (``accelab course``) join when that module
 #: exists; it is imported by name so that its absence alone is tolerated
 #: (any other error while importing it is raised, never hidden)
@@ -31,7 +32,7 @@ run 'accelab COMMAND --help' for each command's options and an example."""  # no
 
 def layers():
     """The modules whose ``register`` adds subcommands, in --help order."""
-    found = [accelab.solver.cli, accelab.benchmarks.cli, accelab.exercises.cli]
+    found = [importlib.import_module(name) for name in LAYERS]
     for name in OPTIONAL_LAYERS:
         try:
             found.append(importlib.import_module(name))
@@ -69,8 +70,12 @@ def main(argv=None):
     in one line with exit status 2, Ctrl-C exits with 130, and anything else
     unexpected is reported as an internal error to report, with status 1.
     """
-    lazy_iri.defer_iri_grammar()  # before any command imports nbformat (0.8 s saved)
-    parser = build_parser()
+    try:
+        lazy_iri.defer_iri_grammar()  # before any command imports nbformat (0.8 s saved)
+        parser = build_parser()
+    except KeyboardInterrupt:  # Ctrl-C while the commands load
+        print("accelab: interrupted", file=sys.stderr)
+        return 130
     args, extra = parser.parse_known_args(argv)
     if extra:  # name=value after an option (accelab solve fourbar --json a="2 in" ...)
         if getattr(args, "intermixed", False) and all(

@@ -254,3 +254,36 @@ def test_python_m_accelab_runs_the_whole_command(tmp_path):
         [sys.executable, "-m", "accelab", "--help"], capture_output=True, text=True, timeout=120
     )
     assert p.returncode == 0 and "bench" in p.stdout and "assign" in p.stdout
+
+
+def test_ctrl_c_while_the_commands_load_is_one_line(monkeypatch, capsys):
+    """The console script imports accelab.cli, then calls main: the commands' modules
+    (nbgrader, matplotlib, ... behind them) load inside main, where a Ctrl-C is said in one
+    line with status 130 (it printed a traceback when it came during those imports)."""
+    import importlib
+
+    import accelab.cli as cli
+
+    real = importlib.import_module
+
+    def interrupted(name, *args):
+        if name in cli.LAYERS:
+            raise KeyboardInterrupt
+        return real(name, *args)
+
+    monkeypatch.setattr(importlib, "import_module", interrupted)
+    assert cli.main(["solve", "--help"]) == 130
+    err = capsys.readouterr().err
+    assert err.strip() == "accelab: interrupted" and "Traceback" not in err
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import sys, accelab.cli; print(sorted(m for m in sys.modules "
+            "if m.endswith('.cli') and m.startswith('accelab.')))",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    assert out.strip() == "['accelab.cli']", out
