@@ -19,6 +19,7 @@ import signal
 import tempfile
 
 from .sandbox import ETC_PREFIX
+from .stop import processes
 
 
 def _grader_of(argv):
@@ -35,39 +36,16 @@ def _grader_of(argv):
     return None
 
 
-def _read(pid):
-    """(uid, parent pid, argv) of process ``pid``, or None if it is gone."""
-    try:
-        with open(f"/proc/{pid}/status") as fh:
-            status = fh.read()
-        with open(f"/proc/{pid}/cmdline", "rb") as fh:
-            argv = [a.decode("utf-8", "replace") for a in fh.read().split(b"\0") if a]
-    except OSError:
-        return None
-    uid = re.search(r"^Uid:\s+(\d+)", status, re.M)
-    ppid = re.search(r"^PPid:\s+(\d+)", status, re.M)
-    if not (uid and ppid):
-        return None
-    return int(uid.group(1)), int(ppid.group(1)), argv
-
-
 def left_behind():
     """Pids of this user's sandboxes whose grader is gone: [(pid, grader pid)]."""
     found = []
-    try:
-        names = os.listdir("/proc")
-    except OSError:
-        return found
-    for name in names:
-        if not name.isdigit():
+    for pid, parent, _, uid, argv in processes():
+        if uid != os.geteuid():
             continue
-        info = _read(name)
-        if info is None or info[0] != os.geteuid():
+        grader = _grader_of([a.decode("utf-8", "replace") for a in argv])
+        if grader is None or parent == grader or os.path.exists(f"/proc/{grader}"):
             continue
-        grader = _grader_of(info[2])
-        if grader is None or info[1] == grader or os.path.exists(f"/proc/{grader}"):
-            continue
-        found.append((int(name), grader))
+        found.append((pid, grader))
     return found
 
 

@@ -65,24 +65,31 @@ class Interruptible:
 _PROGRAMS = set()
 
 
-def children():
-    """(pid, process group, program) of this process's children."""
-    me = os.getpid()
-    found = []
+def processes():
+    """(pid, parent pid, process group, owner uid, argv as bytes) of every process, read
+    from /proc; a process that ends while it is read is left out."""
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
             continue
         try:
             with open(f"/proc/{entry}/stat", "rb") as fh:
                 fields = fh.read().rsplit(b")", 1)[1].split()
-            if int(fields[1]) != me:
-                continue
             with open(f"/proc/{entry}/cmdline", "rb") as fh:
-                program = fh.read().split(b"\0")[0]
+                argv = fh.read().split(b"\0")
+            uid = os.stat(f"/proc/{entry}").st_uid
+            yield int(entry), int(fields[1]), int(fields[2]), uid, [a for a in argv if a]
         except (OSError, IndexError, ValueError):
             continue
-        found.append((int(entry), int(fields[2]), program))
-    return found
+
+
+def children():
+    """(pid, process group, program) of this process's children."""
+    me = os.getpid()
+    return [
+        (pid, group, argv[0] if argv else b"")
+        for pid, parent, group, _, argv in processes()
+        if parent == me
+    ]
 
 
 def end_sandboxes():
