@@ -70,6 +70,10 @@ def main(argv=None):
     in one line with exit status 2, Ctrl-C exits with 130, and anything else
     unexpected is reported as an internal error to report, with status 1.
     """
+    # before anything imports numpy: its OpenBLAS starts a thread per core that spins about
+    # 0.1 cpu-s (a third of a one-case `accelab solve`) and is never used, the commands' work
+    # being elementwise over arrays of angles and small solves; a value the user set is kept
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     try:
         lazy_iri.defer_iri_grammar()  # before any command imports nbformat (0.8 s saved)
         parser = build_parser()

@@ -287,3 +287,30 @@ def test_ctrl_c_while_the_commands_load_is_one_line(monkeypatch, capsys):
         check=True,
     ).stdout
     assert out.strip() == "['accelab.cli']", out
+
+
+def test_the_command_starts_numpy_without_blas_threads():
+    """``accelab`` sets OPENBLAS_NUM_THREADS=1 before numpy loads (its OpenBLAS would start a
+    thread per core that spins ~0.1 cpu-s, unused by the commands: the process has one thread
+    then), and keeps a value the user set."""
+    import os
+
+    probe = (
+        "import os, sys\n"
+        "from accelab.cli import main\n"
+        "try:\n"
+        "    main(['solve', '--help'])\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "threads = open('/proc/self/status').read().split('Threads:')[1].split()[0]\n"
+        "print('numpy' in sys.modules, os.environ.get('OPENBLAS_NUM_THREADS'), threads)\n"
+    )
+    for given, expected in ((None, "True 1 1"), ("4", "True 4")):
+        env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+        if given:
+            env["OPENBLAS_NUM_THREADS"] = given
+        p = subprocess.run(
+            [sys.executable, "-c", probe], capture_output=True, text=True, env=env, timeout=120
+        )
+        assert p.returncode == 0, p.stderr
+        assert p.stdout.strip().splitlines()[-1].startswith(expected), p.stdout[-300:]
