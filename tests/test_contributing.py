@@ -132,6 +132,10 @@ def test_the_walk_throughs_work_as_written(tmp_path):
     assert where.startswith(str(layout)), "the copy is the package under test"
     tests = [str(tree / "tests" / t) for t in TESTS]
     run(*PYTEST, *tests)
+    # fuzzed without a word from the guide (tests/test_fuzz.py reads the registry): scaled by
+    # powers of two and of ten, the same angles and the lengths scaled, or refused
+    fuzz = run(*PYTEST, str(tree / "tests" / "test_fuzz.py"), "-k", "scotchyoke")
+    assert "2 passed" in fuzz, fuzz[-2000:]
     families = str(tree / "tests" / "test_exercises_families.py")
     run(*PYTEST, families, "-k", "test_family_variants and piston")  # drawn in US and SI
     answer = run(

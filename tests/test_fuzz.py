@@ -68,6 +68,38 @@ LENGTHS = {
 }
 
 
+def _registered():
+    """A batch mechanism the tables above leave out (a new one: CONTRIBUTING.md, "Add a
+    mechanism") is fuzzed from its registry entry: its example's lengths [m] are its BASE,
+    the rest of the example (the motion among it) its EXTRA, and the angles and lengths
+    its example's answer reports are the ANGLES and LENGTHS checked when it is scaled."""
+    from accelab.solver.mechanisms.base import kind_of
+    from accelab.solver.registry import REGISTRY
+
+    def kind(name):
+        try:
+            return kind_of(name)
+        except AttributeError:
+            return None
+
+    for name, entry in REGISTRY.items():
+        if not entry.batch or name in BASE:
+            continue
+        declared = entry.parameters.geometry + entry.parameters.point
+        lengths = {p.name for p in declared if p.kind == "length"}
+        example = dict(entry.example)
+        BASE[name] = {k: Q_(v).m_as("m") for k, v in example.items() if k in lengths}
+        EXTRA[name] = {k: v for k, v in example.items() if k not in lengths}
+        answer = solve_case({"mechanism": name, **example})
+        assert answer["ok"], f"{name}: its registry example is refused: {answer}"
+        reported = [k for k, v in answer.items() if k not in example and kind(k)]
+        ANGLES[name] = tuple(k for k in reported if kind(k) == "angle")
+        LENGTHS[name] = tuple(k for k in reported if kind(k) == "length")
+
+
+_registered()
+
+
 def case(mechanism, factor=1.0, unit="in", **motion):
     c = {
         "mechanism": mechanism,

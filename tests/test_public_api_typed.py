@@ -1,9 +1,10 @@
 """The public API of accelab.solver is typed, and mypy checks it (`make lint`).
 
 Every function, class and method a user calls, by the names the package exports
-(each module's ``__all__``) and the kernels' solve functions, annotates each of its
-parameters and its return value. A new public function without annotations fails here,
-naming it; mypy ([tool.mypy] in pyproject.toml) then checks that the annotations hold.
+(each module's ``__all__``) and the kernels' functions (every kernel module, found by
+itself), annotates each of its parameters and its return value. A new public function
+without annotations fails here, naming it; mypy ([tool.mypy] in pyproject.toml) then
+checks that the annotations hold.
 """
 
 import importlib
@@ -24,15 +25,38 @@ MODULES = (
     "accelab.solver.parameters",
     "accelab.solver.vectorloops",
 )
-#: the unit-free kernels: module -> its public solve functions
-KERNELS = {
-    "accelab.solver.kernels.fourbar": ("solve",),
-    "accelab.solver.kernels.slidercrank": ("solve",),
-    "accelab.solver.kernels.invertedslidercrank": ("solve",),
-    "accelab.solver.kernels.fivebar": ("solve",),
-    "accelab.solver.kernels.rotation": ("rotating_point", "slotted_link"),
+#: the kernels' shared helpers a kernel is written with: module -> its public functions
+HELPERS = {
     "accelab.solver.kernels.common": ("angles", "slider", "outputs"),
 }
+#: kernel modules that are not a mechanism's (shared helpers; their API is HELPERS)
+NOT_A_MECHANISM = {"common", "points"}
+
+
+def kernels():
+    """Module -> public functions of every unit-free kernel: each module of
+    ``accelab.solver.kernels`` (a new mechanism's kernel is found by itself: nothing to
+    list here), every function it defines whose name does not start with ``_``; and the
+    helpers of :data:`HELPERS`."""
+    import pkgutil
+
+    import accelab.solver.kernels as package
+
+    found = dict(HELPERS)
+    for info in pkgutil.iter_modules(package.__path__):
+        if info.name in NOT_A_MECHANISM:
+            continue
+        name = f"{package.__name__}.{info.name}"
+        module = importlib.import_module(name)
+        found[name] = tuple(
+            attr
+            for attr, value in vars(module).items()
+            if inspect.isfunction(value) and value.__module__ == name and not attr.startswith("_")
+        )
+    return found
+
+
+KERNELS = kernels()
 
 
 def ours(obj):

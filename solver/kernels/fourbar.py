@@ -98,7 +98,9 @@ MIN_IN_PLACE = 2000
 _KEPT = threading.local()
 
 
-def position(a, b, c, d, cos2, sin2, sigma):
+def position(
+    a: float, b: float, c: float, d: float, cos2: Floats, sin2: Floats, sigma: float
+) -> tuple[Floats, Floats, Floats, Floats, Floats, Floats]:
     """Unit vectors of links 3 and 4 in the ground frame (floats or arrays).
 
     Returns ``(c3, s3, c4, s4, area4, gap)``: cos/sin of theta3 and theta4
@@ -116,7 +118,7 @@ def position(a, b, c, d, cos2, sin2, sigma):
     bmc, bpc = b - c, b + c
     f2, f3, f4 = s + bmc, s - bmc, bpc - s
     f23 = s - abs(bmc)  # = min(f2, f3)
-    prod = (s + bpc) * f2 * f3 * f4
+    prod: Floats = (s + bpc) * f2 * f3 * f4
     tol = 2.0 * EPS * (a + b + c + d)
     if scalar:
         gap = f23 if f23 <= f4 else f4
@@ -253,7 +255,7 @@ def solve(
         roundoff=roundoff,
         circuit=circuit,
     )
-    # cos and sin of each link in the ground frame, for the points of the links
+    # cos and sin of each link from the ground link (theta_k - theta1), for the links' points
     out.directions = {"2": (cos2, sin2), "3": (c3, s3), "4": (c4, s4)}
     if order < 1:
         return out
