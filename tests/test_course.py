@@ -822,4 +822,7 @@ def test_the_count_of_notebooks_is_written_once():
     count = words[len(NOTEBOOKS)]
     places = [ROOT / "README.md", COURSE / "__init__.py"] + sorted((ROOT / "docs").rglob("*.md"))
     said = [p for p in places if re.search(rf"\b{count} notebooks", p.read_text(), re.I)]
-    assert [p.name for p in said] == ["syllabus.md"], said
+    assert [p.name for p in said] == ["syllabus.md"], (
+        f"docs/syllabus.md: write '{count} notebooks' (the course has {len(NOTEBOOKS)}), "
+        f"there and nowhere else; it is written in: {[str(p.relative_to(ROOT)) for p in said]}"
+    )
