@@ -92,7 +92,7 @@ def _registered():
         EXTRA[name] = {k: v for k, v in example.items() if k not in lengths}
         answer = solve_case({"mechanism": name, **example})
         assert answer["ok"], f"{name}: its registry example is refused: {answer}"
-        reported = [k for k, v in answer.items() if k not in example and kind(k)]
+        reported = [k for k in answer if k not in example and kind(k)]
         ANGLES[name] = tuple(k for k in reported if kind(k) == "angle")
         LENGTHS[name] = tuple(k for k in reported if kind(k) == "length")
 

@@ -261,8 +261,8 @@ class Motion:
     highest derivative computed (0 position .. 3 jerk). ``directions`` maps a
     link number ("2", "3" ...) to the cosine and sine of its angle measured
     from the ground link, ``theta_k - theta1``, which the kernel computed anyway
-    (the points of the links are built from them, then turned by ``theta1``:
-    ``Result._unit`` in :mod:`accelab.solver.mechanisms.base`).
+    (the points of the links are built from them, then turned by ``theta1``
+    in :mod:`accelab.solver.mechanisms.base`).
     """
 
     status: Any

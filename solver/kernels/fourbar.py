@@ -101,7 +101,7 @@ _KEPT = threading.local()
 def position(
     a: float, b: float, c: float, d: float, cos2: Floats, sin2: Floats, sigma: float
 ) -> tuple[Floats, Floats, Floats, Floats, Floats, Floats]:
-    """Unit vectors of links 3 and 4 in the ground frame (floats or arrays).
+    """Unit vectors of links 3 and 4 from the ground link (floats or arrays).
 
     Returns ``(c3, s3, c4, s4, area4, gap)``: cos/sin of theta3 and theta4
     measured from the ground line, four times the area of the triangle
