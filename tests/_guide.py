@@ -41,14 +41,16 @@ def block(lang, *holding, lacking=()):
 
 def adapted(text, places):
     """``text`` with each of the guide's folders and names (keys of ``places``: a path
-    or a whole word) replaced by the test's; the longest first."""
-    for old in sorted(places, key=len, reverse=True):
-        new = places[old]
-        if re.fullmatch(r"\w+", old):  # a name: whole words only
-            text = re.sub(rf"\b{old}\b", new, text)
-        else:
-            text = text.replace(old, new)
-    return text
+    or a whole word) replaced by the test's, in one pass: the longest first where two
+    start at one place, and a replacement is never read again (the test's folder may
+    hold a word of the guide, such as /tmp/prof/... for the name ``prof``)."""
+    keys = sorted(places, key=len, reverse=True)
+    alternatives = [
+        rf"\b{re.escape(k)}\b" if re.fullmatch(r"\w+", k) else re.escape(k) for k in keys
+    ]
+    if not alternatives:
+        return text
+    return re.sub("|".join(alternatives), lambda m: places[m.group(0)], text)
 
 
 def command(text, places):
