@@ -16,6 +16,8 @@ import sys
 import tempfile
 import time
 
+from _lab import shm_flags
+
 CHROMIUM = "/usr/bin/chromium"
 CHROMEDRIVER = "/usr/bin/chromedriver"
 
@@ -120,7 +122,7 @@ def browser(width=1366, height=1000):
         "--headless=new",
         "--no-sandbox",
         "--disable-gpu",
-        "--disable-dev-shm-usage",
+        *shm_flags(),
         f"--window-size={max(width, 500)},{height}",
         f"--user-data-dir={profile}",
     ):
