@@ -28,6 +28,8 @@ BLOCK = re.compile(r"^```python (file|insert)=(\S+)\n(.*?)^```", re.MULTILINE | 
 ROWS = re.compile(r"^```text\n(\| `scotchyoke` .*?)^```", re.MULTILINE | re.DOTALL)
 #: where a registry's tuple of entries ends (solver/registry.py, exercises/families/__init__.py)
 END_OF_ENTRIES = "\n    )\n}\n"
+#: where the guide puts a new entry elsewhere: a mechanism before the rotation's (step 4)
+BEFORE = {"solver/registry.py": '        Registered(\n            "rotation",\n'}
 NOT_SOURCE = (".venv", "build", ".git", "*.egg-info", "__pycache__", ".pytest_cache", ".mypy_cache")
 
 pytestmark = pytest.mark.slow
@@ -62,9 +64,9 @@ def follow(tree):
         target = tree / path
         if kind == "file":
             target.write_text(code)
-        else:  # one more entry at the end of the registry's tuple
+        else:  # one more entry in the registry's tuple: where the guide says
             text = target.read_text()
-            at = text.index(END_OF_ENTRIES) + 1
+            at = text.index(BEFORE[path]) if path in BEFORE else text.index(END_OF_ENTRIES) + 1
             target.write_text(text[:at] + code + text[at:])
     # step 3: the exports
     sub(
