@@ -320,16 +320,34 @@ def sleepy(course, units, name_of):
     return outside(course, "sleepy"), edit
 
 
+def same_ids(path):
+    """Give each cell of the notebook at ``path`` whose source and metadata repeat an earlier
+    cell's that cell's id, as a copy made by hand in the file has (nbformat.write gave the
+    copies new ids)."""
+    with open(path, encoding="utf-8") as fh:
+        nb = json.load(fh)
+    first = {}
+    for cell in nb["cells"]:
+        key = json.dumps([cell["source"], cell["metadata"]], sort_keys=True)
+        cell["id"] = first.setdefault(key, cell["id"])
+    assert len({c["id"] for c in nb["cells"]}) < len(nb["cells"]), "no copied cell"
+    with open(path, "w", encoding="utf-8") as fh:
+        json.dump(nb, fh)
+
+
 @attack
 def duplicated_pair(course, units, name_of):
-    """A copy-pasted answer + test cell pair; the answers right."""
+    """A copy-pasted answer + test cell pair, the copies keeping their cells' ids (the
+    fixture writes them back: :func:`same_ids`); the answers right."""
 
     def edit(nb):
         name = next(iter(units))
         answer, test = _cell(nb, f"answer_{name}"), _cell(nb, f"test_{name}")
         at = nb.cells.index(test) + 1
-        nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(test))))
-        nb.cells.insert(at, nbformat.from_dict(json.loads(json.dumps(answer))))
+        for cell in (test, answer):
+            copy = nbformat.from_dict(json.loads(json.dumps(cell)))
+            copy.id = f"{cell.id[:6]}cc"  # for nbformat.write, which renames repeated ids
+            nb.cells.insert(at, copy)
 
     return outside(course, "duplicated_pair"), edit
 
@@ -549,7 +567,9 @@ def graded(tmp_path_factory):
         submit(course, "A", s, outside(course, s))
     for name, make in ATTACKS.items():
         code, edit = make(course, units, None)
-        submit(course, "A", name, code, edit=edit)
+        path = submit(course, "A", name, code, edit=edit)
+        if name == "duplicated_pair":  # copied by hand in the file: the copies keep the ids
+            same_ids(path)
     submit(course, "A", "stranger", outside(course, "stranger"))  # not on the roster
     for name in BAD_IDS:  # as if an exchange without accelab's collect had put them there
         submit(course, "A", name, outside(course, "ann"))
