@@ -320,25 +320,22 @@ def sleepy(course, units, name_of):
     return outside(course, "sleepy"), edit
 
 
-def same_ids(path):
-    """Give each cell of the notebook at ``path`` whose source and metadata repeat an earlier
-    cell's that cell's id, as a copy made by hand in the file has (nbformat.write gave the
-    copies new ids)."""
+def same_ids(path, ids):
+    """Give the cells of the notebook at ``path`` the ids ``ids`` maps theirs to (a copy
+    made by hand in the file keeps its cell's id; nbformat.write would rename it)."""
     with open(path, encoding="utf-8") as fh:
         nb = json.load(fh)
-    first = {}
     for cell in nb["cells"]:
-        key = json.dumps([cell["source"], cell["metadata"]], sort_keys=True)
-        cell["id"] = first.setdefault(key, cell["id"])
-    assert len({c["id"] for c in nb["cells"]}) < len(nb["cells"]), "no copied cell"
+        cell["id"] = ids.get(cell["id"], cell["id"])
     with open(path, "w", encoding="utf-8") as fh:
         json.dump(nb, fh)
 
 
 @attack
 def duplicated_pair(course, units, name_of):
-    """A copy-pasted answer + test cell pair, the copies keeping their cells' ids (the
-    fixture writes them back: :func:`same_ids`); the answers right."""
+    """A copy-pasted answer + test cell pair, the copies keeping their cells' ids in the
+    file (``edit.written``); the answers right."""
+    ids = {}  # a copy's id while nbformat writes it -> its cell's
 
     def edit(nb):
         name = next(iter(units))
@@ -347,8 +344,10 @@ def duplicated_pair(course, units, name_of):
         for cell in (test, answer):
             copy = nbformat.from_dict(json.loads(json.dumps(cell)))
             copy.id = f"{cell.id[:6]}cc"  # for nbformat.write, which renames repeated ids
+            ids[copy.id] = cell.id
             nb.cells.insert(at, copy)
 
+    edit.written = lambda path: same_ids(path, ids)
     return outside(course, "duplicated_pair"), edit
 
 
@@ -568,8 +567,8 @@ def graded(tmp_path_factory):
     for name, make in ATTACKS.items():
         code, edit = make(course, units, None)
         path = submit(course, "A", name, code, edit=edit)
-        if name == "duplicated_pair":  # copied by hand in the file: the copies keep the ids
-            same_ids(path)
+        if hasattr(edit, "written"):  # what the attack does to the file itself
+            edit.written(path)
     submit(course, "A", "stranger", outside(course, "stranger"))  # not on the roster
     for name in BAD_IDS:  # as if an exchange without accelab's collect had put them there
         submit(course, "A", name, outside(course, "ann"))
@@ -768,6 +767,10 @@ def test_the_whole_submission_is_time_limited(graded):
 
 
 def test_a_duplicated_pair_is_graded(graded):
+    path = os.path.join(graded["course"], "submitted", "duplicated_pair", "A", "A.ipynb")
+    with open(path, encoding="utf-8") as fh:
+        ids = [c["id"] for c in json.load(fh)["cells"]]
+    assert len(set(ids)) == len(ids) - 2, "the copies repeat their cells' ids in the file"
     assert total(graded, "duplicated_pair") == len(graded["names"])
     assert "appears 2 times" in graded["rows"]["duplicated_pair"]["notes"]
 
