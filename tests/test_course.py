@@ -247,6 +247,10 @@ def test_notebook_executes(source):
     assert _outputs(nb, "image/png") or _rendition_images(nb), (
         "no figure: is %matplotlib inline in the first cell?"
     )
+    # headless, no widget is shown: none leaves its model's state in the notebook (the site
+    # would carry it on the page, for a widget manager it does not load)
+    assert not _outputs(nb, "application/vnd.jupyter.widget-view+json")
+    assert "widgets" not in nb["metadata"], "a widget's state saved with no view of it"
     text = source.read_text()
     if "animate(" in text:
         players = [p for p in _outputs(nb, "text/html") if "accelab-player" in _text(p)]

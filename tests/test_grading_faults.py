@@ -171,6 +171,20 @@ def sandbox_processes(tmp):
     return found
 
 
+def sandboxes_left(tmp, wait=10.0):
+    """The sandboxes of :func:`sandbox_processes` still alive ``wait`` s after a grader was
+    killed or interrupted (none alive: at once). bubblewrap's ``--die-with-parent`` takes
+    them when the grader dies, but not at once: a fixed 0.3 s was too short once with the
+    machine loaded (CI failed with one left, at the kill after "scored"); one that
+    ``--die-with-parent`` missed stays for good."""
+    deadline = time.monotonic() + wait
+    alive = sandbox_processes(tmp)
+    while alive and time.monotonic() < deadline:
+        time.sleep(0.1)
+        alive = sandbox_processes(tmp)
+    return alive
+
+
 def partial_files(course):
     return [
         os.path.join(root, f)
@@ -263,8 +277,7 @@ def test_a_kill_at_any_stage_is_finished_by_running_again(reference, tmp_path):
     for stage in stages:
         proc = run(course, "--new", fault=f"kill:{stage}", tmp=tmp)
         assert proc.returncode == -signal.SIGKILL, (stage, proc.returncode, proc.stderr[-2000:])
-        time.sleep(0.3)  # bubblewrap's --die-with-parent
-        assert sandbox_processes(tmp) == [], stage
+        assert sandboxes_left(tmp) == [], stage
         shown_grades_are_true(course, reference)
     assert partial_files(course)  # the CSV was being written when it was killed
     proc = run(course, "--new", tmp=tmp)
@@ -302,8 +315,7 @@ def test_ctrl_c_stops_at_once_keeps_nothing_partial_and_says_how_to_finish(refer
     assert proc.returncode == 130, (proc.returncode, err)
     assert "interrupted (Ctrl-C)" in err and "--new" in err and "graded completely" in err, err
     assert "Traceback" not in err
-    time.sleep(0.3)
-    assert sandbox_processes(tmp) == []
+    assert sandboxes_left(tmp) == []
     shown_grades_are_true(course, reference)
     for s in STUDENTS:  # no "submit again" page because the instructor interrupted
         page = os.path.join(course, "feedback", s, "A", "A.html")
