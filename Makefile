@@ -9,7 +9,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export MPLBACKEND := Agg
 
-.PHONY: venv pip-install lint typecheck test test-fast demo figures docs bench bench-grading clean
+.PHONY: venv pip-install lint typecheck test test-fast explore demo figures docs bench bench-grading clean
 
 venv: $(STAMP)
 
@@ -78,6 +78,13 @@ test: $(STAMP)
 test-fast: $(STAMP)
 	$(COMPILE)
 	$(PYTEST) -q -n $(JOBS) -m "not slow"
+
+# the property tests with random draws, 50 times as many as `make test`'s fixed ones (tests/
+# conftest.py): after changing a kernel, a reference or a strategy (about 4 min on 2 cores)
+explore: $(STAMP)
+	$(COMPILE)
+	ACCELAB_HYPOTHESIS=explore $(PYTEST) -q -n $(JOBS) \
+	  tests/test_kernels_accuracy.py tests/test_kernels_limits.py tests/test_fuzz.py
 
 demo: $(STAMP)
 	$(BIN)/accelab demo

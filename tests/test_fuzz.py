@@ -22,6 +22,7 @@ import time
 import numpy as np
 import pint
 import pytest
+from conftest import examples
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
@@ -138,7 +139,7 @@ def angle_gap(x, y):
 
 # --- scale: any factor float64 holds -------------------------------------------------------
 @pytest.mark.parametrize("mechanism", sorted(BASE))
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(exponent=st.integers(-1000, 1000))
 def test_powers_of_two_give_the_same_angles_bit_for_bit(mechanism, exponent):
     base = solve_case(case(mechanism, unit="m"))
@@ -158,7 +159,7 @@ def test_powers_of_two_give_the_same_angles_bit_for_bit(mechanism, exponent):
 
 
 @pytest.mark.parametrize("mechanism", sorted(BASE))
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(exponent=st.integers(-300, 300))
 def test_any_decimal_scale_gives_the_same_angles(mechanism, exponent):
     base = solve_case(case(mechanism))
@@ -191,7 +192,7 @@ def test_the_issue_scales_and_rates():
                 assert r["error"] == "invalid_input" and "overflows" in r["message"]
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 @given(
     mechanism=st.sampled_from(sorted(BASE)),
     scale=st.integers(-305, 305),
@@ -274,7 +275,7 @@ def test_the_grading_rule_is_the_same_function():
 # --- every field in bounded time ----------------------------------------------------------
 # Time is this thread's CPU time: the bound is on the work a text costs, whatever else the
 # machine runs (the wall clock of a loaded CI machine made these checks flaky).
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(text=st.text(max_size=3 * MAX_TEXT))
 @example(text="Traceback")  # quoted back in its refusal: not a traceback
 def test_any_text_in_any_field_is_read_or_refused_in_bounded_time(text):
@@ -335,7 +336,7 @@ def test_any_field_value_is_refused_or_read(value):
         right_or_refused(solve_case(dict(case(mechanism), **{field: value})))
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(
     st.recursive(
         st.none() | st.booleans() | st.floats() | st.integers() | st.text(max_size=20),

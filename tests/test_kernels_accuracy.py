@@ -25,7 +25,14 @@ from pathlib import Path
 import _checks as check
 import numpy as np
 import pytest
-from conftest import fivebars, fourbars, invertedslidercranks, points_on_links, slidercranks
+from conftest import (
+    examples,
+    fivebars,
+    fourbars,
+    invertedslidercranks,
+    points_on_links,
+    slidercranks,
+)
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
@@ -167,19 +174,23 @@ def point_terms(mech, want, extra):
 
 
 def coupler_terms(want, geo):
-    """The size of the terms from which a fivebar's omega3 .. jerk4 are worked out [SI]:
-    each order's known side K of the loop A + b e3 = C + c e4 (A's and C's vectors, and
-    links 3 and 4's terms of the lower orders: b omega3^2 ..., 3 b omega3 alpha3, b
-    omega3^3 ...), as the sum of their sizes, over b sin(theta3 - theta4) for link 3 and
-    c sin(theta3 - theta4) for link 4: the projection of K on a link's normal is no more
-    accurate than K's own terms allow. Where that projection nearly cancels, the output
-    is small beside them and its error is judged against them (hypothesis found jerk3
-    1.64 rad/s^3 from terms of 162, off by 4.6e-12 rad/s^3: 2.8e-12 of itself, 2.9e-14 of
-    its terms; over 12 000 random fivebars the worst was 9.7e-14 of the terms)."""
+    """The size of the terms from which omega3 .. jerk4 are worked out where links 3 and 4
+    close a loop A + b e3 = C + c e4 (a fourbar: C is O4, at rest; a fivebar: C turns with
+    link 5) [SI]: each order's known side K (A's and C's vectors, and links 3 and 4's terms
+    of the lower orders: b omega3^2 ..., 3 b omega3 alpha3, b omega3^3 ...), as the sum of
+    their sizes, over b sin(theta3 - theta4) for link 3 and c sin(theta3 - theta4) for link
+    4: the projection of K on a link's normal is no more accurate than K's own terms allow.
+    Where that projection nearly cancels, the output is small beside them and its error is
+    judged against them. Hypothesis found a fivebar's jerk3 1.64 rad/s^3 from terms of 162,
+    off by 4.6e-12 rad/s^3 (2.8e-12 of itself, 2.9e-14 of its terms; over 12 000 random
+    fivebars the worst was 9.7e-14 of the terms), and a fourbar's alpha3 0.095 rad/s^2 from
+    terms of 249, off by 1.2e-13 rad/s^2 (1.2e-12 of itself, 4.7e-16 of its terms)."""
     b, c = geo["b"], geo["c"]
     size = {k: float(abs(want[k])) for k in want if not k.startswith("theta")}
     sin34 = abs(math.sin(float(want["theta3"]) - float(want["theta4"])))
     w3, w4, a3, a4 = (size[k] for k in ("omega3", "omega4", "alpha3", "alpha4"))
+    rest = dict.fromkeys(("V_C", "A_C", "J_C"), 0.0)  # a fourbar's O4
+    size = {**rest, **size}
     known = {
         "omega": size["V_A"] + size["V_C"],
         "alpha": size["A_A"] + size["A_C"] + b * w3 * w3 + c * w4 * w4,
@@ -189,6 +200,43 @@ def coupler_terms(want, geo):
     for name, k in known.items():
         out[name + "3"] = k / max(b * sin34, 1e-300)
         out[name + "4"] = k / max(c * sin34, 1e-300)
+    return out
+
+
+def slide_terms(want, geo):
+    """The size of the terms from which an inverted slider-crank's omega4 .. jerk4 (and
+    link 3's, the same) are worked out [SI]: each order's known side K_n of
+    b^(n) e3 + j x (b e3 + c e4) = K_n (A's vector; the Coriolis term 2 b' omega; the
+    lower orders' 3 b' omega^2, 3 b omega alpha, 3 b'' omega, 3 b' alpha, b omega^3; link
+    4's c omega^2, c (omega^3 + 3 omega alpha)), as the sum of their sizes, over
+    b + c cos gamma (eqs. 7.20-7.27). Where the projection cancels, the output is small
+    beside them and its error is judged against them. Hypothesis found jerk4 -0.5 rad/s^3
+    (a = d, c = 0: the block turns at omega2 / 2) from terms of 198, off by 1.9e-12 rad/s^3:
+    3.8e-12 of itself, 9.6e-15 of its terms, the pivot's (span / b)^3 round-off (see the
+    kernel's over_the_pivot); over 8000 random ones the worst was 2.0e-14 of the terms. The
+    slide's b_dot .. b_dddot are Re(K_n conj e3) - x c sin gamma: judged against K_n's terms
+    and x's (hypothesis found b_dddot -1.74 m/s^3 from terms of 4.4e4, off by 8.5e-12 m/s^3)."""
+    c, gamma = geo["c"], geo["gamma"]
+    size = {k: float(abs(want[k])) for k in want if not k.startswith("theta")}
+    b, b1, b2 = size["b"], size["b_dot"], size["b_ddot"]
+    w, al = size["omega4"], size["alpha4"]
+    known = {
+        "omega": size["V_A"],
+        "alpha": size["A_A"] + b * w * w + 2 * b1 * w + c * w * w,
+        "jerk": size["J_A"]
+        + 3 * b1 * w * w
+        + 3 * b * w * al
+        + 3 * b2 * w
+        + 3 * b1 * al
+        + b * w**3
+        + c * (w**3 + 3 * w * al),
+    }
+    den = max(abs(float(want["b"]) + c * math.cos(gamma)), 1e-300)
+    out = {name + k: size_k / den for name, size_k in known.items() for k in "34"}
+    # b^(n) = Re(K_n conj e3) - x c sin gamma: K_n's terms, and x's times c |sin gamma|
+    lean = c * abs(math.sin(gamma)) / den
+    for name, dots in (("omega", "_dot"), ("alpha", "_ddot"), ("jerk", "_dddot")):
+        out["b" + dots] = known[name] * (1.0 + lean)
     return out
 
 
@@ -222,6 +270,20 @@ def expected_outputs(mech, extra=(), coupler=False):
 
 circuits = st.sampled_from(["open", "crossed"])
 
+#: alpha3 0.095 rad/s^2 of terms of 249 (d = 0.05, see coupler_terms); hypothesis found it
+SMALL_ALPHA3 = {
+    "a": 1.2477683047683652,
+    "b": 0.36429800252880484,
+    "c": 1.5601309585821281,
+    "d": 0.05,
+    "theta1": 2.7760303704096145,
+    "theta2": -2.6839925337471326,
+    "omega2": -3.0,
+    "alpha2": 0.0,
+    "jerk2": -1.0,
+}
+ON_EACH_LINK = [("Q2", 2, 1.0, 0.0), ("Q3", 3, 1.0, 0.0), ("Q4", 4, 1.0, 0.0)]
+
 
 @given(
     case=fourbars(),
@@ -230,6 +292,7 @@ circuits = st.sampled_from(["open", "crossed"])
     p=st.floats(0.01, 2.0),
     delta3=st.floats(-math.pi, math.pi),
 )
+@example(case=SMALL_ALPHA3, circuit="open", extra=ON_EACH_LINK, p=1.0, delta3=0.0)
 def test_fourbar_matches_reference(case, circuit, extra, p, delta3):
     case = dict(case, p=p, delta3=delta3)
     m = run_kernel("fourbar", case, circuit)
@@ -239,7 +302,7 @@ def test_fourbar_matches_reference(case, circuit, extra, p, delta3):
         kernel_outputs("fourbar", case, m, extra),
         want,
         expected=expected_outputs("fourbar", extra, coupler=True),
-        terms=point_terms("fourbar", want, extra),
+        terms={**point_terms("fourbar", want, extra), **coupler_terms(want, case)},
     )
 
 
@@ -274,11 +337,27 @@ ISOSCELES = {
 CANCELLING_J_Q4 = dict(
     ISOSCELES, a=1.0, d=1.0, theta1=1.1875, theta2=0.9375, omega2=-1.5, alpha2=0.0, jerk2=-1.0
 )
+#: a = d once more: jerk4 -0.5 rad/s^3 from terms of 198 (see slide_terms); hypothesis found it
+HALF_JERK4 = dict(ISOSCELES, a=0.25, d=0.25, theta2=0.25, omega2=-3.0)
+#: b_dddot -1.74 m/s^3 from terms of 4.4e4 (see slide_terms); hypothesis found it
+SMALL_B_DDDOT = {
+    "a": 1.75,
+    "c": 1.6875 * abs(1.75 * cmath.exp(-3j) - 0.05),
+    "d": 0.05,
+    "gamma": 0.25268025514207865,
+    "theta1": 3.0,
+    "theta2": 0.0,
+    "omega2": -17.5,
+    "alpha2": 0.5,
+    "jerk2": -4881.0,
+}
 
 
 @given(case=invertedslidercranks(), circuit=circuits, extra=points_on_links([2, 3, 4]))
 @example(case=ISOSCELES, circuit="open", extra=[("Q2", 2, 1.0, 0.0), ("Q4", 4, 1.0, 0.0)])
 @example(case=CANCELLING_J_Q4, circuit="open", extra=[("Q2", 2, 1.0, 0.0), ("Q4", 4, 1.0, 0.0)])
+@example(case=HALF_JERK4, circuit="open", extra=ON_EACH_LINK)
+@example(case=SMALL_B_DDDOT, circuit="crossed", extra=ON_EACH_LINK)
 def test_invertedslidercrank_matches_reference(case, circuit, extra):
     m = run_kernel("invertedslidercrank", case, circuit)
     assert m.status == OK
@@ -293,7 +372,7 @@ def test_invertedslidercrank_matches_reference(case, circuit, extra):
         want,
         floor=FLOOR * ratio,
         expected=expected_outputs("invertedslidercrank", extra),
-        terms=point_terms("invertedslidercrank", want, extra),
+        terms={**point_terms("invertedslidercrank", want, extra), **slide_terms(want, case)},
     )
 
 
@@ -515,7 +594,7 @@ def loop_residuals(mech, case, m):
     ],
 )
 def test_loop_closure_at_every_order(mech, strategy):
-    @settings(max_examples=200)
+    @settings(max_examples=examples(200))
     @given(case=strategy, circuit=circuits)
     def check(case, circuit):
         m = run_kernel(mech, case, circuit)

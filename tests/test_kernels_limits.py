@@ -28,6 +28,7 @@ import math
 import _checks as check
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from mpmath import mp, mpf
@@ -292,7 +293,7 @@ def near_limit_cases(draw):
     )
 
 
-@settings(max_examples=80)
+@settings(max_examples=examples(80))
 @given(near_limit_cases())
 def test_random_geometries_near_a_limit(case):
     """Lengths spread over two decades, any limit, delta from 1e-12 to 1e-1."""
