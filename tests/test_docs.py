@@ -501,8 +501,13 @@ def _play(driver):
     driver.execute_script(PLAYER_CLICK % "accelab-back")
     seen["back"] = driver.execute_script(PLAYER_STATE)
     driver.execute_script(PLAYER_CLICK % "accelab-play")
-    time.sleep(0.6)
-    seen["playing"] = driver.execute_script(PLAYER_STATE)
+    # the first frames come when the browser's timer fires: on a loaded machine, late
+    deadline = time.monotonic() + 10
+    while True:
+        seen["playing"] = driver.execute_script(PLAYER_STATE)
+        if seen["playing"][0] > 0 or time.monotonic() > deadline:
+            break
+        time.sleep(0.1)
     driver.execute_script(PLAYER_CLICK % "accelab-play")
     seen["paused"] = driver.execute_script(PLAYER_STATE)
     time.sleep(0.4)
