@@ -50,10 +50,12 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check .
 	$(MAKE) --no-print-directory typecheck
 
-# mypy on the package as installed: .ci/layout.py writes its layout as links in build/typecheck
+# mypy on the package as installed: .ci/layout.py writes its layout as links in build/typecheck,
+# and names mypy's cache for its set of modules (a file added or removed starts a fresh one:
+# mypy 2.4's incremental cache can keep a new module missing, .ci/layout.py says more)
 typecheck: $(STAMP)
-	$(BIN)/python .ci/layout.py build/typecheck >/dev/null
-	$(BIN)/mypy
+	@cache=$$($(BIN)/python .ci/layout.py build/typecheck --mypy-cache) && \
+	  echo "$(BIN)/mypy --cache-dir $$cache" && $(BIN)/mypy --cache-dir "$$cache"
 
 # in parallel (pytest-xdist), half as many workers again as cores: the end-to-end tests wait
 # for browsers, servers and time limits part of the time; pyproject's addopts keep shared

@@ -438,9 +438,22 @@ def test_instructor_collects_grades_and_releases_feedback(
 
     # a resubmission: the documented collect command (--update) picks it up
     before = (course / "submitted" / STUDENT / "A" / "timestamp.txt").read_text()
-    time.sleep(1.1)
+    inbound = klass["exchange"] / COURSE_ID / "inbound"
+    sent = {p.name for p in inbound.iterdir()}
+    time.sleep(1.1)  # a new timestamp: nbgrader's are to the second
     button_in(driver, "#fetched_assignments_list", "Submit").click()
-    time.sleep(3)
+    # the exchange has it once its folder is in the inbound and its timestamp written
+    wait(
+        lambda: any(
+            p.name.startswith(f"{STUDENT}+A+")
+            and (p / "timestamp.txt").is_file()
+            and (p / "timestamp.txt").read_text().strip()
+            for p in inbound.iterdir()
+            if p.name not in sent
+        ),
+        60,
+        what="the resubmission to reach the exchange",
+    )
     nbgrader("collect", "--update", "A", cwd=course)
     after = (course / "submitted" / STUDENT / "A" / "timestamp.txt").read_text()
     assert after != before, "nbgrader collect --update did not pick up the resubmission"

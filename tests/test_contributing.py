@@ -3,7 +3,8 @@
 In a copy of the repository, the code blocks of "Add a mechanism" and "Add an exercise
 family" (those marked ``python file=PATH``, a new file, and ``python insert=PATH``, an entry
 of a registry) are written where they say, with the steps the guide states in words (the
-exports, the rows of docs/conventions.md, the notebook that names the family); then the
+exports, the rows of docs/conventions.md, the README's list of classes, the notebook that
+names the family); then the
 copy's own tests of the registries and of the typed API pass, ``accelab solve scotchyoke``
 answers, the family draws its problems, and ruff (lint and format) and mypy are clean.
 Leaving the registry entry out fails with the message the guide quotes.
@@ -96,6 +97,12 @@ def follow(tree):
         loops_row + "\n| `rotation` | `p`, the radius",
     )
     sub(conventions, "| `rotation` | `A A_t A_n J`", outputs_row + "\n| `rotation` | `A A_t A_n J`")
+    # step 7: the README's list of mechanism classes
+    sub(
+        tree / "README.md",
+        "`RotatingPoint` and `SlottedLink` in this release",
+        "`RotatingPoint`, `SlottedLink` and `ScotchYoke` in this release",
+    )
     # the family, step 3: the notebook that teaches it names it
     notebook = tree / "course/04_slider_crank_engine.py"
     text = notebook.read_text()

@@ -89,10 +89,11 @@ def _registered():
         declared = entry.parameters.geometry + entry.parameters.point
         lengths = {p.name for p in declared if p.kind == "length"}
         example = dict(entry.example)
+        answer = solve_case({"mechanism": name, **example})
+        if not answer["ok"]:  # not fuzzed: tests/test_registry.py says what is wrong with it
+            continue
         BASE[name] = {k: Q_(v).m_as("m") for k, v in example.items() if k in lengths}
         EXTRA[name] = {k: v for k, v in example.items() if k not in lengths}
-        answer = solve_case({"mechanism": name, **example})
-        assert answer["ok"], f"{name}: its registry example is refused: {answer}"
         reported = [k for k in answer if k not in example and kind(k)]
         ANGLES[name] = tuple(k for k in reported if kind(k) == "angle")
         LENGTHS[name] = tuple(k for k in reported if kind(k) == "length")

@@ -29,6 +29,7 @@ from accelab.solver.batch import solve_case
 from accelab.solver.cases import read_case
 from accelab.solver.kernels.common import Motion
 from accelab.solver.mechanisms import Mechanism
+from accelab.solver.mechanisms.base import order_of
 from accelab.solver.registry import BATCH_MECHANISMS, REGISTRY, construction, mechanism_class
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,6 +54,10 @@ def test_every_mechanism_class_is_registered():
         if inspect.isclass(obj) and issubclass(obj, Mechanism) and obj is not Mechanism
     }
     for cls in classes:
+        assert cls.name, (
+            f"{cls.__name__} has no name: set name = '...' in its class, the key of its "
+            "entry in REGISTRY (solver/registry.py)"
+        )
         assert cls.name in REGISTRY, (
             f"{cls.__name__} (name {cls.name!r}) is not registered: add its entry to "
             "REGISTRY in solver/registry.py"
@@ -121,16 +126,39 @@ def test_a_registered_mechanism_solves_its_example_at_every_order(name):
         )
         r = mech.solve(**kw)
         assert r.valid, f"{name}: the registered example must be a valid position"
+        record = r._motion
+        empty = [
+            n for n in type(record).OUTPUTS if order_of(n) <= order and getattr(record, n) is None
+        ]
+        assert not empty, (
+            f"{name}'s kernel declares {empty} but does not fill them at order {order}: set "
+            f"them in solve() of solver/kernels/{name}.py"
+        )
         for output in r.outputs():
             assert np.all(np.isfinite(r.si(output))), (name, order, output)
             assert r[output] is not None  # a Quantity: its kind follows from its name (kind_of)
-        if order == 3:
-            record = r._motion
-            empty = [n for n in type(record).OUTPUTS if getattr(record, n) is None]
-            assert not empty, f"{name}'s kernel declares {empty} but does not fill them"
     if name in BATCH_MECHANISMS:
         answer = solve_case({"mechanism": name, **REGISTRY[name].example})
         assert answer["ok"], answer
+
+
+def points_reported(result):
+    """The points whose vectors a result reports (R_X, and V_X, A_X, J_X with it)."""
+    return [o[2:] for o in result.outputs() if o.startswith("R_")]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_point_reports_its_vectors(name):
+    """Each point the class places (``_points``) is reported: R, V, A and J of it are in
+    the result's outputs (the class's ``_point_outputs``)."""
+    geometry, rest = _split(name)
+    mech = mechanism_class(name)(**geometry)
+    r = mech.solve(**rest)
+    missing = [f"{v}_{x}" for x in mech._points for v in "RVAJ" if f"{v}_{x}" not in r.outputs()]
+    assert not missing, (
+        f"{name}: the results do not report {', '.join(missing)}: add them to _point_outputs "
+        f"in solver/mechanisms/{name}.py"
+    )
 
 
 def _finite_differences(values, h):
@@ -162,9 +190,7 @@ def test_derivatives_agree_with_finite_differences_of_positions(name):
             chains.append([out] + [q + out[5:] for q in ("omega", "alpha", "jerk")])
         elif not out.endswith("dot") and out + "_dot" in record.OUTPUTS:
             chains.append([out] + [out + s for s in ("_dot", "_ddot", "_dddot")])
-    chains += [
-        [f"{v}_{x}" for v in "RVAJ"] for x in ("A", "B", "C", "P") if f"R_{x}" in r.outputs()
-    ]
+    chains += [[f"{v}_{x}" for v in "RVAJ"] for x in points_reported(r)]
     if "R" in r.outputs():  # a single point's vectors
         chains.append(list("RVAJ"))
     assert chains
@@ -184,13 +210,53 @@ def test_derivatives_agree_with_finite_differences_of_positions(name):
             )
 
 
-def test_batch_mechanisms_are_documented():
+#: docs/conventions.md's tables with a row per batch mechanism
+TABLES = ("The mechanisms and their vector loops", "Outputs")
+
+
+def documented_rows(heading):
+    """{mechanism: the rest of its row} of the table in docs/conventions.md's section
+    ``heading``, in the table's order."""
     text = (ROOT / "docs" / "conventions.md").read_text()
-    for name in BATCH_MECHANISMS:
-        rows = re.findall(rf"^\| `{name}`", text, flags=re.MULTILINE)
-        assert len(rows) >= 2, (
-            f"docs/conventions.md: give {name} a row in 'The mechanisms and their vector "
-            "loops' and in 'Outputs'"
+    section = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
+    rows = re.findall(r"^\| `(\w+)`[^|]*\|(.*)$", section, flags=re.MULTILINE)
+    return dict(rows)
+
+
+def test_batch_mechanisms_are_documented():
+    for table in TABLES:
+        rows = documented_rows(table)
+        for name in BATCH_MECHANISMS:
+            assert name in rows, f"docs/conventions.md: give {name} a row in '{table}'"
+        order = [n for n in rows if n in BATCH_MECHANISMS]
+        assert order == list(BATCH_MECHANISMS), (
+            f"docs/conventions.md, '{table}': the rows go in the order of REGISTRY "
+            f"(solver/registry.py: {', '.join(BATCH_MECHANISMS)}); they are {', '.join(order)}: "
+            "move the row, or the entry"
+        )
+
+
+@pytest.mark.parametrize("name", BATCH_MECHANISMS)
+def test_the_documented_outputs_are_reported(name):
+    """Every name docs/conventions.md's 'Outputs' row gives is in the batch answer to the
+    registered example (which places a coupler point where the mechanism takes one)."""
+    row = documented_rows("Outputs")[name]
+    documented = {w for code in re.findall(r"`([^`]+)`", row) for w in code.split()}
+    answer = solve_case({"mechanism": name, **REGISTRY[name].example})
+    assert answer["ok"], answer
+    missing = sorted(documented - set(answer))
+    assert not missing, (
+        f"docs/conventions.md, 'Outputs': {name}'s row names {', '.join(missing)}, which "
+        f"it does not report (it reports {', '.join(k for k in answer if k != 'ok')})"
+    )
+
+
+def test_the_readme_lists_every_mechanism_class():
+    readme = (ROOT / "README.md").read_text()
+    for name in NAMES:
+        cls = mechanism_class(name).__name__
+        assert f"`{cls}`" in readme, (
+            f"README.md, 'Using the solver': add `{cls}` to the list of mechanism classes"
         )
 
 

@@ -230,6 +230,13 @@ class Result(Kinematics):
                     return self._point(x, order) - self._point(y, order)
             if comp is not None and rest in pts and order == 2:
                 return self._component(rest, pts[rest][0], comp)
+        record = type(self._motion)
+        if name in record.OUTPUTS:  # declared, and left empty by the kernel: its fault
+            raise AttributeError(
+                f"{name} is declared by {record.__name__} but the kernel did not fill it at "
+                f"order {self._motion.order}: its solve() must set it (see CONTRIBUTING.md, "
+                "Add a mechanism)"
+            )
         raise AttributeError(
             f"{type(self._mech).__name__} results have no output {name!r}; "
             f"available: {', '.join(self.outputs())}"
