@@ -38,6 +38,11 @@ NAMES = list(REGISTRY)
 FAMILY_HELPERS = ("common", "polygon")
 
 
+def source_of(cls):
+    """The repository file defining ``cls`` (accelab.solver.kernels.x -> solver/kernels/x.py)."""
+    return "/".join(cls.__module__.split(".")[1:]) + ".py"
+
+
 def submodules(package):
     return [
         importlib.import_module(f"{package.__name__}.{m.name}")
@@ -132,7 +137,7 @@ def test_a_registered_mechanism_solves_its_example_at_every_order(name):
         ]
         assert not empty, (
             f"{name}'s kernel declares {empty} but does not fill them at order {order}: set "
-            f"them in solve() of solver/kernels/{name}.py"
+            f"them in solve() of {source_of(type(record))}"
         )
         for output in r.outputs():
             assert np.all(np.isfinite(r.si(output))), (name, order, output)
@@ -157,7 +162,7 @@ def test_every_point_reports_its_vectors(name):
     missing = [f"{v}_{x}" for x in mech._points for v in "RVAJ" if f"{v}_{x}" not in r.outputs()]
     assert not missing, (
         f"{name}: the results do not report {', '.join(missing)}: add them to _point_outputs "
-        f"in solver/mechanisms/{name}.py"
+        f"in {source_of(type(mech))}"
     )
 
 
