@@ -46,8 +46,10 @@ pip-install:
 # ruff (lint and format, pyproject's rules) and mypy (pyproject's [tool.mypy]); their versions are
 # pinned in pyproject's `lint` extra, which the `test` extra takes in (the tests run them too)
 lint: $(STAMP)
+	@# the format first: a line too long (E501) that `ruff format` would split is then reported
+	@# as "would reformat", which says what to run
+	$(BIN)/ruff format --check . || { echo "accelab: $(BIN)/ruff format . writes it" >&2; exit 1; }
 	$(BIN)/ruff check .
-	$(BIN)/ruff format --check .
 	$(MAKE) --no-print-directory typecheck
 
 # mypy on the package as installed: .ci/layout.py writes its layout as links in build/typecheck,

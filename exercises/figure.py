@@ -22,6 +22,28 @@ def _box(cons):
     return min(xs) - m, max(xs) + m, min(ys) - m, max(ys) + m
 
 
+def _fit_title(fig, ax, head, tail, margin=6.0):
+    """Write the title ``head tail`` on one line if it fits the figure's width (less
+    ``margin`` [px] each side), else ``tail`` (the parenthesis) on a line of its own, and
+    ``head`` in as many lines as it needs: a family's long title is never cut off."""
+    import textwrap
+
+    room = fig.bbox.width - 2 * margin
+    renderer = fig.canvas.get_renderer()
+
+    def fits(text):
+        ax.title.set_text(text)
+        return ax.title.get_window_extent(renderer).width <= room
+
+    if fits(f"{head} {tail}"):
+        return
+    for width in range(len(head), 10, -4):
+        lines = textwrap.wrap(head, width) + [tail]
+        if fits("\n".join(lines)):
+            return
+    ax.title.set_text("\n".join(textwrap.wrap(head, 10) + [tail]))
+
+
 def statement_figure(problem, dpi=90, shared=True):
     """PNG bytes of the problem's figure, drawn to scale from its values.
 
@@ -93,6 +115,7 @@ def statement_figure(problem, dpi=90, shared=True):
             scale_bars=False,
         )
     ax.title.set_fontsize(9)
+    _fit_title(fig, ax, problem.title, title[len(problem.title) + 1 :])
     buf = io.BytesIO()
     fig.savefig(buf, format="png")
     plt.close(fig)

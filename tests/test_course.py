@@ -46,6 +46,8 @@ MAX_ANIMATION = 1.5e6  # bytes of one animation as the page loads it
 FAMILIES = tuple(REGISTRY)
 
 NOTEBOOKS = accelab.course.notebooks()
+#: what the last notebook says, and no other
+LAST = "This is the last notebook."
 #: one worker executes the notebooks, once, then builds the site from them (tests/test_docs.py)
 pytestmark = pytest.mark.xdist_group("course")
 
@@ -271,9 +273,15 @@ def test_notebook_executes(source):
     if "practice(" in text:
         # the notebook asserts p.check's verdicts; here: each was said, with a reason
         lines = _stdout(nb).splitlines()
-        assert any(re.match(r"\w+: right \(", s) for s in lines), "no practice answer was accepted"
+        show = (
+            ": show one answer checked right and one wrong, as notebook 1's 'What a check "
+            "looks like' does"
+        )
+        assert any(re.match(r"\w+: right \(", s) for s in lines), (
+            "no practice answer was accepted" + show
+        )
         refused = [s for s in lines if re.match(r"\w+: ", s) and not re.match(r"\w+: right \(", s)]
-        assert refused, "no wrong practice answer was refused"
+        assert refused, "no wrong practice answer was refused" + show
         assert all(len(s) > 30 for s in refused), f"a refusal without its reason: {refused}"
 
 
@@ -434,6 +442,11 @@ def test_notebook_follows_the_conventions(source):
     if later:
         nxt = later[0].stem
         assert f"({nxt}.ipynb)" in allmd, f"a closing link [Next: ...]({nxt}.ipynb)"
+        assert LAST not in allmd, f"'{LAST}' belongs to the last notebook, {NOTEBOOKS[-1].name}"
+    else:  # the last one says so and links back to the contents: every other notebook
+        assert LAST in allmd, f"the last notebook ends with '{LAST} Back to the contents: ...'"
+        missing = [p.stem for p in NOTEBOOKS[:-1] if f"({p.stem}.ipynb)" not in allmd]
+        assert not missing, f"the links back to the contents: add {missing}"
     code = [c.source for c in _cells(source) if c.cell_type == "code"]
     assert code[0].startswith("%matplotlib inline"), "the first code cell sets the inline backend"
     allcode = "\n".join(code)
@@ -442,7 +455,10 @@ def test_notebook_follows_the_conventions(source):
     )
     assert "coursekit" not in allcode and "sys.path" not in allcode, "no path tricks"
     assert "../" not in allcode, "nothing read from outside the installed package"
-    assert "Design of Machinery" in allmd and "Norton" in allmd, "the book is cited"
+    flat = " ".join(allmd.split())  # a title may wrap from one line to the next
+    assert "Design of Machinery" in flat and "Norton" in flat, (
+        "the book is cited: Norton, *Design of Machinery*"
+    )
 
 
 def _hidden(cell):
@@ -534,6 +550,28 @@ def test_topic_notebooks_practise_and_name_their_families(source):
     named = [f for f in FAMILIES if f"`{f}`" in md]
     assert named, "name the graded exercise families that practise this notebook"
     assert "practice(" in source.read_text()
+
+
+#: where a notebook says which graded families practise it
+PRACTISED_BY = re.compile(
+    r"The graded exercise famil(?:y|ies) that practises? this notebook (.+?)(?:\n\n|$)", re.S
+)
+
+
+@pytest.mark.parametrize("source", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
+def test_a_family_a_notebook_names_lists_it(source):
+    """The other way round from the families page: a family the notebook names where it
+    says which families practise it has the notebook among its notebooks (else FAMILIES.md
+    leaves the notebook out of the family's row)."""
+    md = "\n\n".join(_markdown(source))
+    for sentence in PRACTISED_BY.findall(md):
+        for family in re.findall(r"`(\w+)`", sentence):
+            if family not in REGISTRY:
+                continue
+            assert source.stem in REGISTRY[family].notebooks, (
+                f"{source.name} names `{family}` as a family that practises it: add "
+                f"{source.stem!r} to its notebooks in exercises/families/__init__.py"
+            )
 
 
 def test_families_page_maps_every_family_to_a_notebook():
@@ -830,3 +868,18 @@ def test_the_count_of_notebooks_is_written_once():
         f"docs/syllabus.md: write '{count} notebooks' (the course has {len(NOTEBOOKS)}), "
         f"there and nowhere else; it is written in: {[str(p.relative_to(ROOT)) for p in said]}"
     )
+
+
+def test_the_syllabus_has_a_row_and_a_time_per_notebook_and_their_sum():
+    """docs/syllabus.md's table has one row per notebook, in order, each with its time in
+    hours, and the total below it ('About 17½ hours in all') is their sum."""
+    text = (ROOT / "docs" / "syllabus.md").read_text()
+    rows = re.findall(r"^\| \{doc\}`[^<]*<course/(\d\d_\w+)>` \|.*\| ([\d.]+) h \|$", text, re.M)
+    assert [stem for stem, _ in rows] == [p.stem for p in NOTEBOOKS], (
+        "docs/syllabus.md, 'The notebooks': one row per notebook, in order, ending '| N h |'"
+    )
+    hours = sum(float(h) for _, h in rows)
+    said = re.search(r"About (\d+)(½?) hours in all", text)
+    assert said, "docs/syllabus.md: say the total below the table, 'About N hours in all'"
+    total = int(said.group(1)) + (0.5 if said.group(2) else 0.0)
+    assert total == hours, f"docs/syllabus.md: the rows add up to {hours:g} hours, not {total:g}"

@@ -341,9 +341,11 @@ def duplicated_pair(course, units, name_of):
         name = next(iter(units))
         answer, test = _cell(nb, f"answer_{name}"), _cell(nb, f"test_{name}")
         at = nb.cells.index(test) + 1
-        for cell in (test, answer):
+        for k, cell in enumerate((test, answer)):
             copy = nbformat.from_dict(json.loads(json.dumps(cell)))
-            copy.id = f"{cell.id[:6]}cc"  # for nbformat.write, which renames repeated ids
+            # an id no cell has, for nbformat.write, which renames repeated ids (the cell's
+            # own id changed in its last two letters was its own id when they were "cc")
+            copy.id = f"accelab-copy-{k}"
             ids[copy.id] = cell.id
             nb.cells.insert(at, copy)
 

@@ -275,6 +275,38 @@ def test_exercise_figures_come_from_the_one_linkage_drawer(family, monkeypatch):
     assert calls[0].get("symbols") is True
 
 
+@pytest.mark.parametrize("family", list(REGISTRY))
+def test_an_exercise_figure_shows_its_whole_title(family, monkeypatch):
+    """A family's title and "(schematic: your values differ)" fit the figure's width (the
+    inverted slider-crank's polygons' title ran off both sides): a long one is written on
+    two lines."""
+    from matplotlib.figure import Figure
+
+    from accelab.exercises import figure
+    from accelab.exercises.families import generate
+
+    seen = []
+    real = Figure.savefig
+
+    def spy(fig, *args, **kw):
+        renderer = fig.canvas.get_renderer()
+        for ax in fig.axes:
+            if ax.get_title():
+                bb = ax.title.get_window_extent(renderer)
+                seen.append((ax.get_title(), bb.x0, bb.x1, fig.bbox.width))
+        return real(fig, *args, **kw)
+
+    monkeypatch.setattr(Figure, "savefig", spy)
+    problem = generate(family, 7)
+    for shared in (True, False):
+        figure.statement_figure(problem, shared=shared)
+    assert len(seen) == 2 and problem.title in seen[0][0].replace("\n", " ")
+    for title, x0, x1, width in seen:
+        assert 0 <= x0 and x1 <= width, (
+            f"{family}: {title!r} spans {x0:.0f}..{x1:.0f} of {width:.0f} px"
+        )
+
+
 def test_a_round_off_zero_is_never_magnified():
     """At theta2 = 360 deg the inverted slider-crank's slip velocity is 1e-16 m/s, not 0:
     magnifying it would ask for a 1e15 times inset, which the renderer never finishes.

@@ -61,7 +61,7 @@ REGISTRY: dict[str, Family] = {
             "fourbar",
             "sections 7.2 and 7.3, Example 7-1, eqs. 7.7 to 7.13",
             r"a fourbar's $\alpha_3$, $\alpha_4$ and the accelerations of its pins",
-            ("02_graphical_fourbar", "03_analytic_fourbar"),
+            ("02_graphical_fourbar", "03_analytic_fourbar", "07_any_point"),
         ),
         Family(
             "coupler",
