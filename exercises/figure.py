@@ -69,6 +69,24 @@ def statement_figure(problem, dpi=90, shared=True):
         # problem 7-1 style: the point at A and, later, at B on the same circle
         second = construct_case(spec["case_B"]) if "case_B" in spec else None
         box = _box([con] + ([second] if second else []))
+        if second:  # the path from A to B, inside the frame too
+            import numpy as np
+
+            f = units_of(con)["length"][1]
+            t = np.linspace(
+                read_case(spec["case"]).params["theta2"],
+                read_case(spec["case_B"]).params["theta2"],
+                40,
+            )
+            r = abs(con.linkage.points["P"]) * f
+            arc_x, arc_y = r * np.cos(t), r * np.sin(t)
+            pad = 0.08 * r
+            box = (
+                min(box[0], arc_x.min() - pad),
+                max(box[1], arc_x.max() + pad),
+                min(box[2], arc_y.min() - pad),
+                max(box[3], arc_y.max() + pad),
+            )
         draw_linkage(
             con,
             ax=ax,
@@ -82,16 +100,7 @@ def statement_figure(problem, dpi=90, shared=True):
             box=box,
         )
         if second:
-            import numpy as np
-
-            f = units_of(con)["length"][1]
-            t = np.linspace(
-                read_case(spec["case"]).params["theta2"],
-                read_case(spec["case_B"]).params["theta2"],
-                40,
-            )
-            r = abs(con.linkage.points["P"]) * f
-            ax.plot(r * np.cos(t), r * np.sin(t), "--", color="0.55", lw=1.0, zorder=0)
+            ax.plot(arc_x, arc_y, "--", color="0.55", lw=1.0, zorder=0)
             draw_linkage(
                 second,
                 ax=ax,
@@ -117,6 +126,7 @@ def statement_figure(problem, dpi=90, shared=True):
     ax.title.set_fontsize(9)
     _fit_title(fig, ax, problem.title, title[len(problem.title) + 1 :])
     buf = io.BytesIO()
-    fig.savefig(buf, format="png")
+    # cropped to what is drawn: a flat linkage at its true shape leaves bands of white
+    fig.savefig(buf, format="png", bbox_inches="tight", pad_inches=0.08)
     plt.close(fig)
     return buf.getvalue()
