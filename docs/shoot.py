@@ -10,6 +10,7 @@ after MathJax has typeset the page.
 import argparse
 import functools
 import http.server
+import shutil
 import sys
 import tempfile
 import threading
@@ -44,14 +45,16 @@ def serve(folder):
 
 
 def chrome(width, height=900, extra=()):
+    """A headless Chromium at this width; returns (driver, profile folder to remove)."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
     options = webdriver.ChromeOptions()
     options.binary_location = "/usr/bin/chromium"
+    profile = tempfile.mkdtemp(prefix="accelab-shot-")
     for flag in FLAGS + [
         f"--window-size={width},{height}",
-        f"--user-data-dir={tempfile.mkdtemp(prefix='accelab-shot-')}",
+        f"--user-data-dir={profile}",
         *extra,
     ]:
         options.add_argument(flag)
@@ -63,7 +66,7 @@ def chrome(width, height=900, extra=()):
             "Emulation.setDeviceMetricsOverride",
             {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": True},
         )
-    return driver
+    return driver, profile
 
 
 WAIT_MATH = """
@@ -86,7 +89,7 @@ def main(argv=None):
     SHOTS.mkdir(parents=True, exist_ok=True)
     server, base = serve(SITE)
     for width in args.width or [1366, 390]:
-        driver = chrome(width, args.height)
+        driver, profile = chrome(width, args.height)
         driver.set_script_timeout(60)
         try:
             for page in args.pages:
@@ -117,6 +120,7 @@ def main(argv=None):
                 print(out)
         finally:
             driver.quit()
+            shutil.rmtree(profile, ignore_errors=True)
     server.shutdown()
 
 
