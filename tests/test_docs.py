@@ -380,6 +380,25 @@ def test_the_guide_is_adapted_to_a_test_folder_holding_its_names():
     )
 
 
+def test_inline_math_keeps_the_text_that_touches_it():
+    """A ")" or ":" after a formula, a "(" before it, goes on its line: no line starts
+    with the punctuation of the formula before it (docs/_ext/accelab_docs.py)."""
+    from docutils import nodes
+
+    sys.path.insert(0, str(DOCS / "_ext"))
+    from accelab_docs import math_keeps_what_touches_it
+
+    para = nodes.paragraph()
+    para += [nodes.Text("where ("), nodes.math("", "x"), nodes.Text("): the toggle, or ")]
+    para += [nodes.math("", "y"), nodes.Text(" alone")]
+    doc = nodes.document(None, None)
+    doc += para
+    math_keeps_what_touches_it(None, doc)
+    kept = [c for c in para.children if isinstance(c, nodes.inline)]
+    assert [k.astext() for k in kept] == ["(x):"] and "nobreak" in kept[0]["classes"]
+    assert para.astext() == "where (x): the toggle, or y alone"
+
+
 def test_network_check_tells_the_site_from_the_browser():
     base = "http://127.0.0.1:8123/"
     urls = [

@@ -283,6 +283,48 @@ def unbreakable_words(app, doctree):
             parent.replace(text, pieces)
 
 
+#: text touching a formula on either side, up to the nearest space: "(" before it, "):" after it
+TOUCHING_BEFORE = re.compile(r"\S+$")
+TOUCHING_AFTER = re.compile(r"^\S+")
+
+
+def math_keeps_what_touches_it(app, doctree):
+    """Inline math and the text that touches it (an opening parenthesis, closing
+    punctuation, a suffix) stay on one line. A browser may break a line on either side of
+    MathJax's box, so a ")" or ":" could start a line of its own in a narrow column."""
+    for math in list(doctree.findall(nodes.math)):
+        parent = math.parent
+        if parent is None or "nobreak" in parent.get("classes", []):
+            continue
+        i = parent.index(math)
+        before = parent[i - 1] if i > 0 and isinstance(parent[i - 1], nodes.Text) else None
+        after = (
+            parent[i + 1] if i + 1 < len(parent) and isinstance(parent[i + 1], nodes.Text) else None
+        )
+        lead = TOUCHING_BEFORE.search(str(before)) if before is not None else None
+        trail = TOUCHING_AFTER.search(str(after)) if after is not None else None
+        if not (lead or trail):
+            continue
+        span = nodes.inline("", "", classes=["nobreak"])
+        if lead:
+            span += nodes.Text(lead.group(0))
+        parent.replace(math, span)
+        span += math
+        if trail:
+            span += nodes.Text(trail.group(0))
+            rest = str(after)[trail.end() :]
+            if rest:
+                parent.replace(after, nodes.Text(rest))
+            else:
+                parent.remove(after)
+        if lead:
+            rest = str(before)[: lead.start()]
+            if rest:
+                parent.replace(before, nodes.Text(rest))
+            else:
+                parent.remove(before)
+
+
 # ---------------------------------------------------------------- API pages
 #: the packages the API reference documents, every public module of each
 API_PACKAGES = ("accelab.solver", "accelab.exercises")
@@ -700,6 +742,7 @@ def setup(app):
     app.connect("doctree-read", number_equations)
     app.connect("doctree-read", caption_images)
     app.connect("doctree-read", unbreakable_words)
+    app.connect("doctree-read", math_keeps_what_touches_it)
     app.connect("doctree-read", drop_empty_field_lists)
     app.connect("doctree-resolved", link_images)
     app.connect("doctree-resolved", player_frames)
