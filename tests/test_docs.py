@@ -619,17 +619,22 @@ def test_every_page_reads_well(crawl, width):
     assert sum(len(st["images"]) for st in course) > 20, "the course shows its figures"
 
 
+def _display_equations(states, width, which):
+    """``(page, tex)`` of each display equation at ``width`` whose state passes ``which``."""
+    return [
+        (page, m["tex"])
+        for page, st in states[width].items()
+        for m in st["math"]
+        if m["display"] and which(m)
+    ]
+
+
 def test_no_equation_is_cut_off(crawl):
     """At 1366 and at 390 px every display equation fits its page (long ones are written on
     several lines): none needs the scroll box that remains as a fallback."""
     states, _ = crawl
     for width in WIDTHS:
-        wide = [
-            (page, m["tex"])
-            for page, st in states[width].items()
-            for m in st["math"]
-            if m["display"] and m["overflows"]
-        ]
+        wide = _display_equations(states, width, lambda m: m["overflows"])
         assert not wide, f"equations wider than the page at {width} px: {wide[:10]}"
     course = [m for p, st in states[390].items() if p.startswith("course/") for m in st["math"]]
     # the notebooks' sources hold 77 display equations (eq. 7.4's aligned lines are one)
@@ -642,12 +647,7 @@ def test_only_an_equation_that_scrolls_is_shaded_at_its_edges(crawl):
     showed beside the equation (notebook 5's loop-closure equation at 1366 px)."""
     states, _ = crawl
     for width in WIDTHS:
-        shaded = [
-            (page, m["tex"])
-            for page, st in states[width].items()
-            for m in st["math"]
-            if m["display"] and m["shaded"] and not m["overflows"]
-        ]
+        shaded = _display_equations(states, width, lambda m: m["shaded"] and not m["overflows"])
         assert not shaded, f"equations that fit, shaded at {width} px: {shaded[:10]}"
 
 
