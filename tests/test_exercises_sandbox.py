@@ -104,8 +104,18 @@ def test_the_graders_parse_of_the_units_is_read_and_cannot_be_written(command):
 
     assert command.unit_cache == str(cache_folder()), "the grader wrote its cache on import"
     probe = """
-import os
-from accelab.solver.unitcache import cache_folder
+import functools, os
+import flexparser.flexparser as fp
+from accelab.solver.unitcache import cache_folder, new_registry
+parsed = []
+_parse = fp.Parser.parse_file
+@functools.wraps(_parse)  # its name is part of pint's cache key
+def parse_file(self, path):
+    parsed.append(path)
+    return _parse(self, path)
+fp.Parser.parse_file = parse_file
+new_registry()
+print("parsed", parsed)
 folder = cache_folder()
 print("cache", folder, sorted(os.listdir(folder)) != [])
 try:
@@ -115,6 +125,7 @@ except OSError as exc:
 """
     out = text(run(command, LOAD, probe, "x = Q_(3, 'in/s^2')"))
     assert "cache /run/accelab-cache/accelab/pint-" in out and " True" in out, out
+    assert "parsed []" in out, out  # the registry came from the cache, whole
     assert "WRITTEN" not in out and "refused 30" in out, out  # EROFS
 
 

