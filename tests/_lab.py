@@ -261,7 +261,8 @@ def _make_shared_venv():
         if not any(p.lower().startswith(name + "-") for p in packages)
     ]
     assert not missing, f"{missing} not installed: pip install -e '.[test]'"
-    stamp = SHARED_VENV / f".deps-{hashlib.sha256(' '.join(packages).encode()).hexdigest()[:16]}"
+    linked = packages + _venv.tests_only()  # a venv made before the start-up file is made again
+    stamp = SHARED_VENV / f".deps-{hashlib.sha256(' '.join(linked).encode()).hexdigest()[:16]}"
     py = SHARED_VENV / "bin" / "python"
     with tempfile.TemporaryDirectory(prefix="accelab-lab-wheel-") as work:
         source, dist = Path(work) / "source", Path(work) / "dist"
@@ -278,7 +279,7 @@ def _make_shared_venv():
         wheel = next(dist.glob("accelab-*.whl"))
         if not stamp.exists():
             shutil.rmtree(SHARED_VENV, ignore_errors=True)
-            _venv.linked_venv(SHARED_VENV, "/usr/bin/python3", data=True)
+            _venv.linked_venv(SHARED_VENV, "/usr/bin/python3", data=True, as_tests_run=True)
         # with the pip this environment has (linked with the rest), offline
         _pip(
             [str(py), "-m", "pip", "install", "-q", "--no-deps", "--no-index", "--force-reinstall"]

@@ -19,6 +19,9 @@ from pathlib import Path
 #: the editable install of this checkout (setuptools' finder, its .pth and its metadata), and
 #: its JupyterLab extension, which the Makefile links into the environment from the checkout
 EDITABLE = ("__editable__*", "accelab-*.dist-info", "accelab.egg-link", "accelab-lab")
+#: the test environment's own start-up file (``.ci/lazy_iri_pth.py``: jsonschema's IRI grammar
+#: deferred in every process): an environment as users get it leaves it out
+TESTS_ONLY = ("zz-accelab-tests-lazy-iri.pth",)
 
 
 def _link(src, dst):
@@ -28,11 +31,11 @@ def _link(src, dst):
         shutil.copy2(src, dst)
 
 
-def _tree(src, dst):
+def _tree(src, dst, leave_out=()):
     shutil.copytree(
         src,
         dst,
-        ignore=shutil.ignore_patterns(*EDITABLE),
+        ignore=shutil.ignore_patterns(*EDITABLE, *leave_out),
         copy_function=_link,
         symlinks=True,
         dirs_exist_ok=True,
@@ -48,6 +51,12 @@ def packages():
         for p in purelib.glob("*.dist-info")
         if not p.name.lower().startswith(("accelab-", "accelab.")) and p.is_dir()
     )
+
+
+def tests_only():
+    """The files of :data:`TESTS_ONLY` this environment has."""
+    purelib = Path(sysconfig.get_paths()["purelib"])
+    return [name for name in TESTS_ONLY if (purelib / name).is_file()]
 
 
 def _scripts(src_bin, dst_bin, python):
@@ -82,11 +91,13 @@ for d in md.distributions():
 """
 
 
-def linked_venv(venv, python=sys.executable, data=False):
+def linked_venv(venv, python=sys.executable, data=False, as_tests_run=False):
     """Make the venv ``venv`` of the interpreter ``python`` (a Python of this environment's
     version), holding this environment's packages but not accelab; with ``data``, also their
     console scripts and data files (``share/``: JupyterLab and its extensions; ``etc/``: the
-    Jupyter server's extensions). Returns the venv's Python."""
+    Jupyter server's extensions); with ``as_tests_run``, also the test environment's own
+    start-up file (:data:`TESTS_ONLY`), which an environment as users get it has not.
+    Returns the venv's Python."""
     venv = Path(venv)
     subprocess.run(
         [str(python), "-m", "venv", "--without-pip", str(venv)], check=True, capture_output=True
@@ -99,7 +110,7 @@ def linked_venv(venv, python=sys.executable, data=False):
         check=True,
         cwd="/",
     ).stdout.strip()
-    _tree(sysconfig.get_paths()["purelib"], target)
+    _tree(sysconfig.get_paths()["purelib"], target, () if as_tests_run else TESTS_ONLY)
     if data:
         for folder in ("share", "etc"):
             if (Path(sys.prefix) / folder).is_dir():

@@ -2,6 +2,7 @@
 same answers as compiled at import (each case in a fresh interpreter)."""
 
 import json
+import os
 import subprocess
 import sys
 
@@ -29,9 +30,14 @@ print(json.dumps({"compiled_at_import": compiled_at_import, "answers": answers})
 """
 
 
+#: a process that compiles the grammar at import, as outside the test environment (whose
+#: start-up file defers it in every process: .ci/lazy_iri_pth.py)
+EAGER = dict(os.environ, ACCELAB_EAGER_IRI="1")
+
+
 def _run(mode):
     done = subprocess.run(
-        [sys.executable, "-c", CHECK, mode], capture_output=True, text=True, timeout=120
+        [sys.executable, "-c", CHECK, mode], capture_output=True, text=True, timeout=120, env=EAGER
     )
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -53,6 +59,30 @@ def test_the_command_defers_it():
         "print(type(sys.modules.get('rfc3987_syntax')).__name__)\n"
     )
     done = subprocess.run(
-        [sys.executable, "-c", probe], capture_output=True, text=True, timeout=120
+        [sys.executable, "-c", probe], capture_output=True, text=True, timeout=120, env=EAGER
     )
     assert done.stdout.strip() == "_Deferred", done.stdout + done.stderr
+
+
+PROBE = "import sys; print(type(sys.modules.get('rfc3987_syntax')).__name__)"
+
+
+def test_every_process_of_the_test_environment_defers_it():
+    """The test environment's start-up file (``make venv`` writes it: .ci/lazy_iri_pth.py)
+    defers the grammar in the processes the tests start that are not accelab's (JupyterLab,
+    JupyterHub, nbgrader); ``ACCELAB_EAGER_IRI=1`` turns it off."""
+    import _venv
+
+    assert _venv.tests_only() == list(_venv.TESTS_ONLY), (
+        "the venv has no start-up file: .venv/bin/python .ci/lazy_iri_pth.py writes it"
+    )
+
+    def probe(env):
+        done = subprocess.run(
+            [sys.executable, "-c", PROBE], capture_output=True, text=True, timeout=60, env=env
+        )
+        assert done.returncode == 0 and not done.stderr, done.stderr
+        return done.stdout.strip()
+
+    assert probe(dict(os.environ)) == "_Deferred"
+    assert probe(EAGER) == "NoneType"

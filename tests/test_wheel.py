@@ -25,7 +25,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from _venv import linked_venv
+from _venv import TESTS_ONLY, linked_venv
 
 import accelab
 
@@ -89,6 +89,8 @@ def fresh_venv(where):
     or copies across filesystems) but not the editable install of this checkout."""
     venv = where / "venv"
     linked_venv(venv)
+    tests_only = [p.name for p in venv.glob("lib/python*/site-packages/*") if p.name in TESTS_ONLY]
+    assert not tests_only, f"{tests_only}: the test environment's, not a user's"
     return venv
 
 
