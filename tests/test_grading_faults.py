@@ -425,12 +425,24 @@ def test_a_failed_feedback_write_keeps_the_old_pages_and_new_finishes(reference,
     assert os.path.join(course, "feedback") in proc.stderr, proc.stderr
     assert "No space left on device" in proc.stderr and "--new" in proc.stderr
     assert "Traceback" not in proc.stderr
+    kept = os.path.join(course, "grades_A.csv")
+    assert f"the CSV was not rewritten (the old one is kept: {kept})" in proc.stderr
     assert digest_tree(os.path.join(course, "feedback")) == pages
     assert open(os.path.join(course, "grades_A.csv"), "rb").read() == csv_before
     shown_grades_are_true(course, reference)
     proc = here(course, "--new")
     assert proc.returncode == 0, proc.stderr
     finished_like_reference(course, reference, tmp)
+
+
+def test_a_failed_run_with_no_csv_before_says_none_was_written(reference, tmp_path):
+    course, _ = course_from(reference, tmp_path, "graded")
+    os.unlink(os.path.join(course, "grades_A.csv"))
+    proc = here(course, "--student", "bob", "--jobs", "2", fault="enospc:/feedback/")
+    assert proc.returncode == 2, proc.stderr
+    assert "no CSV was written (there was none before)" in proc.stderr, proc.stderr
+    assert "old one is kept" not in proc.stderr
+    assert not os.path.exists(os.path.join(course, "grades_A.csv"))
 
 
 def _mount_tmpfs(where, size):

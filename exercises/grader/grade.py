@@ -384,6 +384,7 @@ def grade(
         if csv_path:
             remove_partial(os.path.dirname(os.path.abspath(csv_path)), False)
         run = _Run(course_dir, assignment, spec, api, config, command, limits, show_progress, runs)
+        run.csv_path = _csv_path(course_dir, assignment, csv_path)
         try:
             chosen = choose(course_dir, assignment, students)
             try:
@@ -414,6 +415,12 @@ def _question_names(course_dir, assignment):
     from .gradetable import question_names
 
     return question_names(course_dir, assignment)
+
+
+def _csv_path(course_dir, assignment, csv_path):
+    from .gradetable import csv_path_of
+
+    return csv_path_of(course_dir, assignment, csv_path)
 
 
 def _export(course_dir, assignment, csv_path):
@@ -470,6 +477,7 @@ class _Run:
         self.api, self.config, self.command, self.limits = api, config, command, limits
         self.runs = runs  # PreparedRuns: the workers put, JudgeSubmission (in api) takes
         self.show = show
+        self.csv_path = None  # where the CSV is written (grade() sets it)
         self.subs = {}
         self.chosen = []
         self.pages = None
@@ -552,10 +560,14 @@ class _Run:
 
     def _failed_message(self, what):
         done = sum(1 for s in self.subs.values() if s.graded)
+        if self.csv_path and os.path.isfile(self.csv_path):
+            csv_text = f"the CSV was not rewritten (the old one is kept: {self.csv_path})"
+        else:
+            csv_text = "no CSV was written (there was none before)"
         return (
             f"{what}. Grading stopped: {done} of {len(self.chosen)} submission(s) were graded "
-            f"completely before it; nothing partial is kept as a grade, and the CSV was not "
-            f"rewritten (the old one is kept). Once that is fixed, run: "
+            f"completely before it; nothing partial is kept as a grade, and {csv_text}. "
+            f"Once that is fixed, run: "
             f"{resume_command(self.course_dir, self.assignment)}"
         )
 

@@ -191,10 +191,15 @@ def _duration(seconds):
     return f"{seconds / 60:.0f} minutes"
 
 
+def csv_path_of(course_dir, assignment, path=None):
+    """Where the CSV is written: ``path``, else ``grades_<assignment>.csv`` in the course."""
+    return path or os.path.join(course_dir, f"grades_{assignment}.csv")
+
+
 def export_csv(course_dir, assignment, path=None):
     """Write the CSV (replaced whole: a failed write keeps the old one); returns
     (path, rows). A submission that is not graded has empty score cells."""
-    path = path or os.path.join(course_dir, f"grades_{assignment}.csv")
+    path = csv_path_of(course_dir, assignment, path)
     names, rows = rows_of(course_dir, assignment)
     text = io.StringIO(newline="")
     writer = csv.DictWriter(
