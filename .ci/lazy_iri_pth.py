@@ -2,7 +2,7 @@
 
 The ``accelab`` command defers it itself (``accelab/lazy_iri.py``): importing jsonschema
 with Jupyter's format extras compiles Earley parsers of RFC 3987 that no notebook schema
-uses, 0.8-2 cpu-s per process on a 2-core machine. The tests also start processes that
+uses, 0.8-1.4 cpu-s per process on this 2-core machine. The tests also start processes that
 are not accelab's: JupyterLab's and JupyterHub's servers, nbgrader's commands, Sphinx
 (about fifteen per ``make test``). This writes a ``.pth`` file into the venv's
 site-packages (``make venv``) that puts the same stand-in in place as each of them starts;
