@@ -39,6 +39,7 @@ extensions = [
     "data_url_links",
     "readable_defaults",
     "sphinx.ext.mathjax",
+    "math_at_build",
     "accelab_docs",
 ]
 

@@ -8,8 +8,9 @@ opens every page in headless Chromium (Debian's ``chromium`` driven by
 viewport. On every page:
 
 * no console error, and nothing requested from anywhere but the local server;
-* every equation typeset by the bundled MathJax, with no TeX error, laid out
-  with a non-zero size (folded answers opened first);
+* every equation typeset (at build time by the bundled MathJax under node, or by it in the
+  browser where the site was built without node), with no TeX error, laid out with a
+  non-zero size (folded answers opened first);
 * every image loaded, and every figure a link to its image (a tap opens it at
   full size), with alt text and a caption saying what it shows;
 * at 390 px nothing is wider than the screen: the page does not scroll
@@ -155,6 +156,23 @@ def test_build_has_every_section(site):
     assert list((site / "_static" / "mathjax" / "output" / "chtml" / "fonts").rglob("*.woff"))
 
 
+def test_math_is_typeset_when_the_site_is_built(site):
+    """Where node is on PATH (CI installs it), a page carries its math typeset (MathJax's
+    CHTML, docs/_ext/math_at_build.py) and the stylesheet for it, whose fonts the site serves,
+    and loads no MathJax script; without node, MathJax typesets it in the browser. The crawl
+    (test_every_page_reads_well) reads the math on every page either way."""
+    page = (site / "course" / "05_coriolis.html").read_text()
+    if shutil.which("node") is None and shutil.which("nodejs") is None:
+        assert "mathjax/tex-chtml.js" in page
+        pytest.skip("node is not on PATH: the site typesets its math in the browser")
+    assert "mathjax/tex-chtml.js" not in page, "a page typeset at build still loads MathJax"
+    assert page.count("<mjx-container") > 50
+    assert re.search(r'href="\.\./_static/math-chtml\.css\b', page)
+    css = (site / "_static" / "math-chtml.css").read_text()
+    fonts = re.findall(r'url\("([^"]+\.woff)"\)', css)
+    assert fonts and all((site / "_static" / f).is_file() for f in fonts), fonts
+
+
 def test_api_signatures_read_as_python(site):
     """A default that is a function reads as the code wrote it (``say=print``), never as
     its repr (``<built-in function print>``), a dataclass field's factory as what it makes
@@ -232,7 +250,9 @@ READY = """
 const done = arguments[arguments.length - 1];
 const t0 = Date.now();
 document.querySelectorAll('details').forEach(d => d.open = true);   // unfold the answers
-const hasMath = document.querySelector('div.math, span.math') !== null;
+// math typeset in the browser (the site built without node): wait for MathJax
+const hasMath = document.querySelector('script[src*="mathjax/tex-chtml"]') !== null
+    && document.querySelector('div.math, span.math') !== null;
 function wait() {
   if (hasMath && !(window.MathJax && MathJax.startup && MathJax.startup.promise)) {
     if (Date.now() - t0 > 30000) { done('MathJax never started'); return; }

@@ -8,7 +8,9 @@
 * Every figure is a link to its own image file, so a tap on a phone opens it
   at full size.
 * MathJax is served from the site (the copy the ``sphinx-mathjax-offline``
-  package ships: MathJax 3 with its fonts), so no equation needs the network.
+  package ships: MathJax 3 with its fonts), so no equation needs the network; its fonts
+  serve the math typeset at build time (``math_at_build.py``), its script the browser
+  where the site was built without ``node``.
 * Directives that generate tables from code: ``accelab-families`` (the problem
   families with their default ranges), ``accelab-family-notebooks`` (which
   notebook teaches each family).
