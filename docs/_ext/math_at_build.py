@@ -128,7 +128,8 @@ def typeset_site(app, env):
         return
     found = _formulas(env)
     formulas = sorted(found)
-    key = hashlib.sha256(json.dumps([SCRIPT.read_text(), formulas]).encode()).hexdigest()
+    made_by = [SCRIPT.read_text(), str(_mathjax_dir()), FONT_URL]  # another MathJax: again
+    key = hashlib.sha256(json.dumps([made_by, formulas]).encode()).hexdigest()
     cache = Path(app.doctreedir) / CACHE
     try:
         saved = json.loads(cache.read_text())
