@@ -33,7 +33,14 @@ def test_display_tex_aligns_parts_and_splits_lines():
     assert math_at_build.display_tex(block(env, nowrap=True)) == env
 
 
-def _chosen(monkeypatch, environ=None, node="/usr/bin/node"):
+def _node_that_runs(folder):
+    path = folder / "node"
+    path.write_text("#!/bin/sh\necho v20.0.0\n")
+    path.chmod(0o755)
+    return str(path)
+
+
+def _chosen(monkeypatch, environ=None, node=None):
     monkeypatch.setattr(math_at_build, "_node", lambda: node)
     if environ is None:
         monkeypatch.delenv(math_at_build.CHOICE, raising=False)
@@ -45,14 +52,15 @@ def _chosen(monkeypatch, environ=None, node="/usr/bin/node"):
 
 
 def test_the_math_is_typeset_at_build_unless_node_is_missing_or_the_browser_is_asked(
-    monkeypatch,
+    monkeypatch, tmp_path
 ):
     pytest.importorskip("sphinx")
     if math_at_build._mathjax_dir() is None:
         pytest.skip("sphinx-mathjax-offline is not installed (the docs extra)")
-    assert _chosen(monkeypatch) == math_at_build.RENDERER
-    assert _chosen(monkeypatch, "build") == math_at_build.RENDERER
-    assert _chosen(monkeypatch, "browser") == "mathjax"
+    node = _node_that_runs(tmp_path)
+    assert _chosen(monkeypatch, node=node) == math_at_build.RENDERER
+    assert _chosen(monkeypatch, "build", node=node) == math_at_build.RENDERER
+    assert _chosen(monkeypatch, "browser", node=node) == "mathjax"
     assert _chosen(monkeypatch, node=None) == "mathjax"
 
 
@@ -72,3 +80,17 @@ def test_node_typesets_and_names_a_tex_error():
     )  # theta: the stylesheet has the characters the formulas use
     assert f'url("{math_at_build.FONT_URL}/MathJax_Zero.woff")' in css
     assert shutil.which("node") or shutil.which("nodejs")
+
+
+def test_a_node_that_does_not_run_leaves_the_math_to_the_browser_and_says_so(monkeypatch, tmp_path):
+    pytest.importorskip("sphinx")
+    if math_at_build._mathjax_dir() is None:
+        pytest.skip("sphinx-mathjax-offline is not installed (the docs extra)")
+    broken = tmp_path / "node"
+    broken.write_text("#!/bin/sh\necho 'node: cannot load libnode' >&2\nexit 3\n")
+    broken.chmod(0o755)
+    said = []
+    monkeypatch.setattr(math_at_build.logger, "warning", lambda text, **kw: said.append(text))
+    assert _chosen(monkeypatch, node=str(broken)) == "mathjax"
+    assert len(said) == 1 and "exit 3: node: cannot load libnode" in said[0], said
+    assert "ACCELAB_DOCS_MATH=browser" in said[0]

@@ -8,7 +8,8 @@ of the site (``math_at_build.js``) and writes the result into the pages: a page 
 typeset math and a stylesheet (``_static/math-chtml.css``), and no script.
 
 Without ``node`` (or with ``ACCELAB_DOCS_MATH=browser``), ``sphinx.ext.mathjax`` renders
-the math as before: MathJax typesets it in the browser, from the site's own copy.
+the math as before: MathJax typesets it in the browser, from the site's own copy. A ``node``
+on PATH that does not run does the same, with a warning that says so.
 
 A formula MathJax cannot read is a build warning naming its page (``make docs`` fails on
 it), where the browser would have shown it in red to the reader.
@@ -22,6 +23,7 @@ import subprocess
 from pathlib import Path
 
 from docutils import nodes
+from sphinx.errors import ExtensionError
 from sphinx.locale import _
 from sphinx.util import logging
 from sphinx.util.math import get_node_equation_number
@@ -72,7 +74,26 @@ def choose_renderer(app, config):
     if not (mathjax / "node-main.js").is_file():
         config.html_math_renderer = "mathjax"
         return
+    broken = _node_fails()
+    if broken:
+        config.html_math_renderer = "mathjax"
+        logger.warning(
+            f"math: {_node()} does not run ({broken}): MathJax typesets the math in the "
+            f"browser; mend node, or set {CHOICE}=browser to say that this is meant"
+        )
+        return
     config.html_math_renderer = RENDERER
+
+
+def _node_fails():
+    """Why ``node`` cannot run (a sentence), or None when it runs."""
+    try:
+        done = subprocess.run([_node(), "--version"], capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        return str(exc)
+    if done.returncode != 0:
+        return f"exit {done.returncode}: {done.stderr.strip()[-200:]}"
+    return None
 
 
 def display_tex(node):
@@ -113,7 +134,7 @@ def _typeset(formulas):
         timeout=600,
     )
     if done.returncode != 0:
-        raise RuntimeError(
+        raise ExtensionError(
             f"node {SCRIPT.name} failed (exit {done.returncode}): {done.stderr.strip()[-500:]}; "
             f"{CHOICE}=browser builds the site with MathJax in the browser"
         )
